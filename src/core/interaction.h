@@ -1,0 +1,25 @@
+// A ray-surface hit turned into everything shading needs.
+#pragma once
+#include "core/math.h"
+
+namespace eyetrace {
+
+class Material;
+class Light;
+
+struct SurfaceInteraction {
+  Vec3 p{0.f};
+  Vec3 n{0.f, 0.f, 1.f};   // geometric normal, unit, flipped by ReverseOrientation/handedness
+  Vec3 ns{0.f, 0.f, 1.f};  // shading normal (interpolated), same hemisphere as n
+  Vec2 uv{0.f};
+  Vec3 dpdu{1.f, 0.f, 0.f}, dpdv{0.f, 1.f, 0.f};
+  Vec3 wo{0.f};            // unit, towards where the ray came from
+  float t = 0.f;
+  float time = 0.f;
+  const Material* material = nullptr;  // null: an interface that only bounds a medium; pass through
+  const Light* area_light = nullptr;   // the emitter on this surface, or null
+  // Screen-space footprint for texture filtering (0 = point sampling).
+  float footprint = 0.f;
+};
+
+}  // namespace eyetrace

@@ -1,0 +1,44 @@
+// Light interface. All lights can be sampled from a shading point (next-event estimation);
+// area and infinite lights also answer what radiance a ray that hits/escapes carries and the
+// solid-angle density with which sample_li would have chosen that direction (for MIS).
+#pragma once
+#include <optional>
+
+#include "core/interaction.h"
+#include "core/ray.h"
+
+namespace eyetrace {
+
+struct LightSampleContext {
+  Vec3 p{0.f};
+  Vec3 n{0.f};  // geometric normal at p, or zero for points in free space
+};
+
+struct LightLiSample {
+  RGB L{0.f};      // incident radiance arriving at ctx.p from the light
+  Vec3 wi{0.f};    // unit direction from ctx.p towards the light
+  float pdf = 0.f; // solid-angle density (1 for delta lights: a discrete choice)
+  Vec3 p_light{0.f};  // point on the light, for the shadow ray (far away for distant/infinite)
+  Vec3 n_light{0.f};
+};
+
+class Light {
+ public:
+  virtual ~Light() = default;
+  virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const = 0;
+  // Density of sample_li choosing direction wi; `hit` is the point where the ray along wi
+  // met this (area) light, null for infinite lights. Zero for delta lights.
+  virtual float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const = 0;
+  // Area lights: radiance leaving surface point `hit` in direction w.
+  virtual RGB L(const SurfaceInteraction& hit, const Vec3& w) const { return RGB(0.f); }
+  // Infinite lights: radiance carried by a ray that leaves the scene.
+  virtual RGB Le(const Ray& ray) const { return RGB(0.f); }
+  virtual bool is_delta() const = 0;
+  virtual bool is_infinite() const { return false; }
+  // Total emitted power (or a proportional estimate), for choosing lights proportionally.
+  virtual float power() const = 0;
+  // Called once the scene's extent is known (distant and infinite lights need its radius).
+  virtual void preprocess(const Bounds3& scene_bounds) {}
+};
+
+}  // namespace eyetrace

@@ -1,0 +1,79 @@
+// The render-ready scene: owns every shape, material, texture and light, and the Embree
+// BVH over the shapes (Embree does all ray-scene intersection). Built by scene_builder.cpp.
+#pragma once
+#include <embree3/rtcore.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/interaction.h"
+#include "core/light.h"
+#include "core/material.h"
+#include "core/shape.h"
+#include "core/texture.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+struct Primitive {
+  std::unique_ptr<Shape> shape;
+  const Material* material = nullptr;
+  const Light* area_light = nullptr;
+};
+
+class Scene {
+ public:
+  Scene();
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // Ownership of everything shapes and lights point to.
+  template <typename T>
+  T* own(std::unique_ptr<T> object) {
+    T* raw = object.get();
+    owned_.push_back(std::shared_ptr<void>(std::move(object)));
+    return raw;
+  }
+
+  void add_primitive(Primitive prim);
+  // Object instancing: a named group of primitives built once into its own BVH, then placed
+  // any number of times.
+  void define_instance(const std::string& name, std::vector<Primitive> prims);
+  bool has_instance(const std::string& name) const;
+  void add_instance(const std::string& name, const Transform& world_from_instance);
+  void add_light(std::unique_ptr<Light> light);
+  // Builds the BVH and runs light preprocessing. Call once, after everything is added.
+  void commit();
+
+  // Closest hit along the ray up to ray.tmax. Thread-safe after commit().
+  bool intersect(const Ray& ray, SurfaceInteraction* si) const;
+  // Any hit in (0, ray.tmax). Thread-safe after commit().
+  bool occluded(const Ray& ray) const;
+
+  const std::vector<const Light*>& lights() const { return lights_; }
+  const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
+  Bounds3 bounds() const { return bounds_; }
+  size_t primitive_count() const;  // triangles + analytic shapes, instances counted once
+  RTCDevice device() const { return device_; }
+
+ private:
+  struct InstanceGroup;
+  struct Placement;
+  RTCDevice device_ = nullptr;
+  RTCScene root_ = nullptr;
+  std::vector<Primitive> prims_;  // indexed by Embree geometry ID in the root scene
+  std::map<std::string, std::unique_ptr<InstanceGroup>> groups_;
+  std::vector<Placement> placements_;  // indexed by Embree instance geometry ID (in root)
+  std::vector<std::unique_ptr<Light>> light_store_;
+  std::vector<const Light*> lights_, infinite_lights_;
+  std::vector<std::shared_ptr<void>> owned_;
+  std::vector<int> geom_kind_;  // per root geometry ID: 0 primitive, 1 instance
+  std::vector<size_t> geom_index_;
+  Bounds3 bounds_;
+  bool committed_ = false;
+};
+
+}  // namespace eyetrace

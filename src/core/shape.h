@@ -1,0 +1,36 @@
+// Shape interface: a shape adds itself to the Embree scene as one geometry and turns
+// Embree's hit record back into a SurfaceInteraction. Area lights sample shapes by area.
+#pragma once
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <vector>
+
+#include "core/interaction.h"
+#include "core/ray.h"
+
+namespace eyetrace {
+
+struct ShapeSample {
+  Vec3 p{0.f};
+  Vec3 n{0.f, 0.f, 1.f};  // oriented like the shape's geometric normal (ReverseOrientation applied)
+  Vec2 uv{0.f};
+  float pdf_area = 0.f;   // density with respect to surface area
+};
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+  // Creates and commits this shape's Embree geometry in `scene`; returns its geometry ID.
+  virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
+  // The hit at distance `t` on primitive `prim_id` with Embree's barycentrics (u, v) and
+  // geometric normal `ng` (object space of the geometry, as Embree reports it).
+  virtual SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv,
+                                         Vec3 ng) const = 0;
+  virtual float area() const = 0;
+  virtual ShapeSample sample_area(Vec2 u) const = 0;
+  virtual Bounds3 bounds() const = 0;
+  virtual size_t primitive_count() const { return 1; }
+};
+
+}  // namespace eyetrace
