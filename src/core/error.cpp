@@ -1,5 +1,6 @@
 #include "core/error.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <mutex>
@@ -43,7 +44,7 @@ static size_t edit_distance(const std::string& a, const std::string& b) {
   for (size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
     for (size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + size_t(a[i - 1] != b[j - 1])});
     std::swap(prev, cur);
   }
   return prev[b.size()];

@@ -1,0 +1,83 @@
+#include "cameras/perspective_camera.h"
+
+#include "core/sampling.h"
+
+namespace eyetrace {
+
+Vec4 default_screen_window(IVec2 res, float frame) {
+  if (frame <= 0.f) frame = float(res.x) / float(res.y);
+  return frame > 1.f ? Vec4(-frame, frame, -1.f, 1.f) : Vec4(-1.f, 1.f, -1.f / frame, 1.f / frame);
+}
+
+PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s)
+    : world_from_camera_(world_from_camera), resolution_(resolution), s_(s),
+      tan_half_fov_(std::tan(radians(s.fov_degrees) / 2.f)) {
+  if (s_.screen_window == Vec4(0.f)) s_.screen_window = default_screen_window(resolution);
+}
+
+Vec3 PerspectiveCamera::camera_direction(Vec2 p) const {
+  const Vec4& w = s_.screen_window;
+  // Raster y grows downwards, screen y upwards.
+  float sx = w[0] + (p.x / resolution_.x) * (w[1] - w[0]);
+  float sy = w[3] - (p.y / resolution_.y) * (w[3] - w[2]);
+  return Vec3(sx * tan_half_fov_, sy * tan_half_fov_, 1.f);
+}
+
+std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs) const {
+  Vec3 dir = glm::normalize(camera_direction(cs.p_film));
+  Vec3 origin(0.f);
+  if (s_.lens_radius > 0.f) {
+    // Every ray from this film point passes the point where the pinhole ray meets the plane
+    // of focus z = focal_distance: that is what focusing a thin lens means.
+    Vec2 lens = s_.lens_radius * sample_uniform_disk_concentric(cs.p_lens);
+    Vec3 focus = dir * (s_.focal_distance / dir.z);
+    origin = Vec3(lens, 0.f);
+    dir = glm::normalize(focus - origin);
+  }
+  Ray r{world_from_camera_.point(origin), glm::normalize(world_from_camera_.vector(dir)), kInfinity, cs.time};
+  return CameraRay{r, 1.f};
+}
+
+std::string PerspectiveCamera::to_string() const {
+  return fmt::format("perspective camera: fov {} deg, lens radius {}, focal distance {}", s_.fov_degrees,
+                     s_.lens_radius, s_.focal_distance);
+}
+
+static PerspectiveCamera::Settings read_settings(const CameraContext& ctx) {
+  const ParameterList& p = ctx.params;
+  PerspectiveCamera::Settings s;
+  s.fov_degrees = p.get_float("fov", 90.f);
+  if (!(s.fov_degrees > 0.f && s.fov_degrees < 180.f)) p.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_degrees));
+  s.lens_radius = p.get_float("lensradius", 0.f);
+  if (s.lens_radius < 0.f) p.fail("lensradius", "must not be negative");
+  s.focal_distance = p.get_float("focaldistance", 1e6f);
+  if (!(s.focal_distance > 0.f)) p.fail("focaldistance", "must be positive");
+  std::vector<float> sw = p.get_floats("screenwindow");
+  if (!sw.empty()) {
+    if (sw.size() != 4 || sw[0] >= sw[1] || sw[2] >= sw[3]) p.fail("screenwindow", "needs 4 values x0 < x1, y0 < y1");
+    s.screen_window = Vec4(sw[0], sw[1], sw[2], sw[3]);
+  }
+  float frame = p.get_float("frameaspectratio", 0.f);
+  if (frame < 0.f) p.fail("frameaspectratio", "must be positive");
+  if (frame > 0.f && sw.empty()) s.screen_window = default_screen_window(ctx.resolution, frame);
+  // Motion blur is not supported: shutter times are accepted only as the instant default.
+  float open = p.get_float("shutteropen", 0.f), close = p.get_float("shutterclose", 1.f);
+  if (open != 0.f || close != 1.f) warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; ignored");
+  return s;
+}
+
+std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx) {
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx));
+}
+
+std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx) {
+  PerspectiveCamera::Settings s = read_settings(ctx);
+  if (s.lens_radius != 0.f) ctx.params.fail("lensradius", "a pinhole camera has no lens; use \"thinlens\"");
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, s);
+}
+
+std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) {
+  return create_perspective_camera(ctx);
+}
+
+}  // namespace eyetrace

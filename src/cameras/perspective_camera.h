@@ -1,0 +1,39 @@
+// pbrt-v4's perspective camera: a pinhole, or a thin lens when lensradius > 0.
+// Registered as "perspective", "pinhole" (lens radius must be 0) and "thinlens".
+#pragma once
+#include <memory>
+
+#include "core/camera.h"
+#include "core/registry.h"
+
+namespace eyetrace {
+
+class PerspectiveCamera : public Camera {
+ public:
+  struct Settings {
+    float fov_degrees = 90.f;       // of the shorter image axis, as pbrt
+    Vec4 screen_window{0.f};        // x0 x1 y0 y1; zero means "from the aspect ratio"
+    float lens_radius = 0.f;        // scene units
+    float focal_distance = 1e6f;    // scene units, along the camera's z axis
+  };
+  PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s);
+  std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
+  std::string to_string() const override;
+  // Camera-space direction (not normalised, z = 1) through a raster position.
+  Vec3 camera_direction(Vec2 p_raster) const;
+
+ private:
+  Transform world_from_camera_;
+  IVec2 resolution_;
+  Settings s_;
+  float tan_half_fov_;
+};
+
+std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx);
+std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx);
+std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx);
+
+// The screen window pbrt derives from the image aspect ratio: the shorter axis spans [-1, 1].
+Vec4 default_screen_window(IVec2 resolution, float frame_aspect_ratio = 0.f);
+
+}  // namespace eyetrace

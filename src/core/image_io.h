@@ -1,0 +1,29 @@
+// Reading and writing images through OpenImageIO. Writes go to a temporary file in the
+// target's folder and are renamed into place, so an existing output is never half-written.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eyetrace {
+
+struct Image {
+  int width = 0, height = 0, channels = 3;
+  std::vector<float> pixels;  // linear, row-major, top row first
+  float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
+};
+
+// .exr: linear half/float RGB with `metadata` as string attributes; .png/.jpg/.tif: sRGB
+// 8-bit after clamping. Throws SceneError naming the file on failure.
+void write_image(const std::string& path, const Image& image,
+                 const std::map<std::string, std::string>& metadata = {});
+Image read_image(const std::string& path);
+// Reads one string attribute from an image header ("" if absent).
+std::string read_image_attribute(const std::string& path, const std::string& name);
+
+// The sRGB transfer curve for 8-bit output.
+float linear_to_srgb(float v);
+float srgb_to_linear(float v);
+
+}  // namespace eyetrace

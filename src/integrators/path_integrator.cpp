@@ -1,0 +1,122 @@
+#include "integrators/path_integrator.h"
+
+#include "core/material.h"
+#include "core/sampling.h"
+#include "core/scene.h"
+
+namespace eyetrace {
+
+PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name)
+    : Integrator(scene), max_depth_(max_depth), name_(std::move(name)), lights_(scene.lights()) {}
+
+std::string PathIntegrator::to_string() const {
+  return fmt::format("{} integrator: maxdepth {}, {} light(s), power light sampling", name_, max_depth_,
+                     scene_.lights().size());
+}
+
+RGB PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, Sampler& sampler,
+                                  RayTally& tally) const {
+  float u_light = sampler.get_1d();
+  Vec2 u = sampler.get_2d();
+  float pmf = 0.f;
+  const Light* light = lights_.sample(u_light, &pmf);
+  if (!light || pmf == 0.f) return RGB(0.f);
+  LightSampleContext ctx{si.p, si.n};
+  std::optional<LightLiSample> ls = light->sample_li(ctx, u);
+  if (!ls || ls->pdf <= 0.f || is_black(ls->L)) return RGB(0.f);
+  RGB f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
+  if (is_black(f)) return RGB(0.f);
+  ++tally.rays;
+  if (scene_.occluded(spawn_ray_to(si.p, si.n, ls->p_light, si.time))) return RGB(0.f);
+  float light_pdf = pmf * ls->pdf;
+  if (light->is_delta()) return f * ls->L / light_pdf;
+  float w = power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi));
+  return w * f * ls->L / light_pdf;
+}
+
+RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const {
+  RGB L(0.f), beta(1.f);
+  Ray ray = camera_ray;
+  bool specular_bounce = false;
+  float prev_bsdf_pdf = 0.f;
+  LightSampleContext prev_ctx;
+  int depth = 0;
+  // Interface (null-material) crossings do not count as bounces; bound them anyway so a
+  // degenerate scene cannot loop forever.
+  for (int crossings = 0; crossings < 256; ++crossings) {
+    SurfaceInteraction si;
+    ++tally.rays;
+    bool hit = scene_.intersect(ray, &si);
+    // Emission seen by the BSDF-sampled ray, weighted against light sampling (MIS).
+    auto add_emission = [&](const Light* light, const RGB& Le, const SurfaceInteraction* at) {
+      if (is_black(Le)) return;
+      if (depth == 0 || specular_bounce) {
+        L += beta * Le;
+        return;
+      }
+      float light_pdf = lights_.pmf(light) * light->pdf_li(prev_ctx, ray.d, at);
+      L += beta * Le * power_heuristic(prev_bsdf_pdf, light_pdf);
+    };
+    if (!hit) {
+      for (const Light* light : scene_.infinite_lights()) add_emission(light, light->Le(ray), nullptr);
+      break;
+    }
+    if (si.area_light) add_emission(si.area_light, si.area_light->L(si, -ray.d), &si);
+    const BSDF* bsdf = si.material ? si.material->bsdf(si, arena) : nullptr;
+    if (!bsdf) {
+      ray = spawn_ray(si.p, si.n, ray.d, ray.time);
+      continue;
+    }
+    if (depth++ == max_depth_) break;
+    if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy))) L += beta * sample_direct(si, *bsdf, sampler, tally);
+
+    float uc = sampler.get_1d();
+    std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());
+    if (!bs || bs->pdf <= 0.f || is_black(bs->f)) break;
+    beta *= bs->f * std::abs(glm::dot(bs->wi, si.ns)) / bs->pdf;
+    specular_bounce = bs->is_specular();
+    prev_bsdf_pdf = bs->pdf;
+    prev_ctx = LightSampleContext{si.p, si.n};
+    ray = spawn_ray(si.p, si.n, bs->wi, ray.time);
+    if (!is_finite(beta)) break;
+    // Russian roulette once the path has some length; unbiased (survivors are reweighted).
+    float q = max_component(beta);
+    if (depth > 1 && q < 1.f) {
+      if (sampler.get_1d() >= q) break;
+      beta /= q;
+    }
+  }
+  return L;
+}
+
+static int read_max_depth(const IntegratorContext& ctx, int def) {
+  int d = ctx.params.get_int("maxdepth", def);
+  if (d < 0 || d > 10000) ctx.params.fail("maxdepth", fmt::format("{} is not in [0, 10000]", d));
+  return d;
+}
+
+static void read_common(const IntegratorContext& ctx) {
+  const ParameterList& p = ctx.params;
+  std::string ls = p.get_string("lightsampler", "bvh");
+  if (ls != "power" && ls != "uniform" && ls != "bvh") p.fail("lightsampler", "must be \"bvh\", \"power\" or \"uniform\"");
+  if (ls != "power") warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
+  if (p.get_bool("regularize", false)) warn(p.loc(), "\"regularize\" is not supported; ignored");
+}
+
+std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx) {
+  read_common(ctx);
+  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 5), "path");
+}
+
+std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ctx) {
+  read_common(ctx);
+  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 1), "direct");
+}
+
+std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx) {
+  warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
+  read_common(ctx);
+  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 5), "path");
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,32 @@
+// Unidirectional path tracing with next-event estimation and multiple importance sampling
+// (power heuristic) between BSDF and light sampling, as pbrt-v4's "path" integrator.
+// "direct" is the same estimator stopped after the first bounce (direct lighting only).
+#pragma once
+#include "core/integrator.h"
+#include "core/registry.h"
+#include "integrators/light_sampler.h"
+
+namespace eyetrace {
+
+struct SurfaceInteraction;
+class BSDF;
+
+class PathIntegrator : public Integrator {
+ public:
+  PathIntegrator(const Scene& scene, int max_depth, std::string name);
+  RGB radiance(const Ray& ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const override;
+  std::string to_string() const override;
+
+ private:
+  // Light sampling at a surface hit: one light, one shadow ray, MIS-weighted.
+  RGB sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, Sampler& sampler, RayTally& tally) const;
+  int max_depth_;
+  std::string name_;
+  PowerLightSampler lights_;
+};
+
+std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx);
+std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ctx);
+std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx);
+
+}  // namespace eyetrace

@@ -1,0 +1,33 @@
+// eyetrace: render pbrt-v4 scenes through pinhole, thin-lens and schematic-eye cameras.
+#include <cstdio>
+#include <exception>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"eyetrace: a physically based renderer that shows what a human eye sees.\n"
+               "Renders pbrt-v4 scene files through pinhole, thin-lens and schematic-eye cameras."};
+  app.require_subcommand(1);
+  auto render = eyetrace::add_render_command(app);
+  auto optics = eyetrace::add_optics_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("optics")) return optics();
+  } catch (const eyetrace::SceneError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,43 @@
+// Schematic eye presets: EyeOptions -> a validated Prescription (cornea first, iris stop at the
+// anterior lens vertex, retina last). The prescriptions are data (data/eyes/*.json, embedded at
+// build time); accommodation and refractive error are code. See docs/eye-models.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "optics/prescription.h"
+
+namespace eyetrace::optics {
+
+struct EyeOptions {
+    std::string model;    // one of eye_model_names()
+    std::string variant;  // "" = the model's default; see eye_model_variants()
+    // Accommodation in dioptres. Its meaning is the model's own: the Navarro parameter D
+    // (not the produced accommodation, see docs), Arizona's A, and for gullstrand/legrand the
+    // accommodation actually produced.
+    double accommodation_D = 0.0;
+    double pupil_diameter_mm = 4.0;  // iris (aperture stop) diameter, (0, 10]
+    // 0 keeps the model's published retina. Otherwise the vitreous depth (axial length) is set
+    // so the relaxed eye's refraction is this value (-2 = myope with far point 0.5 m); the
+    // accommodated eye then keeps that axial length.
+    double refractive_error_D = 0.0;
+    // Retina radius (mm, < 0: centre of curvature in front of the retina; 0 = flat);
+    // nullopt = the model's default. The vertex stays where the model puts it.
+    std::optional<double> retina_radius_mm;
+    double wavelength_nm = 0.0;  // 0 = the model's reference wavelength
+};
+
+// Sorted preset names: arizona, escudero-sanz, gullstrand, kooijman, legrand, navarro.
+std::vector<std::string> eye_model_names();
+// Accepted variants of a model ("" is always accepted). Throws for an unknown model.
+std::vector<std::string> eye_model_variants(const std::string& model);
+// [0, max] accommodation range of a model/variant in dioptres. Throws for unknown names.
+double max_accommodation_diopters(const std::string& model, const std::string& variant = "");
+
+// Throws OpticsError naming the option ("model", "variant", "accommodation", "pupildiameter",
+// "refractiveerror", "retinaradius", "wavelength") when an option is invalid.
+Prescription make_eye(const EyeOptions& options);
+
+}  // namespace eyetrace::optics

@@ -1,0 +1,83 @@
+// Triangle meshes: pbrt-v4's "trianglemesh" shape and the common target of "plymesh",
+// "bilinearmesh" and procedural meshes. Embree traces the triangles natively (no callback
+// per traversal step); this class only turns a hit into an interaction and samples by area.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/registry.h"
+#include "core/shape.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+// A mesh as read from a scene or file, in object space, before validation.
+struct MeshData {
+  std::vector<Vec3> positions;
+  std::vector<int> indices;   // 3 per triangle
+  std::vector<Vec3> normals;  // per vertex, or empty
+  std::vector<Vec2> uvs;      // per vertex, or empty
+};
+
+// Where a mesh came from, so that validation errors name the parameter the user wrote:
+// "P", "indices", ... for inline meshes, "filename" (with `context` naming the file) for
+// meshes read from files.
+struct MeshSource {
+  const ParameterList& params;
+  std::string p = "P", indices = "indices", n = "N", uv = "uv";
+  std::string context;  // prefix for messages, e.g. "file \"bunny.ply\": "
+};
+
+class TriangleMesh : public Shape {
+ public:
+  // Validates `mesh` (indices in range and a multiple of 3, per-vertex arrays as long as
+  // "P", finite world positions), moves it to world space and drops zero-area triangles
+  // with one counted warning. An empty result is an error.
+  TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation,
+               const MeshSource& source);
+
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
+  float area() const override { return area_; }
+  ShapeSample sample_area(Vec2 u) const override;
+  Bounds3 bounds() const override { return bounds_; }
+  size_t primitive_count() const override { return indices_.size() / 3; }
+
+  size_t vertex_count() const { return vertex_count_; }
+  int dropped_triangles() const { return dropped_; }
+
+ private:
+  struct Corner {
+    Vec3 p[3];
+    Vec2 uv[3];
+  };
+  Corner corners(unsigned tri) const;
+  // Geometric normal oriented as pbrt orients it (see the .cpp), and the shading normal.
+  void normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const;
+  void validate(MeshData& mesh, const MeshSource& source) const;
+  void build(MeshData& mesh, const Transform& world_from_object, const MeshSource& source);
+
+  // World-space positions with one padding element at the end: Embree reads vertex buffers
+  // 16 bytes at a time, so the last 12-byte vertex must be followed by 4 readable bytes.
+  std::vector<Vec3> positions_;
+  size_t vertex_count_ = 0;
+  std::vector<uint32_t> indices_;
+  std::vector<Vec3> normals_;  // world space, reverse orientation applied; may be empty
+  std::vector<Vec2> uvs_;
+  std::vector<double> cdf_;    // cumulative triangle area / total, for area sampling
+  float area_ = 0.f;
+  Bounds3 bounds_;
+  bool flip_normal_ = false;   // reverse_orientation XOR transform swaps handedness
+  int dropped_ = 0;
+};
+
+// pbrt-v4 "trianglemesh": "point3 P", "integer indices" (optional for exactly 3 vertices),
+// "normal N", "point2 uv", "vector3 S" (ignored with a warning), "integer faceIndices".
+std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx);
+
+// Reads "alpha" (float or texture) and warns that alpha cutouts are not supported.
+void warn_alpha_unsupported(const ParameterList& params, const std::string& shape_name);
+
+}  // namespace eyetrace
