@@ -128,7 +128,6 @@ Token Tokenizer::scan() {
 
 Token Tokenizer::scan_string(int line, int column) {
   const size_t n = text_.size();
-  const size_t quote = pos_;
   const size_t start = ++pos_;
   auto unterminated = [&](const char* why) {
     std::string_view so_far = std::string_view(text_).substr(start, pos_ - start);
@@ -153,7 +152,6 @@ Token Tokenizer::scan_string(int line, int column) {
     }
     ++pos_;
   }
-  (void)quote;
   Token t{TokenKind::kString, std::string_view(text_).substr(start, pos_ - start), line, column, escapes};
   ++pos_;  // closing quote
   return t;

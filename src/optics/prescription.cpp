@@ -56,7 +56,7 @@ double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile&
     constexpr int kSteps = 256;
     double lo = 0.0;
     for (int i = 1; i <= kSteps; ++i) {
-        const double hi = h_max * i / kSteps;
+        double hi = h_max * i / kSteps;
         if (gap(hi) < 0.0) {
             for (int it = 0; it < 60; ++it) {
                 const double mid = 0.5 * (lo + hi);

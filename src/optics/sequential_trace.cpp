@@ -35,6 +35,10 @@ CompiledSystem::CompiledSystem(const Prescription& p) {
                             : std::numeric_limits<double>::infinity();
         f.n_before = p.index_before(static_cast<int>(i));
         f.n_after = s.index_after;
+        // Stops and the image do not refract; eta == 1 also skips equal-index interfaces.
+        const bool refracts = s.role == SurfaceRole::Refract;
+        f.eta_forward = refracts ? f.n_before / f.n_after : 1.0;
+        f.eta_reverse = refracts ? f.n_after / f.n_before : 1.0;
         f.role = s.role;
         interfaces_.push_back(f);
     }
@@ -49,47 +53,91 @@ constexpr double kBehindTolerance = 1e-9;
 
 }  // namespace
 
+// Vector Snell refraction with the unnormalised surface gradient g (so the normal is never
+// normalised): d' = eta d + gamma g, with gamma the root of |d'| = 1 that continues forward,
+//   gamma = (-eta (g.d) - sqrt(eta^2 (g.d)^2 + |g|^2 (1 - eta^2))) / |g|^2,   g turned so g.d < 0.
+// It equals the textbook eta d + (eta cos_i - cos_t) n but has one square root and one
+// independent division instead of three dependent ones: the hot loop's latency chain is
+// what limits the camera's ray rate. A negative radicand is total internal reflection.
 TraceResult CompiledSystem::trace_range(const Ray& ray, int first, int last,
                                         glm::dvec3* points) const {
-    const int step = first <= last ? 1 : -1;
-    const bool forward = step > 0;
-    glm::dvec3 o = ray.origin;
-    // Normalised once on entry so Snell's law below can assume |d| = 1.
-    glm::dvec3 d = ray.direction / std::sqrt(glm::dot(ray.direction, ray.direction));
-    for (int i = first;; i += step) {
-        const Interface& f = interfaces_[i];
-        const glm::dvec3 local(o.x, o.y, o.z - f.z);
-        const ProfileHit hit = intersect_conic(f.c, f.k, local, d, kBehindTolerance);
-        if (!hit.hit) return {TraceStatus::Missed, i, {o, d}};
-        const glm::dvec3 p = local + hit.t * d;
-        if (p.x * p.x + p.y * p.y > f.sd2)
-            return {f.role == SurfaceRole::Stop ? TraceStatus::StopBlocked : TraceStatus::Vignetted,
-                    i, {o, d}};
-        const glm::dvec3 p_system(p.x, p.y, p.z + f.z);
-        if (points) points[forward ? i - first : first - i] = p_system;
+    return first <= last ? trace_impl<true>(ray, first, last, points)
+                         : trace_impl<false>(ray, first, last, points);
+}
 
-        const double n1 = forward ? f.n_before : f.n_after;
-        const double n2 = forward ? f.n_after : f.n_before;
-        if (f.role == SurfaceRole::Refract && n1 != n2) {
-            // Normal from the gradient of c(x^2 + y^2 + k z^2) - 2z, turned against the ray.
-            glm::dvec3 nrm(f.c * p.x, f.c * p.y, f.c * f.k * p.z - 1.0);
-            nrm /= std::sqrt(nrm.x * nrm.x + nrm.y * nrm.y + nrm.z * nrm.z);
-            double cos_i = -(nrm.x * d.x + nrm.y * d.y + nrm.z * d.z);
-            if (cos_i < 0.0) {
-                nrm = -nrm;
-                cos_i = -cos_i;
-            }
-            const double eta = n1 / n2;
-            const double cos_t2 = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-            if (cos_t2 < 0.0) return {TraceStatus::TotalInternalReflection, i, {o, d}};
-            d = eta * d + (eta * cos_i - std::sqrt(cos_t2)) * nrm;
+// One surface: intersect, clip, refract. Updates o, d in place only on success.
+template <bool Forward>
+inline TraceStatus CompiledSystem::step(const Interface& f, glm::dvec3& o, glm::dvec3& d) {
+    const glm::dvec3 local(o.x, o.y, o.z - f.z);
+    const ProfileHit hit = intersect_conic(f.c, f.k, local, d, kBehindTolerance);
+    if (!hit.hit) return TraceStatus::Missed;
+    const glm::dvec3 p = local + hit.t * d;
+    if (p.x * p.x + p.y * p.y > f.sd2)
+        return f.role == SurfaceRole::Stop ? TraceStatus::StopBlocked : TraceStatus::Vignetted;
+    const double eta = Forward ? f.eta_forward : f.eta_reverse;
+    if (eta != 1.0) {
+        // Gradient of c(x^2 + y^2 + k z^2) - 2z, halved.
+        glm::dvec3 g(f.c * p.x, f.c * p.y, f.c * f.k * p.z - 1.0);
+        double gd = glm::dot(g, d);
+        if (gd > 0.0) {
+            g = -g;
+            gd = -gd;
         }
-        o = p_system;
+        const double g2 = glm::dot(g, g);
+        const double radicand = eta * eta * gd * gd + g2 * (1.0 - eta * eta);
+        if (radicand < 0.0) return TraceStatus::TotalInternalReflection;
+        const double gamma = (-eta * gd - std::sqrt(radicand)) * (1.0 / g2);
+        d = eta * d + gamma * g;
+    }
+    o = glm::dvec3(p.x, p.y, p.z + f.z);
+    return TraceStatus::Ok;
+}
+
+template <bool Forward>
+TraceResult CompiledSystem::trace_impl(const Ray& ray, int first, int last,
+                                       glm::dvec3* points) const {
+    constexpr int step_dir = Forward ? 1 : -1;
+    glm::dvec3 o = ray.origin;
+    // Normalised once on entry so Snell's law can assume |d| = 1.
+    glm::dvec3 d = ray.direction * (1.0 / std::sqrt(glm::dot(ray.direction, ray.direction)));
+    for (int i = first;; i += step_dir) {
+        const glm::dvec3 o_before = o, d_before = d;
+        const TraceStatus status = step<Forward>(interfaces_[i], o, d);
+        if (status != TraceStatus::Ok) return {status, i, {o_before, d_before}};
+        if (points) points[Forward ? i - first : first - i] = o;
         if (i == last) break;
     }
     // Snell's law keeps |d| = 1 up to rounding; renormalise once so callers can rely on it.
-    d /= std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    d *= 1.0 / std::sqrt(glm::dot(d, d));
     return {TraceStatus::Ok, last, {o, d}};
+}
+
+void CompiledSystem::trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count,
+                                       int first, int last) const {
+    // Surface-major order: the rays of one surface are independent, so the CPU overlaps their
+    // square-root/division chains, which a single ray's trace cannot do.
+    const bool forward = first <= last;
+    for (std::size_t j = 0; j < count; ++j) {
+        const glm::dvec3 d = rays[j].direction;
+        results[j] = {TraceStatus::Ok, -1, {rays[j].origin, d * (1.0 / std::sqrt(glm::dot(d, d)))}};
+    }
+    for (int i = first;; i += forward ? 1 : -1) {
+        const Interface& f = interfaces_[i];
+        for (std::size_t j = 0; j < count; ++j) {
+            TraceResult& r = results[j];
+            if (r.status != TraceStatus::Ok) continue;
+            const TraceStatus status = forward ? step<true>(f, r.ray.origin, r.ray.direction)
+                                               : step<false>(f, r.ray.origin, r.ray.direction);
+            if (status != TraceStatus::Ok) r.status = status, r.surface = i;
+        }
+        if (i == last) break;
+    }
+    for (std::size_t j = 0; j < count; ++j) {
+        TraceResult& r = results[j];
+        if (r.status != TraceStatus::Ok) continue;
+        r.surface = last;
+        r.ray.direction *= 1.0 / std::sqrt(glm::dot(r.ray.direction, r.ray.direction));
+    }
 }
 
 }  // namespace eyetrace::optics

@@ -4,6 +4,7 @@
 // nothing, throws nothing and reports every lost ray by kind instead of producing NaN.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -72,6 +73,14 @@ public:
     TraceResult trace_range(const Ray& ray, int first, int last,
                             glm::dvec3* points = nullptr) const;
 
+    // The same for many rays at once (results[j] as trace_range(rays[j], first, last) would
+    // give, bit for bit). Faster per ray: see sequential_trace.cpp. No allocation.
+    void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first,
+                           int last) const;
+    void trace_reverse_batch(const Ray* rays, TraceResult* results, std::size_t count) const {
+        trace_range_batch(rays, results, count, image_index() - 1, 0);
+    }
+
 private:
     struct Interface {
         double z;          // vertex position
@@ -80,8 +89,15 @@ private:
         double sd2;        // semi-diameter squared, +inf when unlimited
         double n_before;   // index before (object side)
         double n_after;    // index after (image side)
+        double eta_forward;  // n_before / n_after, 1 when the surface does not refract
+        double eta_reverse;  // n_after / n_before, likewise
         SurfaceRole role;
     };
+    template <bool Forward>
+    static TraceStatus step(const Interface& f, glm::dvec3& o, glm::dvec3& d);
+    template <bool Forward>
+    TraceResult trace_impl(const Ray& ray, int first, int last, glm::dvec3* points) const;
+
     std::vector<Interface> interfaces_;
     int stop_index_ = -1;
 };

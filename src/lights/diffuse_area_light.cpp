@@ -1,0 +1,85 @@
+#include "lights/diffuse_area_light.h"
+
+#include "lights/light_params.h"
+
+namespace eyetrace {
+
+DiffuseAreaLight::DiffuseAreaLight(const Shape& shape, const RGB& L, float scale, bool two_sided,
+                                   std::optional<RGBImage> image)
+    : shape_(shape), L_(L), scale_(scale), two_sided_(two_sided), image_(std::move(image)), area_(shape.area()) {}
+
+RGB DiffuseAreaLight::emitted(const Vec3& n, Vec2 uv, const Vec3& w) const {
+  if (!two_sided_ && glm::dot(n, w) <= 0.f) return RGB(0.f);
+  if (image_) return scale_ * image_->bilerp(Vec2(uv.x, 1.f - uv.y));
+  return scale_ * L_;
+}
+
+RGB DiffuseAreaLight::L(const SurfaceInteraction& hit, const Vec3& w) const { return emitted(hit.n, hit.uv, w); }
+
+std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
+  ShapeSample ss = shape_.sample_area(u);
+  Vec3 d = ss.p - ctx.p;
+  float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.f) || !(ss.pdf_area > 0.f)) return std::nullopt;
+  Vec3 wi = d / std::sqrt(dist2);
+  // Seen edge-on the light covers no solid angle: the density would be infinite.
+  float cos_light = std::abs(glm::dot(ss.n, wi));
+  if (!(cos_light > 0.f)) return std::nullopt;
+  float pdf = ss.pdf_area * dist2 / cos_light;
+  RGB Le = emitted(ss.n, ss.uv, -wi);
+  if (!std::isfinite(pdf) || is_black(Le)) return std::nullopt;
+  LightLiSample s;
+  s.L = Le;
+  s.wi = wi;
+  s.pdf = pdf;
+  s.p_light = ss.p;
+  s.n_light = ss.n;
+  return s;
+}
+
+float DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const {
+  if (!hit || !(area_ > 0.f)) return 0.f;
+  Vec3 d = hit->p - ctx.p;
+  float dist2 = glm::dot(d, d);
+  float cos_light = std::abs(glm::dot(hit->n, wi));
+  if (!(dist2 > 0.f) || !(cos_light > 0.f)) return 0.f;
+  float pdf = dist2 / (area_ * cos_light);
+  return std::isfinite(pdf) ? pdf : 0.f;
+}
+
+float DiffuseAreaLight::power() const {
+  RGB L = L_;
+  if (image_) {
+    RGB sum(0.f);
+    for (const RGB& p : image_->pixels) sum += p;
+    L = sum / float(image_->pixels.size());
+  }
+  return (two_sided_ ? 2.f : 1.f) * kPi * std::max(area_, 0.f) * scale_ * channel_mean(L);
+}
+
+std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
+  const ParameterList& params = ctx.params;
+  std::optional<RGB> L = emission_param_or_null(params, "L");
+  float scale = scale_param(params);
+  bool two_sided = params.get_bool("twosided", false);
+  std::optional<float> phi = positive_param(params, "power");
+  std::string filename = params.get_string("filename", "");
+
+  std::optional<RGBImage> image;
+  RGB mean_emission = L.value_or(RGB(1.f));
+  if (!filename.empty()) {
+    if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
+    std::string path = resolve_path(ctx.search_dir, filename);
+    std::string error;
+    image = read_rgb_image(path, &error);
+    if (!image) params.fail("filename", fmt::format("cannot read emission image \"{}\": {}", path, error));
+    RGB sum(0.f);
+    for (const RGB& p : image->pixels) sum += p;
+    mean_emission = sum / float(image->pixels.size());
+  }
+  float k_e = (two_sided ? 2.f : 1.f) * kPi * ctx.shape.area() * luminance(mean_emission);
+  scale *= photometric_factor(phi, k_e);
+  return std::make_unique<DiffuseAreaLight>(ctx.shape, L.value_or(RGB(1.f)), scale, two_sided, std::move(image));
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,41 @@
+#include "lights/distant_light.h"
+
+#include "lights/light_params.h"
+
+namespace eyetrace {
+
+std::optional<LightLiSample> DistantLight::sample_li(const LightSampleContext& ctx, Vec2) const {
+  LightLiSample s;
+  s.L = L_;
+  s.wi = w_;
+  s.pdf = 1.f;
+  // Two radii from any point inside the bounds is outside them: the shadow ray sees all.
+  float r = scene_radius_ > 0.f ? scene_radius_ : 1.f;
+  s.p_light = ctx.p + w_ * (2.f * r);
+  s.n_light = -w_;
+  return s;
+}
+
+float DistantLight::power() const { return kPi * scene_radius_ * scene_radius_ * channel_mean(L_); }
+
+void DistantLight::preprocess(const Bounds3& scene_bounds) {
+  float r = scene_bounds.radius();
+  scene_radius_ = std::isfinite(r) ? r : 0.f;
+}
+
+std::unique_ptr<Light> create_distant_light(const LightContext& ctx) {
+  const ParameterList& params = ctx.params;
+  RGB L = emission_param(params, "L");
+  float scale = scale_param(params);
+  std::optional<float> E = positive_param(params, "illuminance");
+  Vec3 from = params.get_point3("from", Vec3(0.f));
+  Vec3 to = params.get_point3("to", Vec3(0.f, 0.f, 1.f));
+  Vec3 w = ctx.world_from_light.vector(from - to);
+  float len = glm::length(w);
+  if (!(len > 0.f) || !std::isfinite(len))
+    params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the light has no direction");
+  scale *= photometric_factor(E, luminance(L));
+  return std::make_unique<DistantLight>(w / len, L * scale);
+}
+
+}  // namespace eyetrace

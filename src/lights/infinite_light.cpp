@@ -1,0 +1,129 @@
+#include "lights/infinite_light.h"
+
+#include "core/sampling.h"
+#include "lights/light_params.h"
+
+namespace eyetrace {
+namespace {
+
+float usable_radius(float r) { return r > 0.f && std::isfinite(r) ? r : 1.f; }
+
+LightLiSample make_sample(const LightSampleContext& ctx, const RGB& L, const Vec3& wi, float pdf, float radius) {
+  LightLiSample s;
+  s.L = L;
+  s.wi = wi;
+  s.pdf = pdf;
+  // Two scene radii from a point inside the scene is outside it.
+  s.p_light = ctx.p + wi * (2.f * usable_radius(radius));
+  s.n_light = -wi;
+  return s;
+}
+
+float scene_radius_of(const Bounds3& b) {
+  float r = b.radius();
+  return std::isfinite(r) ? r : 0.f;
+}
+
+}  // namespace
+
+std::optional<LightLiSample> UniformInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
+  if (is_black(L_)) return std::nullopt;
+  return make_sample(ctx, L_, sample_uniform_sphere(u), uniform_sphere_pdf(), scene_radius_);
+}
+
+float UniformInfiniteLight::pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const {
+  return is_black(L_) ? 0.f : uniform_sphere_pdf();
+}
+
+float UniformInfiniteLight::power() const {
+  return 4.f * kPi * kPi * sqr(scene_radius_) * channel_mean(L_);
+}
+
+void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
+
+ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale)
+    : map_(std::move(map)), world_from_light_(world_from_light), light_from_world_(world_from_light.inverse()),
+      scale_(scale) {}
+
+Vec3 ImageInfiniteLight::to_light(const Vec3& w) const {
+  Vec3 wl = light_from_world_.vector(w);
+  float len = glm::length(wl);
+  return len > 0.f ? wl / len : Vec3(0.f, 0.f, 1.f);
+}
+
+std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
+  float map_pdf = 0.f;  // equals the pdf below unless wi rounds into another pixel
+  std::optional<Vec3> wl = map_.sample(u, &map_pdf);
+  if (!wl) return std::nullopt;
+  Vec3 wi = world_from_light_.vector(*wl);
+  float len = glm::length(wi);
+  if (!(len > 0.f)) return std::nullopt;
+  wi /= len;
+  // Density and radiance from wi itself, so that pdf_li(wi) and Le along wi agree with this
+  // sample to the last bit (MIS weights depend on it).
+  Vec3 back = to_light(wi);
+  float pdf = map_.pdf(back);
+  RGB L = scale_ * map_.radiance(back);
+  if (!(pdf > 0.f) || is_black(L)) return std::nullopt;
+  return make_sample(ctx, L, wi, pdf, scene_radius_);
+}
+
+float ImageInfiniteLight::pdf_li(const LightSampleContext&, const Vec3& wi, const SurfaceInteraction*) const {
+  return map_.pdf(to_light(wi));
+}
+
+RGB ImageInfiniteLight::Le(const Ray& ray) const { return scale_ * map_.radiance(to_light(ray.d)); }
+
+float ImageInfiniteLight::power() const {
+  return 4.f * kPi * kPi * sqr(scene_radius_) * scale_ * channel_mean(map_.mean_radiance());
+}
+
+void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
+
+namespace {
+
+EnvironmentMap read_environment_map(const ParameterList& params, const std::string& path) {
+  std::string error;
+  size_t non_finite = 0;
+  std::optional<RGBImage> image = read_rgb_image(path, &error, &non_finite);
+  if (!image) params.fail("filename", fmt::format("cannot read environment image \"{}\": {}", path, error));
+  if (non_finite > 0)
+    warn(params.find("filename")->loc,
+         fmt::format("parameter \"filename\": \"{}\" has {} non-finite value(s), read as 0", path, non_finite));
+  SphereMapping mapping;
+  if (image->width == image->height) {
+    mapping = SphereMapping::kEqualArea;
+  } else if (image->width == 2 * image->height) {
+    mapping = SphereMapping::kLatLong;
+  } else {
+    params.fail("filename", fmt::format("environment image \"{}\" is {}x{}: it must be square (pbrt-v4's "
+                                        "equal-area map) or 2:1 (latitude-longitude)",
+                                        path, image->width, image->height));
+  }
+  return EnvironmentMap(std::move(*image), mapping);
+}
+
+}  // namespace
+
+std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
+  const ParameterList& params = ctx.params;
+  std::optional<RGB> L = emission_param_or_null(params, "L");
+  float scale = scale_param(params);
+  std::optional<float> E = positive_param(params, "illuminance");
+  std::string filename = params.get_string("filename", "");
+  if (!params.get_point3s("portal").empty())
+    warn(params.find("portal")->loc,
+         "parameter \"portal\": portals are not supported by eyetrace; the whole environment is sampled");
+
+  if (filename.empty()) {
+    RGB Lc = L.value_or(RGB(1.f));
+    scale *= photometric_factor(E, kPi * luminance(Lc));
+    return std::make_unique<UniformInfiniteLight>(Lc * scale);
+  }
+  if (L) params.fail("filename", "an infinite light takes \"L\" or \"filename\", not both");
+  EnvironmentMap map = read_environment_map(params, resolve_path(ctx.search_dir, filename));
+  scale *= photometric_factor(E, map.up_illuminance());
+  return std::make_unique<ImageInfiniteLight>(std::move(map), ctx.world_from_light, scale);
+}
+
+}  // namespace eyetrace

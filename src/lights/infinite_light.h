@@ -1,0 +1,64 @@
+// pbrt-v4's "infinite" light: radiance arriving from every direction at infinity.
+// Constant ("L", default white) or from an image ("filename"): a square image is pbrt-v4's
+// equal-area octahedral map, a 2:1 image a latitude-longitude map (see sphere_mapping.h for
+// both layouts: +z is the image centre, or the top row). The light's transform (CTM at the
+// LightSource) turns map directions into the world; pbrt scenes with +y up therefore write
+// "Rotate -90 1 0 0" before it. Parameters: "scale" (1); "illuminance" rescales so that the
+// luminous irradiance on a patch facing the map's +z is the value given (pi L for a
+// constant map; pbrt-v4's image-map estimate of it is twice too low, eyetrace integrates
+// it exactly); "portal" is not supported (warning; the whole map is sampled).
+// Sampling: constant maps uniformly over the sphere (as pbrt-v4); image maps by luminance.
+#pragma once
+#include <memory>
+
+#include "core/light.h"
+#include "core/registry.h"
+#include "core/transform.h"
+#include "lights/environment_map.h"
+
+namespace eyetrace {
+
+class UniformInfiniteLight : public Light {
+ public:
+  explicit UniformInfiniteLight(const RGB& L) : L_(L) {}
+
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
+  RGB Le(const Ray&) const override { return L_; }
+  bool is_delta() const override { return false; }
+  bool is_infinite() const override { return true; }
+  // Flux through the scene's bounding disc from the whole sphere: 4 pi^2 r^2 L.
+  float power() const override;
+  void preprocess(const Bounds3& scene_bounds) override;
+
+ private:
+  RGB L_;
+  float scene_radius_ = 0.f;
+};
+
+class ImageInfiniteLight : public Light {
+ public:
+  ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale);
+
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
+  RGB Le(const Ray& ray) const override;
+  bool is_delta() const override { return false; }
+  bool is_infinite() const override { return true; }
+  float power() const override;
+  void preprocess(const Bounds3& scene_bounds) override;
+
+  const EnvironmentMap& map() const { return map_; }
+
+ private:
+  Vec3 to_light(const Vec3& w) const;
+
+  EnvironmentMap map_;
+  Transform world_from_light_, light_from_world_;
+  float scale_;
+  float scene_radius_ = 0.f;
+};
+
+std::unique_ptr<Light> create_infinite_light(const LightContext& ctx);
+
+}  // namespace eyetrace

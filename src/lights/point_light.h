@@ -1,0 +1,32 @@
+// pbrt-v4's "point" light: an isotropic point source of radiant intensity I (W/sr).
+// Parameters: "I" (spectrum, default white), "scale" (1), "power" (total luminous power:
+// rescales I so that 4 pi * luminance(I) equals it; "scale" still multiplies on top, as in
+// pbrt-v4), "from" (position in light space, (0,0,0)).
+#pragma once
+#include <memory>
+
+#include "core/light.h"
+#include "core/registry.h"
+
+namespace eyetrace {
+
+class PointLight : public Light {
+ public:
+  PointLight(const Vec3& position, const RGB& intensity) : p_(position), I_(intensity) {}
+
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  bool is_delta() const override { return true; }
+  float power() const override;
+
+  const Vec3& position() const { return p_; }
+  const RGB& intensity() const { return I_; }
+
+ private:
+  Vec3 p_;
+  RGB I_;  // scale folded in
+};
+
+std::unique_ptr<Light> create_point_light(const LightContext& ctx);
+
+}  // namespace eyetrace

@@ -1,0 +1,78 @@
+#include "lights/spot_light.h"
+
+#include "lights/light_params.h"
+
+namespace eyetrace {
+namespace {
+
+float smooth_step(float x, float a, float b) {
+  if (a == b) return x < a ? 0.f : 1.f;
+  float t = std::clamp((x - a) / (b - a), 0.f, 1.f);
+  return t * t * (3.f - 2.f * t);
+}
+
+}  // namespace
+
+SpotLight::SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I,
+                     float cone_angle_deg, float falloff_start_deg)
+    : light_from_world_(world_from_light.inverse()),
+      p_(world_from_light.point(from)),
+      axis_light_(glm::normalize(to - from)),
+      I_(I),
+      cos_falloff_start_(std::cos(radians(falloff_start_deg))),
+      cos_falloff_end_(std::cos(radians(cone_angle_deg))) {}
+
+RGB SpotLight::intensity(const Vec3& w) const {
+  Vec3 wl = light_from_world_.vector(w);
+  float len = glm::length(wl);
+  if (!(len > 0.f)) return RGB(0.f);
+  float cos_theta = glm::dot(wl / len, axis_light_);
+  return smooth_step(cos_theta, cos_falloff_end_, cos_falloff_start_) * I_;
+}
+
+std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx, Vec2) const {
+  Vec3 d = p_ - ctx.p;
+  float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.f) || !std::isfinite(dist2)) return std::nullopt;
+  Vec3 wi = d / std::sqrt(dist2);
+  RGB I = intensity(-wi);
+  if (is_black(I)) return std::nullopt;
+  LightLiSample s;
+  s.L = I / dist2;
+  s.wi = wi;
+  s.pdf = 1.f;
+  s.p_light = p_;
+  return s;
+}
+
+// The smoothstep is symmetric about the middle of [cos_end, cos_start], so the falloff
+// band contributes exactly half its solid angle.
+float SpotLight::power() const {
+  return channel_mean(I_) * 2.f * kPi * (1.f - 0.5f * (cos_falloff_start_ + cos_falloff_end_));
+}
+
+std::unique_ptr<Light> create_spot_light(const LightContext& ctx) {
+  const ParameterList& params = ctx.params;
+  RGB I = emission_param(params, "I");
+  float scale = scale_param(params);
+  std::optional<float> phi = positive_param(params, "power");
+  Vec3 from = params.get_point3("from", Vec3(0.f));
+  Vec3 to = params.get_point3("to", Vec3(0.f, 0.f, 1.f));
+  float cone = params.get_float_in("coneangle", 30.f, 0.f, 180.f);
+  float delta = params.get_float_in("conedeltaangle", 5.f, 0.f, 180.f);
+  if (from == to) params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the spot has no direction");
+  if (delta > cone) {
+    // pbrt-v4 would take cos of a negative start angle; a falloff across the whole cone is
+    // what such a scene means.
+    warn(params.find("conedeltaangle") ? params.find("conedeltaangle")->loc : params.loc(),
+         fmt::format("parameter \"conedeltaangle\": {} exceeds \"coneangle\" {}; the falloff starts at the axis",
+                     delta, cone));
+    delta = cone;
+  }
+  float cos_start = std::cos(radians(cone - delta)), cos_end = std::cos(radians(cone));
+  float k_e = 2.f * kPi * (1.f - 0.5f * (cos_start + cos_end));
+  scale *= photometric_factor(phi, k_e * luminance(I));
+  return std::make_unique<SpotLight>(ctx.world_from_light, from, to, I * scale, cone, cone - delta);
+}
+
+}  // namespace eyetrace

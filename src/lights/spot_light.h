@@ -1,0 +1,42 @@
+// pbrt-v4's "spot" light: a point source at "from" shining towards "to", full intensity I
+// within (coneangle - conedeltaangle) of the axis, falling off by a smoothstep in
+// cos(theta) to zero at "coneangle" (degrees; defaults 30 and 5).
+// Parameters: "I" (default white), "scale" (1), "power" (rescales I so that the total
+// luminous power 2 pi luminance(I) (1 - (cos_start + cos_end) / 2) equals it), "from"
+// (0,0,0), "to" (0,0,1), all in light space.
+#pragma once
+#include <memory>
+
+#include "core/light.h"
+#include "core/registry.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+class SpotLight : public Light {
+ public:
+  // `light_from_world` measures angles in the light's own frame (as pbrt-v4 does, so a
+  // non-uniform scale in the CTM distorts the cone like it distorts the scene).
+  SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I,
+            float cone_angle_deg, float falloff_start_deg);
+
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  bool is_delta() const override { return true; }
+  float power() const override;
+
+  // Radiant intensity towards world direction w (unit, pointing away from the light).
+  RGB intensity(const Vec3& w) const;
+  const Vec3& position() const { return p_; }
+
+ private:
+  Transform light_from_world_;
+  Vec3 p_;            // world position
+  Vec3 axis_light_;   // unit axis in light space
+  RGB I_;
+  float cos_falloff_start_, cos_falloff_end_;
+};
+
+std::unique_ptr<Light> create_spot_light(const LightContext& ctx);
+
+}  // namespace eyetrace

@@ -1,0 +1,57 @@
+// Base for the quadrics Embree cannot trace natively (sphere, disk): registers an Embree
+// user geometry whose callbacks run the shape's own ray test in object space, in double
+// precision, and holds the object/world transforms both ways in double.
+#pragma once
+#include <optional>
+
+#include "core/shape.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+struct DRay {
+  glm::dvec3 o, d;
+};
+
+class AnalyticShape : public Shape {
+ public:
+  AnalyticShape(const Transform& world_from_object, bool reverse_orientation);
+
+  unsigned attach(RTCDevice device, RTCScene scene) const override;
+  Bounds3 bounds() const override;
+
+  // Smallest t in (tmin, tmax) where the ray (given in the space the geometry lives in,
+  // `d` not necessarily unit) meets the surface; public for tests.
+  std::optional<double> hit(const Vec3& o, const Vec3& d, double tmin, double tmax) const;
+  // Whether the transform is a similarity (rotation, uniform scale, mirror, translation),
+  // under which uniform area sampling in object space stays uniform in world space.
+  bool is_similarity() const { return is_similarity_; }
+
+ protected:
+  virtual std::optional<double> hit_object(const DRay& r, double tmin, double tmax) const = 0;
+  // Object-space box around the surface.
+  virtual void object_bounds(glm::dvec3* lo, glm::dvec3* hi) const = 0;
+
+  DRay to_object(const Vec3& o, const Vec3& d) const;
+  Vec3 point_to_world(const glm::dvec3& p) const;
+  Vec3 vector_to_world(const glm::dvec3& v) const;
+  // Unit world normal of an object-space outward normal, flipped by ReverseOrientation.
+  // (pbrt flips cross(dpdu, dpdv) by ReverseOrientation XOR handedness; the inverse
+  // transpose already absorbs the handedness, so only ReverseOrientation remains.)
+  Vec3 normal_to_world(const glm::dvec3& n) const;
+  // Fills wo/time and guarantees non-degenerate tangents (poles, disk centre).
+  void finish(const Ray& ray, float t, SurfaceInteraction* si) const;
+  // Factor by which object-space areas grow in world space, exact for a similarity; else
+  // the approximation |det|^(2/3).
+  double area_scale() const { return area_scale_; }
+  // Exact area factor for the plane z = const (any affine transform).
+  double plane_area_scale() const;
+
+  glm::dmat4 world_from_object_, object_from_world_;
+  glm::dmat3 normal_from_object_;  // inverse transpose of the linear part
+  bool reverse_orientation_;
+  double area_scale_ = 1.0;
+  bool is_similarity_ = true;
+};
+
+}  // namespace eyetrace

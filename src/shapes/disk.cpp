@@ -1,0 +1,102 @@
+#include "shapes/disk.h"
+
+#include "core/error.h"
+#include "shapes/triangle_mesh.h"
+
+namespace eyetrace {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925;
+}
+
+Disk::Disk(const Transform& world_from_object, bool reverse_orientation, double height, double radius,
+           double inner_radius, double phimax_deg)
+    : AnalyticShape(world_from_object, reverse_orientation),
+      height_(height),
+      radius_(radius),
+      inner_radius_(inner_radius),
+      phimax_(std::clamp(phimax_deg, 0.0, 360.0) * (kTwoPi / 360.0)) {
+  // An affine map scales every area in a plane by the same factor, so the world area (and
+  // uniform sampling) is exact for any transform.
+  area_ = 0.5 * phimax_ * (radius_ * radius_ - inner_radius_ * inner_radius_) * plane_area_scale();
+}
+
+void Disk::object_bounds(glm::dvec3* lo, glm::dvec3* hi) const {
+  *lo = glm::dvec3(-radius_, -radius_, height_);
+  *hi = glm::dvec3(radius_, radius_, height_);
+}
+
+std::optional<double> Disk::hit_object(const DRay& r, double tmin, double tmax) const {
+  // A ray parallel to the plane never meets it (one lying in it grazes: no hit, as pbrt).
+  if (r.d.z == 0.0) return std::nullopt;
+  double t = (height_ - r.o.z) / r.d.z;
+  if (!(t > tmin && t < tmax)) return std::nullopt;
+  double x = r.o.x + t * r.d.x, y = r.o.y + t * r.d.y;
+  double dist2 = x * x + y * y;
+  if (dist2 > radius_ * radius_ || dist2 < inner_radius_ * inner_radius_) return std::nullopt;
+  if (phimax_ < kTwoPi) {
+    double phi = std::atan2(y, x);
+    if (phi < 0.0) phi += kTwoPi;
+    if (phi > phimax_) return std::nullopt;
+  }
+  return t;
+}
+
+void Disk::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
+  p.z = height_;  // exact plane: t from Embree is a float
+  double r_hit = std::sqrt(p.x * p.x + p.y * p.y);
+  double phi = std::atan2(p.y, p.x);
+  if (phi < 0.0) phi += kTwoPi;
+  // pbrt's parameterisation: u around, v from the rim (0) to the inner radius (1).
+  double u = phi / phimax_;
+  double v = (radius_ - r_hit) / (radius_ - inner_radius_);
+  glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0);
+  glm::dvec3 dpdv = r_hit > 0.0 ? glm::dvec3(p.x, p.y, 0.0) * ((inner_radius_ - radius_) / r_hit) : glm::dvec3(0.0);
+  si->p = point_to_world(p);
+  si->n = normal_to_world(glm::dvec3(0.0, 0.0, 1.0));
+  si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
+  si->dpdu = vector_to_world(dpdu);
+  si->dpdv = vector_to_world(dpdv);
+}
+
+SurfaceInteraction Disk::interaction(const Ray& ray, float t, unsigned, Vec2, Vec3) const {
+  DRay r = to_object(ray.o, ray.d);
+  SurfaceInteraction si;
+  surface_at(r.o + double(t) * r.d, &si);
+  finish(ray, t, &si);
+  return si;
+}
+
+ShapeSample Disk::sample_area(Vec2 u) const {
+  // Uniform in area over the annulus wedge: r^2 uniform in [ri^2, r^2], phi uniform. (pbrt-v4
+  // samples the full disk and ignores innerradius/phimax; this is exact for both.)
+  double r2 = inner_radius_ * inner_radius_ + double(u.x) * (radius_ * radius_ - inner_radius_ * inner_radius_);
+  double r = std::sqrt(r2), phi = double(u.y) * phimax_;
+  SurfaceInteraction si;
+  surface_at(glm::dvec3(r * std::cos(phi), r * std::sin(phi), height_), &si);
+  ShapeSample s;
+  s.p = si.p;
+  s.n = si.n;
+  s.uv = si.uv;
+  s.pdf_area = float(1.0 / area_);
+  return s;
+}
+
+std::vector<std::unique_ptr<Shape>> create_disk_shapes(const ShapeContext& ctx) {
+  const ParameterList& params = ctx.params;
+  float height = params.get_float("height", 0.f);
+  float radius = params.get_float("radius", 1.f);
+  if (!(radius > 0.f)) params.fail("radius", fmt::format("must be positive, got {}", radius));
+  float inner = params.get_float("innerradius", 0.f);
+  if (!(inner >= 0.f && inner < radius))
+    params.fail("innerradius", fmt::format("must be in [0, radius = {}), got {}", radius, inner));
+  float phimax = params.get_float("phimax", 360.f);
+  if (!(phimax > 0.f && phimax <= 360.f))
+    params.fail("phimax", fmt::format("must be in (0, 360] degrees, got {}", phimax));
+  warn_alpha_unsupported(params, "disk");
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(std::make_unique<Disk>(ctx.world_from_object, ctx.reverse_orientation, height, radius, inner, phimax));
+  return shapes;
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,141 @@
+#include "shapes/sphere.h"
+
+#include "core/error.h"
+#include "shapes/triangle_mesh.h"
+
+namespace eyetrace {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925;
+}
+
+Sphere::Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin,
+               double zmax, double phimax_deg)
+    : AnalyticShape(world_from_object, reverse_orientation), radius_(radius) {
+  zmin_ = std::clamp(std::min(zmin, zmax), -radius, radius);
+  zmax_ = std::clamp(std::max(zmin, zmax), -radius, radius);
+  phimax_ = std::clamp(phimax_deg, 0.0, 360.0) * (kTwoPi / 360.0);
+  theta_zmin_ = std::acos(std::clamp(zmin_ / radius, -1.0, 1.0));
+  theta_zmax_ = std::acos(std::clamp(zmax_ / radius, -1.0, 1.0));
+  full_ = zmin_ <= -radius && zmax_ >= radius && phimax_ >= kTwoPi;
+  // Archimedes: a spherical zone's area is 2 pi r times its height, so a wedge of it is
+  // phimax r (zmax - zmin). World area exact for similarity transforms (see header).
+  area_ = phimax_ * radius_ * (zmax_ - zmin_) * area_scale();
+}
+
+void Sphere::object_bounds(glm::dvec3* lo, glm::dvec3* hi) const {
+  *lo = glm::dvec3(-radius_, -radius_, zmin_);
+  *hi = glm::dvec3(radius_, radius_, zmax_);
+}
+
+bool Sphere::cut_away(const glm::dvec3& p) const {
+  if (full_) return false;
+  if (p.z < zmin_ || p.z > zmax_) return true;
+  if (phimax_ >= kTwoPi) return false;
+  double phi = std::atan2(p.y, p.x);
+  if (phi < 0.0) phi += kTwoPi;
+  return phi > phimax_;
+}
+
+std::optional<double> Sphere::hit_object(const DRay& r, double tmin, double tmax) const {
+  const glm::dvec3 &o = r.o, &d = r.d;
+  double a = glm::dot(d, d);
+  if (!(a > 0.0) || !std::isfinite(a)) return std::nullopt;
+  double b = glm::dot(o, d);  // half of the textbook b: roots are (-b +- sqrt(b^2 - a c)) / a
+  double len_o = glm::length(o);
+  double c = (len_o - radius_) * (len_o + radius_);  // |o|^2 - r^2 without cancellation near |o| = r
+  // b^2 - a c = a (r^2 - |f|^2), f = the point of the line closest to the centre (pbrt-v4's
+  // form): b^2 and a c are huge and nearly equal when the origin is far from a small
+  // sphere, while |f| is computed directly.
+  glm::dvec3 f = o - (b / a) * d;
+  double len_f = glm::length(f);
+  double disc = a * (radius_ - len_f) * (radius_ + len_f);
+  if (disc < 0.0) return std::nullopt;
+  // q = -(b + sign(b) sqrt(disc)) adds two numbers of the same sign, so it never cancels;
+  // the roots are then q / a and c / q (Vieta: their product is c / a). The textbook
+  // (-b + sqrt) / a would lose every digit of the near root when b^2 >> a c.
+  double q = -(b + std::copysign(std::sqrt(disc), b));
+  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  // The near root first; when it lies before tmin or its point is cut away (partial
+  // sphere), the far root is the first surface the ray meets, e.g. the inside of a bowl.
+  for (double t : {t0, t1}) {
+    if (t >= tmax) break;
+    if (t > tmin && !cut_away(o + t * d)) return t;
+  }
+  return std::nullopt;
+}
+
+void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
+  // Project back onto the surface: t from Embree is a float, so o + t d is off by ~|o| eps.
+  double len = glm::length(p);
+  p = len > 0.0 ? p * (radius_ / len) : glm::dvec3(0.0, 0.0, radius_);
+  double phi = std::atan2(p.y, p.x);
+  if (phi < 0.0) phi += kTwoPi;
+  double cos_theta = std::clamp(p.z / radius_, -1.0, 1.0);
+  double theta = std::acos(cos_theta), sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  double rxy = std::sqrt(p.x * p.x + p.y * p.y);
+  double cos_phi = rxy > 0.0 ? p.x / rxy : 1.0, sin_phi = rxy > 0.0 ? p.y / rxy : 0.0;
+  double u = phi / phimax_;
+  double v = (theta - theta_zmin_) / (theta_zmax_ - theta_zmin_);
+  glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0);
+  glm::dvec3 dpdv = (theta_zmax_ - theta_zmin_) * glm::dvec3(p.z * cos_phi, p.z * sin_phi, -radius_ * sin_theta);
+  si->p = point_to_world(p);
+  si->n = normal_to_world(p);
+  si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
+  si->dpdu = vector_to_world(dpdu);
+  si->dpdv = vector_to_world(dpdv);
+}
+
+SurfaceInteraction Sphere::interaction(const Ray& ray, float t, unsigned, Vec2, Vec3) const {
+  DRay r = to_object(ray.o, ray.d);
+  SurfaceInteraction si;
+  surface_at(r.o + double(t) * r.d, &si);
+  finish(ray, t, &si);
+  return si;
+}
+
+ShapeSample Sphere::sample_area(Vec2 u) const {
+  // Uniform in z and in phi is uniform in area on a sphere (Archimedes), so this is exact
+  // for partial spheres too. In world space it stays uniform under similarity transforms;
+  // under a non-uniform scale the density is only approximately 1 / area (warned at load).
+  double z = zmin_ + double(u.x) * (zmax_ - zmin_);
+  double phi = double(u.y) * phimax_;
+  double rxy = std::sqrt(std::max(0.0, radius_ * radius_ - z * z));
+  SurfaceInteraction si;
+  surface_at(glm::dvec3(rxy * std::cos(phi), rxy * std::sin(phi), z), &si);
+  ShapeSample s;
+  s.p = si.p;
+  s.n = si.n;
+  s.uv = si.uv;
+  s.pdf_area = float(1.0 / area_);
+  return s;
+}
+
+std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx) {
+  const ParameterList& params = ctx.params;
+  float radius = params.get_float("radius", 1.f);
+  if (!(radius > 0.f)) params.fail("radius", fmt::format("must be positive, got {}", radius));
+  float zmin = params.get_float("zmin", -radius);
+  float zmax = params.get_float("zmax", radius);
+  float phimax = params.get_float("phimax", 360.f);
+  if (!(phimax > 0.f && phimax <= 360.f))
+    params.fail("phimax", fmt::format("must be in (0, 360] degrees, got {}", phimax));
+  if (zmin > zmax) {
+    warn(params.loc(), fmt::format("sphere: \"zmin\" {} is above \"zmax\" {}; swapping them as pbrt does", zmin, zmax));
+    std::swap(zmin, zmax);
+  }
+  if (!(std::min(zmax, radius) > std::max(zmin, -radius)))
+    params.fail("zmin", fmt::format("the cut [zmin, zmax] = [{}, {}] leaves nothing of a sphere of radius {}",
+                                    zmin, zmax, radius));
+  warn_alpha_unsupported(params, "sphere");
+  auto sphere = std::make_unique<Sphere>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax, phimax);
+  if (!sphere->is_similarity())
+    warn(params.loc(), "sphere: the transform scales non-uniformly; area sampling (for area lights) treats the "
+                       "ellipsoid as if uniformly scaled, so its density is approximate");
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(std::move(sphere));
+  return shapes;
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,241 @@
+#include "shapes/triangle_mesh.h"
+
+#include <algorithm>
+
+#include "core/sampling.h"
+
+namespace eyetrace {
+
+namespace {
+
+bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Unit vector along `v` even when |v|^2 would under- or overflow in float; zero if v is zero
+// or not finite.
+Vec3 robust_normalize(const Vec3& v) {
+  float m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+  if (!(m > 0.f) || !std::isfinite(m)) return Vec3(0.f);
+  Vec3 s = v / m;
+  return s / glm::length(s);
+}
+
+// pbrt's default (u, v) for the corners of a triangle without "uv".
+constexpr Vec2 kDefaultUV[3] = {Vec2(0.f, 0.f), Vec2(1.f, 0.f), Vec2(1.f, 1.f)};
+
+}  // namespace
+
+void warn_alpha_unsupported(const ParameterList& params, const std::string& shape_name) {
+  const Param* p = params.find("alpha");
+  if (!p) return;
+  if (p->canonical_type() == "texture") {
+    params.get_texture("alpha");
+  } else if (params.get_float("alpha", 1.f) == 1.f) {
+    return;  // fully opaque: nothing is lost
+  }
+  warn(p->loc, fmt::format("{}: parameter \"alpha\": alpha cutouts are not supported; the shape is opaque",
+                           shape_name));
+}
+
+TriangleMesh::TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation,
+                           const MeshSource& source)
+    : flip_normal_(reverse_orientation != world_from_object.swaps_handedness()) {
+  validate(mesh, source);
+  // pbrt flips given shading normals with ReverseOrientation (not with handedness: the
+  // inverse-transpose transform already keeps them on the surface's outer side).
+  for (Vec3& n : mesh.normals) {
+    n = world_from_object.normal(n);
+    if (reverse_orientation) n = -n;
+  }
+  build(mesh, world_from_object, source);
+}
+
+void TriangleMesh::validate(MeshData& mesh, const MeshSource& src) const {
+  const ParameterList& params = src.params;
+  size_t nv = mesh.positions.size();
+  if (nv == 0) params.fail(src.p, src.context + "the mesh has no vertex positions");
+  if (mesh.indices.empty()) {
+    if (nv != 3)
+      params.fail(src.indices, src.context + fmt::format("vertex indices are required unless the mesh has "
+                                                         "exactly 3 vertices (it has {})", nv));
+    mesh.indices = {0, 1, 2};
+  }
+  if (mesh.indices.size() % 3 != 0)
+    params.fail(src.indices, src.context + fmt::format("{} vertex indices is not a multiple of 3",
+                                                       mesh.indices.size()));
+  for (size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] < 0 || size_t(mesh.indices[i]) >= nv)
+      params.fail(src.indices, src.context + fmt::format("index {} (entry {}) is out of range: there are {} "
+                                                         "vertices", mesh.indices[i], i, nv));
+  if (!mesh.normals.empty() && mesh.normals.size() != nv)
+    params.fail(src.n, src.context + fmt::format("{} normals given for {} vertices", mesh.normals.size(), nv));
+  if (!mesh.uvs.empty() && mesh.uvs.size() != nv)
+    params.fail(src.uv, src.context + fmt::format("{} uv values given for {} vertices", mesh.uvs.size(), nv));
+  for (size_t i = 0; i < nv; ++i)
+    if (!finite3(mesh.positions[i]))
+      params.fail(src.p, src.context + fmt::format("vertex {} is not finite", i));
+}
+
+void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, const MeshSource& src) {
+  vertex_count_ = mesh.positions.size();
+  positions_.reserve(vertex_count_ + 1);
+  for (size_t i = 0; i < vertex_count_; ++i) {
+    Vec3 p = world_from_object.point(mesh.positions[i]);
+    if (!finite3(p))
+      src.params.fail(src.p, src.context + fmt::format("vertex {} is not finite after the object's transform", i));
+    positions_.push_back(p);
+  }
+  positions_.push_back(Vec3(0.f));  // padding for Embree's 16-byte loads (see header)
+
+  indices_.reserve(mesh.indices.size());
+  cdf_.reserve(mesh.indices.size() / 3);
+  double total = 0.0;
+  for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+    const Vec3 &p0 = positions_[mesh.indices[i]], &p1 = positions_[mesh.indices[i + 1]],
+               &p2 = positions_[mesh.indices[i + 2]];
+    // Degenerate means: no usable normal in float (the same cross product interaction()
+    // uses), so such a triangle could only ever produce NaN shading frames.
+    if (robust_normalize(glm::cross(p0 - p2, p1 - p2)) == Vec3(0.f)) {
+      ++dropped_;
+      continue;
+    }
+    glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0);
+    total += 0.5 * glm::length(glm::cross(e1, e2));
+    cdf_.push_back(total);
+    for (int k = 0; k < 3; ++k) {
+      indices_.push_back(uint32_t(mesh.indices[i + k]));
+      bounds_.extend(positions_[mesh.indices[i + k]]);
+    }
+  }
+  if (dropped_ > 0)
+    warn(src.params.loc(), src.context + fmt::format("dropped {} degenerate (zero-area) triangle(s) of {}",
+                                                     dropped_, mesh.indices.size() / 3));
+  if (indices_.empty() || !(total > 0.0) || !std::isfinite(total))
+    src.params.fail(src.p, src.context + "the mesh has no triangle of nonzero, finite area");
+  for (double& c : cdf_) c /= total;
+  cdf_.back() = 1.0;
+  area_ = float(total);
+  normals_ = std::move(mesh.normals);
+  uvs_ = std::move(mesh.uvs);
+}
+
+unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Shared buffers: Embree reads our arrays directly, no second copy of a large mesh.
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions_.data(), 0,
+                             sizeof(Vec3), vertex_count_);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices_.data(), 0,
+                             3 * sizeof(uint32_t), indices_.size() / 3);
+  rtcCommitGeometry(geom);
+  unsigned id = rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  return id;
+}
+
+TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
+  Corner c;
+  for (int k = 0; k < 3; ++k) {
+    uint32_t v = indices_[3 * tri + k];
+    c.p[k] = positions_[v];
+    c.uv[k] = uvs_.empty() ? kDefaultUV[k] : uvs_[v];
+  }
+  return c;
+}
+
+void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n,
+                              Vec3* ns) const {
+  // pbrt: n along cross(p0 - p2, p1 - p2) of the world-space corners, flipped when
+  // ReverseOrientation XOR the transform swaps handedness; given shading normals instead
+  // decide the side the geometric normal faces.
+  *n = robust_normalize(glm::cross(c.p[0] - c.p[2], c.p[1] - c.p[2]));
+  if (normals_.empty()) {
+    if (flip_normal_) *n = -*n;
+    *ns = *n;
+    return;
+  }
+  const uint32_t* v = &indices_[3 * tri];
+  Vec3 s = robust_normalize(b0 * normals_[v[0]] + b1 * normals_[v[1]] + b2 * normals_[v[2]]);
+  if (s == Vec3(0.f)) {
+    if (flip_normal_) *n = -*n;
+    *ns = *n;
+    return;
+  }
+  if (glm::dot(*n, s) < 0.f) *n = -*n;
+  *ns = s;
+}
+
+SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3) const {
+  Corner c = corners(prim_id);
+  // Embree's barycentrics: u weights vertex 1, v weights vertex 2.
+  float b1 = uv.x, b2 = uv.y, b0 = 1.f - b1 - b2;
+  SurfaceInteraction si;
+  // The barycentric point lies on the triangle's plane to float rounding, which keeps the
+  // spawned-ray offset small; ray.at(t) can be off the plane by |o| * eps.
+  si.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
+  si.t = t;
+  si.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
+  normals_at(prim_id, b0, b1, b2, c, &si.n, &si.ns);
+
+  // dp/du, dp/dv from the uv parameterisation (pbrt's 2x2 solve); a degenerate uv mapping
+  // falls back to an arbitrary frame around n.
+  Vec2 duv02 = c.uv[0] - c.uv[2], duv12 = c.uv[1] - c.uv[2];
+  Vec3 dp02 = c.p[0] - c.p[2], dp12 = c.p[1] - c.p[2];
+  float det = duv02.x * duv12.y - duv02.y * duv12.x;
+  bool ok = std::abs(det) > 1e-12f;
+  if (ok) {
+    float inv = 1.f / det;
+    si.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+    si.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+    Vec3 cr = glm::cross(si.dpdu, si.dpdv);
+    ok = finite3(cr) && glm::dot(cr, cr) > 0.f;
+  }
+  if (!ok) coordinate_system(si.n, &si.dpdu, &si.dpdv);
+  si.wo = -glm::normalize(ray.d);
+  si.time = ray.time;
+  return si;
+}
+
+ShapeSample TriangleMesh::sample_area(Vec2 u) const {
+  // Choose a triangle with probability area / total, then reuse u.x within its CDF slot.
+  size_t tri = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u.x)) - cdf_.begin());
+  tri = std::min(tri, cdf_.size() - 1);
+  double lo = tri == 0 ? 0.0 : cdf_[tri - 1];
+  double width = cdf_[tri] - lo;
+  float ux = width > 0.0 ? float((double(u.x) - lo) / width) : 0.f;
+  ux = std::clamp(ux, 0.f, kOneMinusEpsilon);
+
+  Vec2 b = sample_uniform_triangle(Vec2(ux, u.y));
+  float b0 = b.x, b1 = b.y, b2 = std::max(0.f, 1.f - b0 - b1);
+  Corner c = corners(unsigned(tri));
+  ShapeSample s;
+  s.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
+  s.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
+  Vec3 ns;
+  normals_at(unsigned(tri), b0, b1, b2, c, &s.n, &ns);
+  s.pdf_area = 1.f / area_;
+  return s;
+}
+
+std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx) {
+  const ParameterList& params = ctx.params;
+  MeshData mesh;
+  mesh.positions = params.get_point3s("P");
+  mesh.indices = params.get_ints("indices");
+  mesh.normals = params.get_normals("N");
+  mesh.uvs = params.get_point2s("uv");
+  if (const Param* s = params.find("S")) {
+    s->used = true;
+    warn(s->loc, "trianglemesh: parameter \"S\" (tangents) is ignored; shading frames come from \"N\" and \"uv\"");
+  }
+  std::vector<int> face_indices = params.get_ints("faceIndices");
+  warn_alpha_unsupported(params, "trianglemesh");
+  std::vector<std::unique_ptr<Shape>> shapes;
+  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
+                                            MeshSource{params});
+  if (!face_indices.empty() && face_indices.size() != tri->primitive_count() + size_t(tri->dropped_triangles()))
+    params.fail("faceIndices", fmt::format("{} face indices given for {} triangles", face_indices.size(),
+                                           tri->primitive_count() + tri->dropped_triangles()));
+  shapes.push_back(std::move(tri));
+  return shapes;
+}
+
+}  // namespace eyetrace
