@@ -59,7 +59,7 @@ SpotResult trace_spot(const Prescription& p, const SpotOptions& options) {
     const CompiledSystem system(p);
     const ParaxialData para = paraxial_analysis(p);
     const double theta = options.field_deg * std::numbers::pi / 180.0;
-    Launcher launch{system, {}, {0.0, std::sin(theta), std::cos(theta)},
+    Launcher launch{system, {}, {0.0, -std::sin(theta), std::cos(theta)},
                     std::isinf(options.object_distance_m), para.entrance_pupil.position_mm,
                     std::min(launch_plane(p), para.entrance_pupil.position_mm - 1.0)};
     launch.source = glm::dvec3(0.0, 0.0, para.entrance_pupil.position_mm) -

@@ -19,7 +19,9 @@
 namespace eyetrace::optics {
 
 struct SpotOptions {
-    double field_deg = 0.0;  // angle of the source from the axis, in the y-z plane; |.| < 85
+    // Angle of the source from the axis in the y-z plane, |.| < 85; a positive field puts the
+    // source above the axis (+y), so its image lands at -y.
+    double field_deg = 0.0;
     // Distance of the point source from the entrance-pupil centre, metres; +inf = at infinity.
     double object_distance_m = std::numeric_limits<double>::infinity();
     int grid = 64;  // fine grid size across the pupil's bounding box
