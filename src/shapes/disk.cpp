@@ -15,7 +15,7 @@ Disk::Disk(const Transform& world_from_object, bool reverse_orientation, double 
       height_(height),
       radius_(radius),
       inner_radius_(inner_radius),
-      phimax_(std::clamp(phimax_deg, 0.0, 360.0) * (kTwoPi / 360.0)) {
+      phimax_(std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPi) {
   // An affine map scales every area in a plane by the same factor, so the world area (and
   // uniform sampling) is exact for any transform.
   area_ = 0.5 * phimax_ * (radius_ * radius_ - inner_radius_ * inner_radius_) * plane_area_scale();

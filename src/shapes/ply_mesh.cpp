@@ -76,8 +76,9 @@ std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ct
   warn_alpha_unsupported(params, "plymesh");
 
   MeshData mesh = read_ply_mesh(path.string(), params);
-  MeshSource source{params, "filename", "filename", "filename", "filename",
-                    fmt::format("\"{}\": ", path.string())};
+  MeshSource source(params);
+  source.p = source.indices = source.n = source.uv = "filename";
+  source.context = fmt::format("\"{}\": ", path.string());
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source));
   return shapes;

@@ -35,4 +35,10 @@ ProceduralMesh make_uv_sphere_mesh(int rings, int segments, float radius) {
   return m;
 }
 
+std::unique_ptr<TriangleMesh> make_triangle_mesh(const ProceduralMesh& mesh, const Transform& world_from_object) {
+  ParameterList no_params;  // procedural data has no scene parameters to blame
+  return std::make_unique<TriangleMesh>(MeshData{mesh.positions, mesh.indices, mesh.normals, {}}, world_from_object,
+                                        false, MeshSource(no_params));
+}
+
 }  // namespace eyetrace

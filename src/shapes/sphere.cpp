@@ -14,7 +14,7 @@ Sphere::Sphere(const Transform& world_from_object, bool reverse_orientation, dou
     : AnalyticShape(world_from_object, reverse_orientation), radius_(radius) {
   zmin_ = std::clamp(std::min(zmin, zmax), -radius, radius);
   zmax_ = std::clamp(std::max(zmin, zmax), -radius, radius);
-  phimax_ = std::clamp(phimax_deg, 0.0, 360.0) * (kTwoPi / 360.0);
+  phimax_ = std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPi;
   theta_zmin_ = std::acos(std::clamp(zmin_ / radius, -1.0, 1.0));
   theta_zmax_ = std::acos(std::clamp(zmax_ / radius, -1.0, 1.0));
   full_ = zmin_ <= -radius && zmax_ >= radius && phimax_ >= kTwoPi;

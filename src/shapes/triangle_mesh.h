@@ -25,6 +25,7 @@ struct MeshData {
 // "P", "indices", ... for inline meshes, "filename" (with `context` naming the file) for
 // meshes read from files.
 struct MeshSource {
+  explicit MeshSource(const ParameterList& p) : params(p) {}
   const ParameterList& params;
   std::string p = "P", indices = "indices", n = "N", uv = "uv";
   std::string context;  // prefix for messages, e.g. "file \"bunny.ply\": "
