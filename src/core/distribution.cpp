@@ -94,7 +94,6 @@ Vec2 PiecewiseConstant2D::sample(Vec2 u, float* pdf, IVec2* cell) const {
 
 float PiecewiseConstant2D::pdf(Vec2 p) const {
   if (!(p.x >= 0.f && p.x < 1.f && p.y >= 0.f && p.y < 1.f)) return 0.f;
-  int iu = std::min(int(p.x * float(nu_)), nu_ - 1);
   int iv = std::min(int(p.y * float(nv_)), nv_ - 1);
   // Same product as sample(): the all-zero map is uniform, an all-zero row never chosen.
   float pdf_v = marginal_.pmf(size_t(iv)) * float(nv_);

@@ -64,7 +64,7 @@ class Scene {
   struct Placement;
   RTCDevice device_ = nullptr;
   RTCScene root_ = nullptr;
-  std::vector<Primitive> prims_;  // indexed by Embree geometry ID in the root scene
+  std::vector<Primitive> prims_;  // directly placed primitives; geom_index_ maps a root geometry ID here
   std::map<std::string, std::unique_ptr<InstanceGroup>> groups_;
   std::vector<Placement> placements_;  // indexed by Embree instance geometry ID (in root)
   std::vector<std::unique_ptr<Light>> light_store_;

@@ -176,6 +176,26 @@ void check_memory(const FilmSettings& f, const RenderOverrides& o) {
                             f.bounds.width(), f.bounds.height(), bytes / 1073741824.0, o.max_memory_bytes / 1073741824.0));
 }
 
+// pbrt-v4 Options: "seed" seeds the sampler (unless --seed is given); the others change
+// things eyetrace does not have, and are named in a warning rather than dropped silently.
+std::optional<uint64_t> apply_options(const SceneDescription& desc) {
+  std::optional<uint64_t> seed;
+  for (const SceneEntity& o : desc.options) {
+    if (o.name == "seed") {
+      int v = o.params.get_int("seed", 0);
+      if (v < 0) o.params.fail("seed", "must not be negative");
+      seed = uint64_t(v);
+    } else {
+      o.params.mark_all_used();
+      warn(o.loc, fmt::format("Option \"{}\" is not supported by eyetrace; ignored", o.name));
+    }
+  }
+  if (desc.color_space != "srgb")
+    warn(SourceLoc{}, fmt::format("ColorSpace \"{}\": eyetrace renders in linear sRGB primaries; RGB values are used as given",
+                                  desc.color_space));
+  return seed;
+}
+
 }  // namespace
 
 std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderOverrides& o) {
@@ -192,7 +212,8 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   setup.camera = make_camera(desc, o, f.resolution);
 
   const SceneEntity& s = desc.sampler;
-  SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(0)};
+  std::optional<uint64_t> option_seed = apply_options(desc);
+  SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
   setup.sampler = find_plugin(reg.samplers, "sampler", s.name, s.loc)(sctx);
   s.params.check_unused("Sampler \"" + s.name + "\"");
 

@@ -37,12 +37,14 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
   return s;
 }
 
-float DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const {
+float DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, const Vec3&, const SurfaceInteraction* hit) const {
   if (!hit || !(area_ > 0.f)) return 0.f;
+  // The geometry comes from the two points alone: wi need not be normalised by the caller.
   Vec3 d = hit->p - ctx.p;
   float dist2 = glm::dot(d, d);
-  float cos_light = std::abs(glm::dot(hit->n, wi));
-  if (!(dist2 > 0.f) || !(cos_light > 0.f)) return 0.f;
+  if (!(dist2 > 0.f)) return 0.f;
+  float cos_light = std::abs(glm::dot(hit->n, d)) / std::sqrt(dist2);
+  if (!(cos_light > 0.f)) return 0.f;
   float pdf = dist2 / (area_ * cos_light);
   return std::isfinite(pdf) ? pdf : 0.f;
 }

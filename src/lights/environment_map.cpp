@@ -69,28 +69,41 @@ RGB EnvironmentMap::mean_radiance() const {
   return sum / (4.f * kPi);
 }
 
-// Equal-area: midpoint rule over pixels (every pixel the same solid angle). Lat-long: each
-// row exactly, since cos(theta) sin(theta) integrates to (sin^2 theta1 - sin^2 theta0) / 2.
+// Equal-area: midpoint rule over pixels (every pixel the same solid angle), except that
+// pixels near the horizon, where cos+ has its kink, are subdivided 8 x 8 (the midpoint rule
+// is biased low there). Lat-long: each row exactly, since cos(theta) sin(theta) integrates
+// to (sin^2 theta1 - sin^2 theta0) / 2.
 float EnvironmentMap::up_illuminance() const {
   double E = 0.0;
   for (int y = 0; y < image_.height; ++y) {
-    float row_weight = 0.f;
     if (mapping_ == SphereMapping::kLatLong) {
       float theta0 = kPi * float(y) / float(image_.height);
       float theta1 = std::min(kPi * float(y + 1) / float(image_.height), kPi / 2.f);
       if (theta0 >= kPi / 2.f) break;
-      row_weight = (2.f * kPi / float(image_.width)) * 0.5f * (sqr(std::sin(theta1)) - sqr(std::sin(theta0)));
+      float row_weight = (2.f * kPi / float(image_.width)) * 0.5f * (sqr(std::sin(theta1)) - sqr(std::sin(theta0)));
+      for (int x = 0; x < image_.width; ++x) E += double(luminance(image_.at(x, y))) * row_weight;
+      continue;
     }
-    for (int x = 0; x < image_.width; ++x) {
-      float weight = row_weight;
-      if (mapping_ == SphereMapping::kEqualArea) {
-        Vec2 uv((float(x) + 0.5f) / float(image_.width), (float(y) + 0.5f) / float(image_.height));
-        weight = std::max(0.f, equal_area_square_to_sphere(uv).z) * pixel_solid_angle(y);
-      }
-      E += double(luminance(image_.at(x, y))) * weight;
-    }
+    for (int x = 0; x < image_.width; ++x) E += double(luminance(image_.at(x, y))) * equal_area_pixel_cosine(x, y);
   }
   return float(E);
+}
+
+// Integral of max(0, z) over pixel (x, y) of the equal-area map.
+float EnvironmentMap::equal_area_pixel_cosine(int x, int y) const {
+  float w = float(image_.width), h = float(image_.height);
+  float omega = 4.f * kPi / (w * h);
+  float zc = equal_area_square_to_sphere(Vec2((float(x) + 0.5f) / w, (float(y) + 0.5f) / h)).z;
+  // Across one pixel z changes by at most about 4 pixel widths of the [-1, 1] square.
+  if (std::abs(zc) > 8.f / std::min(w, h)) return std::max(0.f, zc) * omega;
+  const int n = 8;
+  float sum = 0.f;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Vec2 uv((float(x) + (float(i) + 0.5f) / n) / w, (float(y) + (float(j) + 0.5f) / n) / h);
+      sum += std::max(0.f, equal_area_square_to_sphere(uv).z);
+    }
+  return sum / float(n * n) * omega;
 }
 
 }  // namespace eyetrace

@@ -37,6 +37,7 @@ class EnvironmentMap {
   float sphere_per_square(const Vec3& w) const;
   // Solid angle of pixel row y (every pixel of the row covers the same).
   float pixel_solid_angle(int y) const;
+  float equal_area_pixel_cosine(int x, int y) const;
 
   RGBImage image_;
   SphereMapping mapping_;

@@ -1,12 +1,14 @@
 // pbrt-v4's "infinite" light: radiance arriving from every direction at infinity.
 // Constant ("L", default white) or from an image ("filename"): a square image is pbrt-v4's
 // equal-area octahedral map, a 2:1 image a latitude-longitude map (see sphere_mapping.h for
-// both layouts: +z is the image centre, or the top row). The light's transform (CTM at the
-// LightSource) turns map directions into the world; pbrt scenes with +y up therefore write
-// "Rotate -90 1 0 0" before it. Parameters: "scale" (1); "illuminance" rescales so that the
-// luminous irradiance on a patch facing the map's +z is the value given (pi L for a
-// constant map; pbrt-v4's image-map estimate of it is twice too low, eyetrace integrates
-// it exactly); "portal" is not supported (warning; the whole map is sampled).
+// both layouts: +z is the image centre, or the top row). The light's transform (the CTM at
+// the LightSource; a rotation, as in pbrt-v4: a scaling CTM would skew the densities) turns
+// map directions into the world, so pbrt scenes with +y up write "Rotate -90 1 0 0" first.
+// Parameters: "scale" (1); "illuminance" rescales so that the luminous irradiance on a
+// patch facing the map's +z is the value given (pi L for a constant map; for image maps
+// pbrt-v4 weighs pixels by 2 pi / N instead of 4 pi / N and so renders them twice as bright
+// as asked, eyetrace integrates the map as it is); "portal" is not supported (a warning;
+// the whole map is sampled).
 // Sampling: constant maps uniformly over the sphere (as pbrt-v4); image maps by luminance.
 #pragma once
 #include <memory>

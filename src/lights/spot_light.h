@@ -3,7 +3,9 @@
 // cos(theta) to zero at "coneangle" (degrees; defaults 30 and 5).
 // Parameters: "I" (default white), "scale" (1), "power" (rescales I so that the total
 // luminous power 2 pi luminance(I) (1 - (cos_start + cos_end) / 2) equals it), "from"
-// (0,0,0), "to" (0,0,1), all in light space.
+// (0,0,0), "to" (0,0,1), all in light space. A conedeltaangle larger than coneangle (which
+// pbrt-v4 turns into a falloff band mirrored about the axis) is a warning, and the falloff
+// then spans the whole cone.
 #pragma once
 #include <memory>
 

@@ -1,0 +1,351 @@
+// Infinite lights. Constant: the irradiance estimator built from sample_li gives pi L on a
+// horizontal patch. Image maps (equal-area and lat-long, written here as EXR files): the
+// sampled directions follow pixel luminance and pdf_li (chi-square, 1% significance),
+// pdf_li integrates to 1 over the sphere, samples agree with pdf_li and Le, "illuminance"
+// normalises the +z irradiance, the transform orients the map, and bad files are errors
+// naming "filename". Statistical tolerances are 4 standard errors (two-sided ~6e-5).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+#include <functional>
+
+#include "core/error.h"
+#include "core/sampling.h"
+#include "core/transform.h"
+#include "lights/infinite_light.h"
+#include "lights/sphere_mapping.h"
+#include "light_test_util.h"
+
+namespace eyetrace {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A scratch folder for the images the tests write, removed when the program exits.
+struct ScratchDir {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("eyetrace_lights_test_" + std::to_string(getpid()));
+  ScratchDir() { std::filesystem::create_directories(dir); }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+std::string temp_path(const std::string& name) {
+  static ScratchDir scratch;
+  return (scratch.dir / name).string();
+}
+
+void write_image(const std::string& path, int w, int h, const std::function<RGB(int, int)>& pixel,
+                 OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT) {
+  std::vector<float> data(size_t(w) * h * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) data[(size_t(y) * w + x) * 3 + c] = pixel(x, y)[c];
+  auto out = OIIO::ImageOutput::create(path);
+  ASSERT_TRUE(out) << OIIO::geterror();
+  ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, format)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, data.data()));
+  out->close();
+}
+
+// A sky with a bright sun, a colour gradient and a black region (zero density must never
+// be sampled), given as radiance per direction.
+RGB sky(const Vec3& d) {
+  Vec3 sun = glm::normalize(Vec3(0.4f, -0.3f, 0.8f));
+  if (d.z < -0.7f) return RGB(0.f);
+  float v = 0.3f + 6.f * std::exp(-6.f * (1.f - glm::dot(d, sun)));
+  return v * RGB(1.f, 0.8f + 0.2f * d.x, 0.6f);
+}
+
+std::string write_equal_area_sky(int res) {
+  std::string path = temp_path(fmt::format("sky_equal_area_{}.exr", res));
+  write_image(path, res, res, [&](int x, int y) {
+    return sky(equal_area_square_to_sphere(Vec2((x + 0.5f) / res, (y + 0.5f) / res)));
+  });
+  return path;
+}
+
+std::string write_latlong_sky(int h) {
+  std::string path = temp_path(fmt::format("sky_latlong_{}.exr", h));
+  write_image(path, 2 * h, h, [&](int x, int y) {
+    return sky(latlong_square_to_sphere(Vec2((x + 0.5f) / (2 * h), (y + 0.5f) / h)));
+  });
+  return path;
+}
+
+std::unique_ptr<Light> make_infinite(std::vector<Param> ps, const Transform& t = Transform()) {
+  ParameterList params = make_params(std::move(ps));
+  return create_infinite_light(LightContext{params, t, ""});
+}
+
+// Irradiance on a patch with normal n from N sample_li samples: sum L cos / pdf.
+Estimate irradiance_estimate(const Light& light, const Vec3& n, int count, uint32_t seed) {
+  Uniform rng(seed);
+  std::vector<double> x(count, 0.0);
+  LightSampleContext ctx{Vec3(0.f), n};
+  for (int i = 0; i < count; ++i) {
+    auto s = light.sample_li(ctx, rng.next2());
+    if (s) x[i] = luminance(s->L) * std::max(0.f, glm::dot(n, s->wi)) / s->pdf;
+  }
+  return estimate(x);
+}
+
+TEST(UniformInfiniteLight, IrradianceOnHorizontalPatchIsPiL) {
+  auto light = make_infinite({rgb_param("L", 0.5, 1, 2)});
+  const int n = 200000;
+  Estimate e = irradiance_estimate(*light, Vec3(0, 0, 1), n, 1);
+  double expected = kPi * luminance(RGB(0.5f, 1.f, 2.f));
+  EXPECT_NEAR(e.mean, expected, 4.0 * e.std_error) << "stderr " << e.std_error;
+  EXPECT_LT(e.std_error, 0.01 * expected);  // the test has teeth
+  // Every sample agrees with pdf_li and Le.
+  Uniform rng(2);
+  for (int i = 0; i < 100; ++i) {
+    auto s = light->sample_li(LightSampleContext{Vec3(1, 2, 3), Vec3(0, 0, 1)}, rng.next2());
+    ASSERT_TRUE(s);
+    EXPECT_FLOAT_EQ(light->pdf_li(LightSampleContext{}, s->wi, nullptr), s->pdf);
+    EXPECT_EQ(light->Le(Ray{Vec3(0), s->wi}), s->L);
+  }
+  EXPECT_TRUE(light->is_infinite());
+  EXPECT_FALSE(light->is_delta());
+}
+
+TEST(UniformInfiniteLight, IlluminanceSetsIrradianceAndPowerCoversScene) {
+  auto light = make_infinite({float_param("illuminance", 3)});
+  RGB L = light->Le(Ray{});
+  EXPECT_NEAR(kPi * luminance(L), 3.f, 1e-5f);
+  Estimate e = irradiance_estimate(*light, glm::normalize(Vec3(1, -2, 0.5f)), 100000, 3);
+  EXPECT_NEAR(e.mean, 3.0, 4.0 * e.std_error);
+  Bounds3 b;
+  b.extend(Vec3(-1, -1, -1));
+  b.extend(Vec3(1, 1, 1));
+  light->preprocess(b);
+  float r = std::sqrt(3.f);
+  EXPECT_NEAR(light->power(), 4.f * kPi * kPi * r * r * L.g, 1e-3f);
+  auto s = light->sample_li(LightSampleContext{Vec3(0.5f, 0, 0), Vec3(0)}, Vec2(0.3f, 0.6f));
+  EXPECT_NEAR(glm::distance(s->p_light, Vec3(0.5f, 0, 0)), 2.f * r, 1e-4f);
+}
+
+// Which pixel of the map a direction falls in.
+int pixel_of(const ImageInfiniteLight& light, const Vec3& w) {
+  const RGBImage& img = light.map().image();
+  Vec2 uv = light.map().mapping() == SphereMapping::kEqualArea ? equal_area_sphere_to_square(w)
+                                                                 : latlong_sphere_to_square(w);
+  int x = std::clamp(int(uv.x * img.width), 0, img.width - 1);
+  int y = std::clamp(int(uv.y * img.height), 0, img.height - 1);
+  return y * img.width + x;
+}
+
+// Probability of each pixel, computed here from the image: luminance times solid angle.
+std::vector<double> pixel_probabilities(const ImageInfiniteLight& light) {
+  const RGBImage& img = light.map().image();
+  std::vector<double> p(img.pixels.size());
+  double sum = 0.0;
+  for (int y = 0; y < img.height; ++y) {
+    double omega = 1.0;
+    if (light.map().mapping() == SphereMapping::kLatLong)
+      omega = std::cos(kPi * y / img.height) - std::cos(kPi * (y + 1) / img.height);
+    for (int x = 0; x < img.width; ++x) {
+      p[size_t(y) * img.width + x] = luminance(img.at(x, y)) * omega;
+      sum += p[size_t(y) * img.width + x];
+    }
+  }
+  for (double& v : p) v /= sum;
+  return p;
+}
+
+void check_samples_follow_pixel_luminance(const ImageInfiniteLight& light) {
+  const int n = 300000;
+  std::vector<double> expected = pixel_probabilities(light), observed(expected.size(), 0.0);
+  for (double& e : expected) e *= n;
+  Uniform rng(17);
+  for (int i = 0; i < n; ++i) {
+    auto s = light.sample_li(LightSampleContext{}, rng.next2());
+    if (s) observed[pixel_of(light, s->wi)] += 1.0;
+  }
+  ChiSquareResult r = chi_square(observed, expected);
+  EXPECT_EQ(r.impossible, 0);
+  EXPECT_GT(r.p_value, 0.01) << "chi2 " << r.statistic << " dof " << r.dof;
+}
+
+// Directions binned in (z, phi), whose cells have equal solid angle; expected counts from
+// pdf_li integrated over each cell by a 24 x 24 midpoint rule.
+void check_samples_follow_pdf_li(const Light& light) {
+  const int nz = 16, nphi = 32, sub = 24, n = 300000;
+  std::vector<double> expected(nz * nphi, 0.0), observed(nz * nphi, 0.0);
+  double dz = 2.0 / (nz * sub), dphi = 2.0 * kPi / (nphi * sub);
+  for (int iz = 0; iz < nz * sub; ++iz)
+    for (int ip = 0; ip < nphi * sub; ++ip) {
+      double z = -1.0 + (iz + 0.5) * dz, phi = (ip + 0.5) * dphi;
+      double r = std::sqrt(1.0 - z * z);
+      Vec3 w(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z));
+      expected[(iz / sub) * nphi + ip / sub] += n * light.pdf_li(LightSampleContext{}, w, nullptr) * dz * dphi;
+    }
+  Uniform rng(23);
+  for (int i = 0; i < n; ++i) {
+    auto s = light.sample_li(LightSampleContext{}, rng.next2());
+    if (!s) continue;
+    int iz = std::clamp(int((s->wi.z + 1.f) * 0.5f * nz), 0, nz - 1);
+    float phi = std::atan2(s->wi.y, s->wi.x);
+    if (phi < 0.f) phi += 2.f * kPi;
+    int ip = std::clamp(int(phi / (2.f * kPi) * nphi), 0, nphi - 1);
+    observed[iz * nphi + ip] += 1.0;
+  }
+  ChiSquareResult r = chi_square(observed, expected);
+  EXPECT_EQ(r.impossible, 0);
+  EXPECT_GT(r.p_value, 0.01) << "chi2 " << r.statistic << " dof " << r.dof;
+}
+
+double pdf_integral(const Light& light) {
+  const int nz = 600, nphi = 1200;
+  double sum = 0.0;
+  for (int iz = 0; iz < nz; ++iz)
+    for (int ip = 0; ip < nphi; ++ip) {
+      double z = -1.0 + (iz + 0.5) * 2.0 / nz, phi = (ip + 0.5) * 2.0 * kPi / nphi;
+      double r = std::sqrt(1.0 - z * z);
+      Vec3 w(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z));
+      sum += light.pdf_li(LightSampleContext{}, w, nullptr);
+    }
+  return sum * (2.0 / nz) * (2.0 * kPi / nphi);
+}
+
+void check_samples_agree_with_pdf_li_and_le(const Light& light) {
+  Uniform rng(29);
+  for (int i = 0; i < 5000; ++i) {
+    auto s = light.sample_li(LightSampleContext{Vec3(0.1f, 0.2f, 0.3f), Vec3(0, 0, 1)}, rng.next2());
+    if (!s) continue;
+    ASSERT_GT(s->pdf, 0.f);
+    ASSERT_FLOAT_EQ(light.pdf_li(LightSampleContext{}, s->wi, nullptr), s->pdf);
+    RGB le = light.Le(Ray{Vec3(0), s->wi});
+    ASSERT_EQ(le, s->L);
+  }
+}
+
+class ImageInfiniteLightTest : public ::testing::TestWithParam<bool> {
+ protected:
+  std::unique_ptr<Light> make(std::vector<Param> extra = {}) {
+    bool latlong = GetParam();
+    extra.push_back(string_param("filename", latlong ? write_latlong_sky(32) : write_equal_area_sky(32)));
+    return make_infinite(std::move(extra));
+  }
+};
+
+TEST_P(ImageInfiniteLightTest, SamplesFollowPixelLuminanceChiSquare) {
+  auto light = make();
+  check_samples_follow_pixel_luminance(dynamic_cast<const ImageInfiniteLight&>(*light));
+}
+
+TEST_P(ImageInfiniteLightTest, SampledDirectionsFollowPdfLiChiSquare) { check_samples_follow_pdf_li(*make()); }
+
+TEST_P(ImageInfiniteLightTest, PdfIntegratesToOneOverSphere) { EXPECT_NEAR(pdf_integral(*make()), 1.0, 3e-3); }
+
+TEST_P(ImageInfiniteLightTest, SamplesAgreeWithPdfLiAndLe) { check_samples_agree_with_pdf_li_and_le(*make()); }
+
+TEST_P(ImageInfiniteLightTest, IlluminanceNormalisesUpwardIrradiance) {
+  auto light = make({float_param("illuminance", 2)});
+  Estimate e = irradiance_estimate(*light, Vec3(0, 0, 1), 200000, 31);
+  EXPECT_NEAR(e.mean, 2.0, 4.0 * e.std_error + 2e-3) << "stderr " << e.std_error;
+  // Independently of sample_li: uniform directions and Le.
+  Uniform rng(37);
+  const int n = 400000;
+  std::vector<double> x(n);
+  for (int i = 0; i < n; ++i) {
+    Vec3 w = sample_uniform_hemisphere(rng.next2());
+    x[i] = luminance(light->Le(Ray{Vec3(0), w})) * w.z / uniform_hemisphere_pdf();
+  }
+  Estimate u = estimate(x);
+  EXPECT_NEAR(u.mean, 2.0, 4.0 * u.std_error + 2e-3) << "stderr " << u.std_error;
+}
+
+INSTANTIATE_TEST_SUITE_P(Mappings, ImageInfiniteLightTest, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "LatLong" : "EqualArea"; });
+
+TEST(ImageInfiniteLight, PowerIsFourPiSquaredR2TimesMeanRadiance) {
+  std::string path = temp_path("grey_equal_area.exr");
+  write_image(path, 8, 8, [](int, int) { return RGB(0.5f); });
+  auto light = make_infinite({string_param("filename", path), float_param("scale", 3)});
+  Bounds3 b;
+  b.extend(Vec3(0));
+  b.extend(Vec3(2, 0, 0));
+  light->preprocess(b);
+  EXPECT_NEAR(light->power(), 4.f * kPi * kPi * 1.f * 1.5f, 1e-3f);
+}
+
+// A map bright only around its +z pole, turned by the CTM as pbrt scenes do for +y up.
+TEST(ImageInfiniteLight, TransformOrientsTheMap) {
+  std::string path = temp_path("pole_equal_area.exr");
+  const int res = 16;
+  write_image(path, res, res, [&](int x, int y) {
+    float z = equal_area_square_to_sphere(Vec2((x + 0.5f) / res, (y + 0.5f) / res)).z;
+    return RGB(z > 0.9f ? 10.f : 0.01f);
+  });
+  auto light = make_infinite({string_param("filename", path)}, rotate(-90.f, Vec3(1, 0, 0)));
+  EXPECT_FLOAT_EQ(light->Le(Ray{Vec3(0), Vec3(0, 1, 0)}).g, 10.f);
+  EXPECT_FLOAT_EQ(light->Le(Ray{Vec3(0), Vec3(0, 0, 1)}).g, 0.01f);
+  Uniform rng(41);
+  int near_y = 0;
+  for (int i = 0; i < 1000; ++i) {
+    auto s = light->sample_li(LightSampleContext{}, rng.next2());
+    if (s && s->wi.y > 0.85f) ++near_y;
+  }
+  // The bright cap holds 10 / (10 + 0.01 * 19) of the luminance (cap is 1/20 of the sphere).
+  EXPECT_GT(near_y, 950);
+}
+
+TEST(ImageInfiniteLight, EightBitImagesAreDecodedFromSrgb) {
+  std::string path = temp_path("grey.png");
+  write_image(path, 4, 4, [](int, int) { return RGB(128.f / 255.f); }, OIIO::TypeDesc::UINT8);
+  auto light = make_infinite({string_param("filename", path)});
+  // IEC 61966-2-1: ((c + 0.055) / 1.055)^2.4 for c = 128/255.
+  EXPECT_NEAR(light->Le(Ray{}).r, 0.2158605f, 1e-5f);
+}
+
+std::string error_of(std::vector<Param> ps) {
+  try {
+    make_infinite(std::move(ps));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ImageInfiniteLight, MissingFileIsAnErrorNamingFilenameAndPath) {
+  std::string path = temp_path("no_such_sky.exr");
+  std::string msg = error_of({string_param("filename", path)});
+  EXPECT_NE(msg.find("\"filename\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find(path), std::string::npos) << msg;
+  EXPECT_NE(msg.find("test.pbrt:3:7"), std::string::npos) << msg;
+}
+
+TEST(ImageInfiniteLight, RelativeFilenameIsResolvedAgainstSearchDir) {
+  std::string path = write_equal_area_sky(8);
+  ParameterList params = make_params({string_param("filename", fs::path(path).filename().string())});
+  auto light = create_infinite_light(LightContext{params, Transform(), fs::path(path).parent_path().string()});
+  EXPECT_TRUE(light->is_infinite());
+}
+
+TEST(ImageInfiniteLight, WrongAspectAndDoubleEmissionAreErrors) {
+  std::string path = temp_path("wide.exr");
+  write_image(path, 30, 20, [](int, int) { return RGB(1.f); });
+  std::string msg = error_of({string_param("filename", path)});
+  EXPECT_NE(msg.find("\"filename\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("30x20"), std::string::npos) << msg;
+  std::string both = error_of({string_param("filename", write_equal_area_sky(8)), rgb_param("L", 1, 1, 1)});
+  EXPECT_NE(both.find("not both"), std::string::npos) << both;
+}
+
+TEST(ImageInfiniteLight, PortalIsWarnedAboutAndIgnored) {
+  int before = warning_count();
+  set_warnings_enabled(false);
+  auto light = make_infinite({string_param("filename", write_equal_area_sky(8)),
+                              num_param("point3", "portal", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0})});
+  set_warnings_enabled(true);
+  EXPECT_EQ(warning_count(), before + 1);
+  EXPECT_TRUE(light->is_infinite());
+}
+
+}  // namespace
+}  // namespace eyetrace
