@@ -1,0 +1,67 @@
+#include "filters/gaussian_filter.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "filters/filter_params.h"
+
+namespace eyetrace {
+
+namespace {
+
+// Table cells per axis: fine enough for both the radius and sigma (four cells per sigma).
+IVec2 table_cells(Vec2 radius, float sigma) {
+  auto cells = [&](float r) {
+    return std::max(filter_sampling::filter_table_cells(r), std::min(1024, int(std::ceil(4.f * r / sigma))));
+  };
+  return IVec2(cells(radius.x), cells(radius.y));
+}
+
+// The integral of g over [-r, r]: erf(r / (sigma sqrt 2)) - 2 r G(r).
+double shifted_gaussian_integral(double r, double sigma) {
+  double g_r = std::exp(-r * r / (2.0 * sigma * sigma)) / std::sqrt(2.0 * std::numbers::pi * sigma * sigma);
+  return std::erf(r / (sigma * std::sqrt(2.0))) - 2.0 * r * g_r;
+}
+
+}  // namespace
+
+// The sampler tabulates evaluate(), so it is built from a filter whose members are set.
+GaussianFilter::GaussianFilter(Vec2 radius, float sigma)
+    : radius_(radius),
+      sigma_(sigma),
+      integral_(float(shifted_gaussian_integral(radius.x, sigma) * shifted_gaussian_integral(radius.y, sigma))),
+      sampler_(*this, table_cells(radius, sigma), integral_) {}
+
+double GaussianFilter::shifted_gaussian(double x, double r) const {
+  if (std::abs(x) >= r) return 0.0;
+  double s2 = 2.0 * double(sigma_) * double(sigma_);
+  double norm = 1.0 / std::sqrt(std::numbers::pi * s2);
+  double a = (r * r - x * x) / s2;
+  // Close to the radius G(x) - G(r) cancels: G(r) (e^a - 1) keeps the digits.
+  if (a < 1.0) return norm * std::exp(-r * r / s2) * std::expm1(a);
+  return norm * (std::exp(-x * x / s2) - std::exp(-r * r / s2));
+}
+
+float GaussianFilter::evaluate(Vec2 p) const {
+  return float(shifted_gaussian(p.x, radius_.x) * shifted_gaussian(p.y, radius_.y));
+}
+
+std::string GaussianFilter::to_string() const {
+  return fmt::format("GaussianFilter[xradius={} yradius={} sigma={}]", radius_.x, radius_.y, sigma_);
+}
+
+float GaussianFilter::min_sigma(Vec2 radius) { return std::max(radius.x, radius.y) / 256.f; }
+
+std::unique_ptr<Filter> create_gaussian_filter(const ParameterList& params) {
+  Vec2 radius = read_filter_radius(params, 1.5f);
+  float sigma = params.get_float("sigma", 0.5f);
+  if (!(sigma >= GaussianFilter::min_sigma(radius)))
+    params.fail("sigma", fmt::format("value {} must be at least radius / 256 = {} (for a narrower filter use a "
+                                     "smaller radius or the box filter)",
+                                     sigma, GaussianFilter::min_sigma(radius)));
+  return std::make_unique<GaussianFilter>(radius, sigma);
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,38 @@
+// The Gaussian filter, shifted down so that it reaches zero at the radius (pbrt-v4's
+// GaussianFilter): f(x, y) = g(x) g(y), g(x) = max(0, G(x) - G(r)), G the normal density with
+// standard deviation sigma. Importance-sampled through a tabulated distribution.
+#pragma once
+#include <memory>
+
+#include "core/filter.h"
+#include "core/params.h"
+#include "filters/filter_sampler.h"
+
+namespace eyetrace {
+
+class GaussianFilter : public Filter {
+ public:
+  GaussianFilter(Vec2 radius, float sigma);
+  Vec2 radius() const override { return radius_; }
+  float evaluate(Vec2 p) const override;
+  FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
+  std::string to_string() const override;
+  float integral() const { return integral_; }
+
+  // The smallest sigma whose shape the sampling table resolves, for a given radius.
+  static float min_sigma(Vec2 radius);
+
+ private:
+  // g(x) for |x| < r, 0 beyond.
+  double shifted_gaussian(double x, double r) const;
+
+  Vec2 radius_;
+  float sigma_;
+  float integral_;
+  filter_sampling::FilterSampler sampler_;
+};
+
+// pbrt-v4 "gaussian": float xradius, yradius (1.5), sigma (0.5).
+std::unique_ptr<Filter> create_gaussian_filter(const ParameterList& params);
+
+}  // namespace eyetrace

@@ -1,0 +1,87 @@
+#include "samplers/zsobol_sampler.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+
+#include "samplers/sampler_params.h"
+
+namespace eyetrace {
+
+namespace {
+
+// All 24 permutations of four base-4 digit values.
+constexpr uint8_t kPermutations[24][4] = {
+    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 2, 1}, {0, 3, 1, 2}, {1, 0, 2, 3}, {1, 0, 3, 2},
+    {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 2, 0}, {1, 3, 0, 2}, {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 0, 1, 3}, {2, 0, 3, 1},
+    {2, 3, 0, 1}, {2, 3, 1, 0}, {3, 1, 2, 0}, {3, 1, 0, 2}, {3, 2, 1, 0}, {3, 2, 0, 1}, {3, 0, 2, 1}, {3, 0, 1, 2}};
+
+}  // namespace
+
+ZSobolSampler::ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed)
+    : randomization_(randomization), seed_(seed) {
+  log2_spp_ = std::countr_zero(std::bit_ceil(uint32_t(std::max(samples_per_pixel, 1))));
+  int res = int(std::bit_ceil(uint32_t(std::max({resolution.x, resolution.y, 1}))));
+  n_base4_digits_ = std::countr_zero(uint32_t(res)) + (log2_spp_ + 1) / 2;
+}
+
+void ZSobolSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimension) {
+  dimension_ = dimension;
+  morton_index_ = (encode_morton2(uint32_t(pixel.x), uint32_t(pixel.y)) << log2_spp_) | uint64_t(sample_index);
+}
+
+// Each base-4 digit of the Morton index is permuted by a permutation chosen from a hash of
+// the digits above it and of the dimension: a bijection on indices (so sample counts per
+// pixel are kept) that randomises the order in which sub-quadrants are visited. With an odd
+// log2(spp), the last digit is a single bit, flipped or not by the same kind of hash.
+uint64_t ZSobolSampler::sample_index() const {
+  uint64_t index = 0;
+  bool pow2_samples = log2_spp_ & 1;
+  int last_digit = pow2_samples ? 1 : 0;
+  uint64_t dim_salt = 0x55555555ull * uint64_t(uint32_t(dimension_));
+  for (int i = n_base4_digits_ - 1; i >= last_digit; --i) {
+    int shift = 2 * i - (pow2_samples ? 1 : 0);
+    int digit = int((morton_index_ >> shift) & 3);
+    uint64_t higher = morton_index_ >> (shift + 2);
+    int p = int((mix_bits(higher ^ dim_salt) >> 24) % 24);
+    index |= uint64_t(kPermutations[p][digit]) << shift;
+  }
+  if (pow2_samples) {
+    uint64_t bit = morton_index_ & 1;
+    index |= bit ^ (mix_bits((morton_index_ >> 1) ^ dim_salt) & 1);
+  }
+  return index;
+}
+
+float ZSobolSampler::get_1d() {
+  uint64_t index = sample_index();
+  ++dimension_;
+  uint32_t h = uint32_t(mix_bits(uint64_t(uint32_t(dimension_)) ^ seed_));
+  return randomized_sobol_sample(index, 0, randomization_, h);
+}
+
+Vec2 ZSobolSampler::get_2d() {
+  uint64_t index = sample_index();
+  dimension_ += 2;
+  uint64_t bits = mix_bits(uint64_t(uint32_t(dimension_)) ^ seed_);
+  return Vec2(randomized_sobol_sample(index, 0, randomization_, uint32_t(bits)),
+              randomized_sobol_sample(index, 1, randomization_, uint32_t(bits >> 32)));
+}
+
+std::string ZSobolSampler::to_string() const {
+  return fmt::format("ZSobolSampler[pixelsamples={} seed={} randomization={}]", samples_per_pixel(), int64_t(seed_),
+                     randomization_name(randomization_));
+}
+
+std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx) {
+  int spp = read_pixel_samples(ctx, 16);
+  uint64_t seed = read_seed(ctx);
+  Randomization r = read_randomization(ctx.params, Randomization::FastOwen, true);
+  if (!std::has_single_bit(uint32_t(spp)))
+    warn(ctx.params.loc(), fmt::format("zsobol sampler: {} samples per pixel rounded up to the power of two {}", spp,
+                                       std::bit_ceil(uint32_t(spp))));
+  return std::make_unique<ZSobolSampler>(spp, ctx.resolution, r, seed);
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,44 @@
+// pbrt-v4's default sampler (Ahmed & Wonka 2020, "Screen-space blue-noise diffusion of Monte
+// Carlo sampling error via hierarchical ordering of pixels"): pixels are ordered along a Morton
+// (Z) curve and each pixel's samples take consecutive Sobol' indices, with the base-4 digits of
+// the index shuffled by hashed permutations so that neighbouring pixels get well-spread, not
+// repeated, points. Only the first two Sobol' dimensions are used, re-scrambled per dimension;
+// since a pixel's 2^k samples are an aligned block of indices, each 1D and 2D projection of them
+// is a (0,k,2)-net: every sample has its own elementary interval.
+#pragma once
+#include <memory>
+
+#include "core/registry.h"
+#include "core/sampler.h"
+#include "samplers/lowdiscrepancy.h"
+
+namespace eyetrace {
+
+class ZSobolSampler : public Sampler {
+ public:
+  // samples_per_pixel must be a power of two (the factory rounds up).
+  ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed);
+  int samples_per_pixel() const override { return 1 << log2_spp_; }
+  void start_pixel_sample(IVec2 pixel, int sample_index, int dimension = 0) override;
+  float get_1d() override;
+  Vec2 get_2d() override;
+  Vec2 get_pixel_2d() override { return get_2d(); }
+  std::unique_ptr<Sampler> clone() const override { return std::make_unique<ZSobolSampler>(*this); }
+  std::string to_string() const override;
+
+  // The Sobol' index of the current (pixel, sample) for the current dimension.
+  uint64_t sample_index() const;
+
+ private:
+  Randomization randomization_;
+  uint64_t seed_;
+  int log2_spp_ = 0, n_base4_digits_ = 0;
+  uint64_t morton_index_ = 0;
+  int dimension_ = 0;
+};
+
+// pbrt-v4 "zsobol": integer pixelsamples (16; rounded up to a power of two), integer seed,
+// string randomization ("fastowen"; also "none", "permutedigits", "owen").
+std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx);
+
+}  // namespace eyetrace
