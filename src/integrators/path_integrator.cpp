@@ -97,9 +97,11 @@ static int read_max_depth(const IntegratorContext& ctx, int def) {
 
 static void read_common(const IntegratorContext& ctx) {
   const ParameterList& p = ctx.params;
+  bool given = p.has("lightsampler");
   std::string ls = p.get_string("lightsampler", "bvh");
   if (ls != "power" && ls != "uniform" && ls != "bvh") p.fail("lightsampler", "must be \"bvh\", \"power\" or \"uniform\"");
-  if (ls != "power") warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
+  // pbrt-v4's default "bvh" is unbiased like ours; only an explicit request is worth a note.
+  if (given && ls != "power") warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
   if (p.get_bool("regularize", false)) warn(p.loc(), "\"regularize\" is not supported; ignored");
 }
 

@@ -49,6 +49,26 @@ const uint32_t* sobol_matrices() {
   return matrices.data();
 }
 
+const uint32_t* sobol_byte_tables() {
+  static const std::vector<uint32_t> tables = [] {
+    // 7 bytes cover the 52 matrix columns; column 52+ would be zero anyway.
+    std::vector<uint32_t> t(2 * 7 * 256, 0u);
+    const uint32_t* m = sobol_matrices();
+    for (int dim = 0; dim < 2; ++dim)
+      for (int byte = 0; byte < 7; ++byte)
+        for (int value = 0; value < 256; ++value) {
+          uint32_t v = 0;
+          for (int bit = 0; bit < 8; ++bit) {
+            int col = byte * 8 + bit;
+            if ((value >> bit & 1) && col < kSobolMatrixSize) v ^= m[size_t(dim) * kSobolMatrixSize + col];
+          }
+          t[(size_t(dim) * 7 + byte) * 256 + value] = v;
+        }
+    return t;
+  }();
+  return tables.data();
+}
+
 float randomized_sobol_sample(uint64_t a, int dim, Randomization r, uint32_t seed) {
   switch (r) {
     case Randomization::None:

@@ -1,0 +1,92 @@
+// Camera ray generation speed (one core): pinhole and thin lens for scale, the schematic-eye
+// cameras (target: Navarro >= 5 million rays/s), and the eye camera's construction time
+// (target < 50 ms). items_per_second = camera samples per second, lost rays included;
+// "useful" = fraction of samples that gave a ray.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "cameras/lens_system_camera.h"
+#include "cameras/perspective_camera.h"
+#include "core/parser.h"
+
+namespace eyetrace {
+namespace {
+
+const IVec2 kResolution(512, 512);
+
+std::vector<CameraSample> random_samples() {
+  std::vector<CameraSample> samples(1 << 16);
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (CameraSample& cs : samples) {
+    cs.p_film = Vec2(kResolution.x * u(rng), kResolution.y * u(rng));
+    cs.p_lens = Vec2(u(rng), u(rng));
+  }
+  return samples;
+}
+
+std::unique_ptr<Camera> eye(const std::string& name, const std::string& params) {
+  SceneEntity e = parse_directive_text("Camera \"" + name + "\" " + params, "Camera", "bench");
+  CameraContext ctx{e.params, Transform(), kResolution, ""};
+  return name == "eye" ? create_eye_camera(ctx) : create_named_eye_camera(name)(ctx);
+}
+
+void run(benchmark::State& state, const Camera& cam) {
+  const std::vector<CameraSample> samples = random_samples();
+  size_t i = 0, rays = 0, n = 0;
+  for (auto _ : state) {
+    auto r = cam.generate_ray(samples[i]);
+    rays += r.has_value();
+    benchmark::DoNotOptimize(r);
+    i = (i + 1) & (samples.size() - 1);
+    ++n;
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+  state.counters["useful"] = n ? double(rays) / double(n) : 0.0;
+}
+
+void BM_Pinhole(benchmark::State& state) {
+  PerspectiveCamera::Settings s;
+  s.fov_degrees = 60.f;
+  run(state, PerspectiveCamera(Transform(), kResolution, s));
+}
+BENCHMARK(BM_Pinhole);
+
+void BM_ThinLens(benchmark::State& state) {
+  PerspectiveCamera::Settings s;
+  s.fov_degrees = 60.f;
+  s.lens_radius = 0.0025f;
+  s.focal_distance = 2.f;
+  run(state, PerspectiveCamera(Transform(), kResolution, s));
+}
+BENCHMARK(BM_ThinLens);
+
+// The paper's configuration: 5 mm pupil, relaxed eye, 60 degree field.
+void BM_Navarro(benchmark::State& state) {
+  run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
+}
+BENCHMARK(BM_Navarro);
+
+void BM_NavarroAccommodated(benchmark::State& state) {
+  run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60 \"float accommodation\" 4"));
+}
+BENCHMARK(BM_NavarroAccommodated);
+
+void BM_Gullstrand(benchmark::State& state) {  // six surfaces
+  run(state, *eye("gullstrand", "\"float pupildiameter\" 5 \"float fov\" 60"));
+}
+BENCHMARK(BM_Gullstrand);
+
+void BM_LeGrand(benchmark::State& state) {
+  run(state, *eye("legrand", "\"float pupildiameter\" 5 \"float fov\" 60"));
+}
+BENCHMARK(BM_LeGrand);
+
+void BM_NavarroConstruction(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
+}
+BENCHMARK(BM_NavarroConstruction)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace eyetrace

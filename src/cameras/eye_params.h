@@ -1,0 +1,32 @@
+// Camera directive parameters of the lens-system cameras -> a prescription and the camera's
+// view settings. Every parameter is read through the ParameterList (so misspellings are
+// reported) and every optics error is rethrown as a SceneError naming the parameter.
+#pragma once
+
+#include <string>
+
+#include "cameras/lens_system_camera.h"
+#include "core/params.h"
+#include "optics/eye_models.h"
+#include "optics/prescription.h"
+
+namespace eyetrace {
+
+// Defaults (documented in docs/eye-camera.md).
+inline constexpr double kDefaultPupilDiameterMm = 4.0;
+inline constexpr double kDefaultEyeFovDeg = 60.0;
+inline constexpr double kDefaultApertureDiameterMm = 1.0;  // pbrt-v4 "realistic"
+inline constexpr double kDefaultFocusDistance = 10.0;      // pbrt-v4 "realistic", scene units (m)
+inline constexpr double kDefaultFilmDiagonalMm = 35.0;     // pbrt-v4 Film "diagonal"
+
+// The eye of camera `camera_name` ("eye" reads "string model"; "navarro" etc. are the model).
+optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params);
+// fov, mapping, sceneunit of an eye camera.
+LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, const ParameterList& params);
+
+// pbrt-v4 "realistic": lensfile (relative to search_dir), aperturediameter, focusdistance (scene
+// units = metres, measured from the film as pbrt does).
+optics::Prescription realistic_prescription_from_params(const ParameterList& params, const std::string& search_dir);
+LensSystemCamera::Settings realistic_view_settings(const ParameterList& params, IVec2 resolution);
+
+}  // namespace eyetrace

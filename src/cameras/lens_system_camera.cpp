@@ -1,0 +1,241 @@
+#include "cameras/lens_system_camera.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cameras/chief_ray.h"
+#include "cameras/eye_params.h"
+#include "cameras/perspective_camera.h"
+#include "optics/optics_error.h"
+
+namespace eyetrace {
+
+namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
+// Closest a retina point may come to the sampling plane (the directions degenerate there).
+constexpr double kMinPlaneGapMm = 0.5;
+
+// Largest clear semi-diameter of the system: the width of the meridian scans.
+double largest_semi_diameter(const optics::Prescription& p) {
+  double r = 0.0;
+  for (const optics::Surface& s : p.surfaces)
+    if (s.limited()) r = std::fmax(r, s.semi_diameter_mm);
+  return r > 0.0 ? r : 10.0;
+}
+
+// Falls back to the real apertures if the opened ones do not validate.
+optics::Prescription aiming_prescription(const optics::Prescription& p) {
+  try {
+    optics::Prescription opened = with_extended_apertures(p);
+    optics::validate(opened);
+    return opened;
+  } catch (const optics::OpticsError&) {
+    return p;
+  }
+}
+
+RetinaSurface retina_of(const optics::Prescription& p, const optics::CompiledSystem& system) {
+  const optics::Surface& image = p.surfaces.back();
+  if (!image.profile.is_flat() && image.profile.conic != 0.0)
+    throw optics::OpticsError(fmt::format("the image surface '{}' is a conic (Q = {}); the camera supports "
+                                          "a sphere or a plane", image.name, image.profile.conic));
+  return {system.vertex_z(system.image_index()), image.profile.is_flat() ? 0.0 : image.profile.curvature};
+}
+
+// Largest retina arc whose point stays kMinPlaneGapMm behind the sampling plane.
+double arc_limit(const RetinaSurface& retina, double z_plane) {
+  double limit = std::fmin(retina.max_arc_mm(), 200.0);
+  if (retina.curvature < 0.0) {
+    for (int i = 1; i <= 4096; ++i) {
+      const double a = limit * i / 4096;
+      if (retina.point(a).y - z_plane < kMinPlaneGapMm) return limit * (i - 1) / 4096;
+    }
+  }
+  return limit;
+}
+
+}  // namespace
+
+LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera,
+                                   IVec2 resolution, const Settings& settings)
+    : prescription_(prescription),
+      system_(prescription),
+      aiming_system_(aiming_prescription(prescription)),
+      world_from_camera_(world_from_camera),
+      resolution_(resolution),
+      settings_(settings) {
+  const Vec4 w = default_screen_window(resolution);
+  screen_window_ = glm::dvec4(w);
+  screen_scale_ = {(screen_window_[1] - screen_window_[0]) / resolution.x,
+                   (screen_window_[3] - screen_window_[2]) / resolution.y};
+  const double corner = std::sqrt(double(w[1]) * w[1] + double(w[3]) * w[3]);  // screen radius of a corner
+  retina_ = retina_of(prescription_, system_);
+  z_plane_ = system_.vertex_z(system_.image_index() - 1);
+  if (retina_.vertex_z_mm - z_plane_ < kMinPlaneGapMm)
+    throw optics::OpticsError(fmt::format("the image surface is only {:.4g} mm behind the last surface; the "
+                                          "camera needs at least {} mm", retina_.vertex_z_mm - z_plane_,
+                                          kMinPlaneGapMm));
+  const double max_arc = arc_limit(retina_, z_plane_);
+
+  if (settings_.film_half_mm > 0.0) {
+    mapping_ = RetinaMapping(settings_.film_half_mm, retina_);
+  } else {
+    const double half_fov = 0.5 * settings_.fov_deg;
+    const double needed = settings_.mapping == FieldMapping::Angle ? corner * half_fov : half_fov;
+    angles_ = FieldAngleTable(aiming_system_, retina_, z_plane_, needed, max_arc);
+    try {
+      mapping_ = RetinaMapping(settings_.mapping, half_fov, angles_, retina_);
+    } catch (const optics::OpticsError& e) {
+      throw FieldError(e.what());
+    }
+  }
+  // The pupil tables reach the farthest pixel (an image corner), or as far as the mapping goes.
+  double corner_arc = mapping_.arc_for_screen_radius(corner, angles_);
+  if (!(corner_arc >= 0.0)) corner_arc = mapping_.kind() == FieldMapping::Angle ? angles_.max_arc_mm() : max_arc;
+  PupilSampler::Options po = settings_.pupil;
+  po.scan_half_width_mm = 1.5 * largest_semi_diameter(prescription_);
+  pupil_ = PupilSampler(system_, retina_, z_plane_, std::fmin(corner_arc, max_arc), angles_, po);
+  retina_points_ = RetinaPointTable(retina_, pupil_.max_arc_mm());
+  compute_normalisation();
+}
+
+// The mean weight at the image centre is C times the integral of cos(theta_retina)
+// cos(theta_plane) / d^2 over the passing disc of radius R on the plane at distance L, which is
+// pi R^2 / (R^2 + L^2): the solid angle integral of cos(theta) over the passing cone.
+void LensSystemCamera::compute_normalisation() {
+  const glm::dvec3 vertex(0.0, 0.0, retina_.vertex_z_mm);
+  if (!trace_towards_plane(system_, vertex, 0.0, 0.0, z_plane_).ok())
+    throw optics::OpticsError("no ray from the centre of the retina passes the system along the axis");
+  double lo = 0.0, hi = 1.0;
+  while (trace_towards_plane(system_, vertex, hi, 0.0, z_plane_).ok() && hi < 1e6) lo = hi, hi *= 2.0;
+  for (int i = 0; i < 100 && hi - lo > 1e-14 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (trace_towards_plane(system_, vertex, mid, 0.0, z_plane_).ok() ? lo : hi) = mid;
+  }
+  const double radius = 0.5 * (lo + hi), length = retina_.vertex_z_mm - z_plane_;
+  normalisation_ = (radius * radius + length * length) / (kPiD * radius * radius);
+  // Bound: cos terms <= 1 and cos(theta_plane) / d^2 <= 1 / L^2 with L the retina point's
+  // distance from the plane, smallest at the far end of an interval.
+  const int n = 1024;
+  for (int i = 0; i < n; ++i) {
+    const double a0 = pupil_.max_arc_mm() * i / n, a1 = pupil_.max_arc_mm() * (i + 1) / n;
+    const double area = std::fmax(pupil_.area(a0), pupil_.area(std::nextafter(a1, 0.0)));
+    const double gap = std::fmin(retina_.point(a0).y, retina_.point(a1).y) - z_plane_;
+    max_weight_ = std::fmax(max_weight_, normalisation_ * area / (gap * gap));
+  }
+}
+
+glm::dvec2 LensSystemCamera::screen(Vec2 p) const {
+  return {screen_window_[0] + double(p.x) * screen_scale_.x, screen_window_[3] - double(p.y) * screen_scale_.y};
+}
+
+std::optional<LensSystemCamera::RetinaPoint> LensSystemCamera::retina_point(Vec2 p_film) const {
+  const glm::dvec2 s = screen(p_film);
+  const double radius = std::sqrt(s.x * s.x + s.y * s.y);
+  const double a = mapping_.arc_for_screen_radius(radius, angles_);
+  if (!(a >= 0.0 && a <= pupil_.max_arc_mm())) return std::nullopt;
+  // Upright image: screen direction (sx, sy) -> retina direction (sx, -sy) (see the header).
+  const glm::dvec2 m = radius > 0.0 ? glm::dvec2(s.x, -s.y) / radius : glm::dvec2(1.0, 0.0);
+  const glm::dvec2 p = retina_.point(a), n = retina_.normal(a);
+  return RetinaPoint{{p.x * m.x, p.x * m.y, p.y}, {n.x * m.x, n.x * m.y, n.y}, a, m};
+}
+
+std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs) const {
+  const double sx = screen_window_[0] + double(cs.p_film.x) * screen_scale_.x;
+  const double sy = screen_window_[3] - double(cs.p_film.y) * screen_scale_.y;
+  const double radius = std::sqrt(sx * sx + sy * sy);
+  const double a = mapping_.arc_for_screen_radius(radius, angles_);
+  glm::dvec2 q;
+  double area;
+  if (!pupil_.sample(a, cs.p_lens.x, cs.p_lens.y, &q, &area)) return std::nullopt;
+  // Upright image: screen direction (sx, sy) -> retina direction (sx, -sy) (see the header).
+  const double inv_radius = radius > 0.0 ? 1.0 / radius : 0.0;
+  const glm::dvec2 m = radius > 0.0 ? glm::dvec2(sx * inv_radius, -sy * inv_radius) : glm::dvec2(1.0, 0.0);
+  glm::dvec2 p, n;
+  retina_points_.at(a, &p, &n);
+
+  // Meridian frame: retina point (p.x, 0, p.y), plane point (q.x, q.y, z_plane).
+  const glm::dvec3 d_local(q.x - p.x, q.y, z_plane_ - p.y);
+  const optics::Ray ray{{p.x * m.x, p.x * m.y, p.y},
+                        {d_local.x * m.x - d_local.y * m.y, d_local.x * m.y + d_local.y * m.x, d_local.z}};
+  const optics::TraceResult r = system_.trace_range(ray, system_.image_index() - 1, 0);
+  if (!r.ok()) return std::nullopt;
+
+  // weight = C cos(theta_retina) cos(theta_plane) / d^2 / density, density = 1 / area.
+  const double d2 = glm::dot(d_local, d_local);
+  const double inv_d = 1.0 / std::sqrt(d2);
+  const double cos_retina = (d_local.x * n.x + d_local.z * n.y) * inv_d;
+  if (!(cos_retina > 0.0)) return std::nullopt;  // would have to leave through the retina
+  const double cos_plane = -d_local.z * inv_d;
+  const double weight = normalisation_ * area * cos_retina * cos_plane * (inv_d * inv_d);
+
+  const double k = settings_.scene_units_per_mm;
+  const Vec3 o(float(-r.ray.origin.x * k), float(r.ray.origin.y * k), float(-r.ray.origin.z * k));
+  const Vec3 d(float(-r.ray.direction.x), float(r.ray.direction.y), float(-r.ray.direction.z));
+  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, cs.time},
+                   static_cast<float>(weight)};
+}
+
+Ray LensSystemCamera::camera_ray_from_exit(const optics::Ray& exit) const {
+  // The origin lies on the cornea, a few mm from the camera origin: converted once to float
+  // (relative error 2^-24 of a value ~1e-3 scene units). Nothing in the scene sits on the cornea,
+  // so no extra offset is needed for Embree; the direction is renormalised in float.
+  const double k = settings_.scene_units_per_mm;
+  const Vec3 o(float(-exit.origin.x * k), float(exit.origin.y * k), float(-exit.origin.z * k));
+  const Vec3 d = glm::normalize(Vec3(float(-exit.direction.x), float(exit.direction.y), float(-exit.direction.z)));
+  return Ray{o, d, kInfinity, 0.f};
+}
+
+std::string LensSystemCamera::to_string() const {
+  const std::string field =
+      settings_.film_half_mm > 0.0
+          ? fmt::format("film {:.4g} mm (shorter half-axis)", settings_.film_half_mm)
+          : fmt::format("fov {} deg, mapping {}", settings_.fov_deg, eyetrace::to_string(settings_.mapping));
+  return fmt::format("{} camera: {}{}, stop {:.4g} mm, {}, retina {}", settings_.name, prescription_.name,
+                     prescription_.variant.empty() ? "" : " [" + prescription_.variant + "]",
+                     prescription_.stop_diameter_mm(), field,
+                     retina_.curvature == 0.0 ? std::string("flat")
+                                              : fmt::format("radius {:.4g} mm", 1.0 / retina_.curvature));
+}
+
+}  // namespace eyetrace
+
+namespace eyetrace {
+
+namespace {
+
+// Builds the camera, reporting what the system cannot serve against the parameter behind it.
+std::unique_ptr<Camera> make_camera(const CameraContext& ctx, const optics::Prescription& p,
+                                    const LensSystemCamera::Settings& s, const char* system_param) {
+  try {
+    return std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+  } catch (const FieldError& e) {
+    ctx.params.fail("fov", e.what());
+  } catch (const optics::OpticsError& e) {
+    ctx.params.fail(system_param, e.what());
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx) {
+  return create_named_eye_camera("eye")(ctx);
+}
+
+CameraFactory create_named_eye_camera(std::string model) {
+  return [model](const CameraContext& ctx) -> std::unique_ptr<Camera> {
+    optics::Prescription p = eye_prescription_from_params(model, ctx.params);
+    LensSystemCamera::Settings s = eye_view_settings(model, ctx.params);
+    return make_camera(ctx, p, s, model == "eye" ? "model" : "pupildiameter");
+  };
+}
+
+std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx) {
+  optics::Prescription p = realistic_prescription_from_params(ctx.params, ctx.search_dir);
+  LensSystemCamera::Settings s = realistic_view_settings(ctx.params, ctx.resolution);
+  return make_camera(ctx, p, s, "lensfile");
+}
+
+}  // namespace eyetrace

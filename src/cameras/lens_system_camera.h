@@ -1,0 +1,109 @@
+// The lens-system camera: rays leave a point of the retina (or film), pass the crystalline lens,
+// iris and cornea of a schematic eye (or the elements of a pbrt lens file) by an exact
+// double-precision sequential trace, and enter the scene. The eye presets ("eye", "navarro",
+// "gullstrand", "legrand", "kooijman") and pbrt-v4's "realistic" are this one class with
+// different prescriptions; docs/eye-camera.md describes every parameter.
+//
+// Frames: the system frame of the optics library (mm, z = 0 at the corneal vertex, +z towards
+// the retina) and pbrt camera space (+x right, +y up, +z forward, scene units). The eye looks
+// along camera +z with its corneal vertex at the camera origin: camera = (-x, y, -z) * scale,
+// a rotation about y, so nothing is mirrored. The eye's image is inverted; pixel (sx, sy) of the
+// screen maps to the retina point in direction (sx, -sy), which rotates it back upright.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "cameras/pupil_sampler.h"
+#include "cameras/retina_mapping.h"
+#include "cameras/retina_surface.h"
+#include "core/camera.h"
+#include "core/registry.h"
+#include "optics/prescription.h"
+#include "optics/sequential_trace.h"
+
+namespace eyetrace {
+
+class LensSystemCamera : public Camera {
+ public:
+  struct Settings {
+    FieldMapping mapping = FieldMapping::Angle;
+    double fov_deg = 60.0;         // full field across the shorter image axis
+    double film_half_mm = 0.0;     // > 0: a physical flat film whose shorter half-axis is this
+    double scene_units_per_mm = 1e-3;
+    std::string name = "eye";      // for to_string()
+    PupilSampler::Options pupil;
+  };
+  // Throws optics::OpticsError when the system cannot be used (invalid, or no ray passes at the
+  // image centre) and FieldError (below) when the field of view cannot be mapped.
+  LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera,
+                   IVec2 resolution, const Settings& settings);
+
+  std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
+  std::string to_string() const override;
+
+  // --- For tests and tools ---------------------------------------------------------------
+  struct RetinaPoint {
+    glm::dvec3 position;  // system frame, mm
+    glm::dvec3 normal;    // unit, towards the lens
+    double arc_mm = 0.0;  // arc length from the retina vertex
+    glm::dvec2 meridian;  // unit lateral direction of the point in the system frame
+  };
+  // Where a raster position lands on the retina; nullopt outside the traced field.
+  std::optional<RetinaPoint> retina_point(Vec2 p_film) const;
+  // Exit ray (system frame) -> camera-space ray (scene units), as generate_ray converts it.
+  Ray camera_ray_from_exit(const optics::Ray& exit) const;
+  const optics::Prescription& prescription() const { return prescription_; }
+  const optics::CompiledSystem& system() const { return system_; }
+  const RetinaSurface& retina() const { return retina_; }
+  const PupilSampler& pupil() const { return pupil_; }
+  const FieldAngleTable& field_angles() const { return angles_; }
+  const Settings& settings() const { return settings_; }
+  // Upper bound of every weight generate_ray returns, and the constant that makes the mean
+  // weight at the image centre 1 (1 / integral of cos dw over the passing directions there).
+  double max_weight() const { return max_weight_; }
+  double weight_normalisation() const { return normalisation_; }
+
+ private:
+  glm::dvec2 screen(Vec2 p_film) const;
+  void compute_normalisation();
+
+  optics::Prescription prescription_;
+  optics::CompiledSystem system_;
+  optics::CompiledSystem aiming_system_;  // apertures opened for chief-ray aiming (chief_ray.h)
+  Transform world_from_camera_;
+  IVec2 resolution_;
+  Settings settings_;
+  glm::dvec4 screen_window_;  // pbrt's: x0 x1 y0 y1, shorter axis [-1, 1]
+  glm::dvec2 screen_scale_;   // screen units per raster pixel
+  RetinaSurface retina_;
+  RetinaPointTable retina_points_;
+  double z_plane_ = 0.0;
+  FieldAngleTable angles_;
+  RetinaMapping mapping_;
+  PupilSampler pupil_;
+  double normalisation_ = 1.0;
+  double max_weight_ = 0.0;
+};
+
+// A field-of-view/mapping combination the system cannot serve (message names why).
+class FieldError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx);           // Camera "eye" "string model" ...
+CameraFactory create_named_eye_camera(std::string model);                       // Camera "navarro" ...
+std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx);     // pbrt-v4 Camera "realistic"
+// For `eyetrace optics` and tests: the prescription a Camera directive describes (eye cameras
+// and "realistic"; lens files relative to search_dir). Errors are SceneErrors naming the
+// parameter.
+optics::Prescription prescription_from_camera_params(const std::string& camera_name, const ParameterList& params,
+                                                     const std::string& search_dir);
+
+}  // namespace eyetrace

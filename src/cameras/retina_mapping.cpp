@@ -1,0 +1,118 @@
+#include "cameras/retina_mapping.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cameras/chief_ray.h"
+#include "optics/optics_error.h"
+
+namespace eyetrace {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+// Node spacing along the retina. Linear interpolation between nodes then errs by
+// theta'' da^2 / 8, about 1e-4 degrees for the eyes.
+constexpr double kNodeStepMm = 0.05;
+// Uniform angle samples of the inverse table per degree.
+constexpr double kInverseSamplesPerDegree = 32.0;
+// Closest approach of a retina point to the sampling plane that still gives well-conditioned
+// directions.
+constexpr double kMinPlaneGapMm = 0.5;
+
+// Index of the node interval containing x in a sorted vector (clamped).
+size_t interval_of(const std::vector<double>& xs, double x) {
+  const auto it = std::upper_bound(xs.begin(), xs.end(), x);
+  const size_t i = it == xs.begin() ? 0 : static_cast<size_t>(it - xs.begin()) - 1;
+  return std::min(i, xs.size() - 2);
+}
+
+}  // namespace
+
+const char* to_string(FieldMapping m) {
+  switch (m) {
+  case FieldMapping::Angle: return "angle";
+  case FieldMapping::Flat: return "flat";
+  case FieldMapping::Retina: return "retina";
+  }
+  return "?";
+}
+
+bool parse_field_mapping(const std::string& text, FieldMapping* out) {
+  for (FieldMapping m : {FieldMapping::Angle, FieldMapping::Flat, FieldMapping::Retina})
+    if (text == to_string(m)) {
+      *out = m;
+      return true;
+    }
+  return false;
+}
+
+FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const RetinaSurface& retina,
+                                 double z_plane, double angle_limit_deg, double max_arc_mm) {
+  arcs_ = {0.0};
+  angles_ = {0.0};
+  chief_q_ = {0.0};
+  const double arc_limit = std::fmin(max_arc_mm, retina.max_arc_mm());
+  for (double a = kNodeStepMm; a <= arc_limit && angles_.back() < angle_limit_deg; a += kNodeStepMm) {
+    const glm::dvec2 p = retina.point(a);
+    if (p.y - z_plane < kMinPlaneGapMm) break;
+    const glm::dvec3 from(p.x, 0.0, p.y);
+    const std::optional<double> q = aim_chief_ray(system, from, z_plane, chief_q_.back());
+    if (!q) break;
+    const optics::TraceResult r = trace_towards_plane(system, from, *q, 0.0, z_plane);
+    if (!r.ok()) break;
+    // A retina point on +x images a field point on -x (the eye inverts): the angle of the
+    // leaving ray from the -z axis, positive towards -x.
+    const double angle = std::atan2(-r.ray.direction.x, -r.ray.direction.z) * kDegrees;
+    if (!(angle > angles_.back())) break;
+    arcs_.push_back(a);
+    angles_.push_back(angle);
+    chief_q_.push_back(*q);
+  }
+  if (empty()) return;
+  const size_t n = static_cast<size_t>(std::ceil(max_angle_deg() * kInverseSamplesPerDegree)) + 1;
+  inverse_scale_ = static_cast<double>(n - 1) / max_angle_deg();
+  inverse_.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    const double angle = std::fmin(static_cast<double>(j) / inverse_scale_, max_angle_deg());
+    const size_t i = interval_of(angles_, angle);
+    const double t = (angle - angles_[i]) / (angles_[i + 1] - angles_[i]);
+    inverse_[j] = arcs_[i] + t * (arcs_[i + 1] - arcs_[i]);
+  }
+}
+
+double FieldAngleTable::angle_for_arc(double a) const {
+  if (empty() || a < 0.0 || a > max_arc_mm()) return -1.0;
+  const size_t i = interval_of(arcs_, a);
+  const double t = (a - arcs_[i]) / (arcs_[i + 1] - arcs_[i]);
+  return angles_[i] + t * (angles_[i + 1] - angles_[i]);
+}
+
+std::optional<double> FieldAngleTable::chief_q_for_arc(double a) const {
+  if (empty() || a < 0.0 || a > max_arc_mm()) return std::nullopt;
+  const size_t i = interval_of(arcs_, a);
+  const double t = (a - arcs_[i]) / (arcs_[i + 1] - arcs_[i]);
+  return chief_q_[i] + t * (chief_q_[i + 1] - chief_q_[i]);
+}
+
+RetinaMapping::RetinaMapping(FieldMapping kind, double half_fov_deg, const FieldAngleTable& table,
+                             const RetinaSurface& retina)
+    : kind_(kind), retina_curvature_(retina.curvature) {
+  if (kind == FieldMapping::Angle) {
+    edge_ = half_fov_deg;
+    return;
+  }
+  const double a = table.arc_for_angle(half_fov_deg);
+  if (a < 0.0)
+    throw optics::OpticsError(fmt::format(
+        "the chief ray of this eye reaches only {:.2f} degrees from the axis, so a field of view of "
+        "{:.4g} degrees cannot set the scale of mapping \"{}\"; use a smaller fov or mapping \"angle\"",
+        table.max_angle_deg(), 2.0 * half_fov_deg, to_string(kind)));
+  edge_ = kind == FieldMapping::Retina ? a : retina.point(a).x;
+}
+
+RetinaMapping::RetinaMapping(double half_extent_mm, const RetinaSurface& retina)
+    : kind_(FieldMapping::Flat), edge_(half_extent_mm), retina_curvature_(retina.curvature) {}
+
+}  // namespace eyetrace

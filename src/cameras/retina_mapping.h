@@ -1,0 +1,99 @@
+// Pixel -> retina: where on the retina (arc length along the meridian) a pixel's screen radius
+// lands, for the three mappings of the eye cameras and the physical film of "realistic":
+//   angle   pixels linear in the visual field angle of the chief ray (the angle at which the ray
+//           through the stop centre leaves the eye), so images of different eyes line up pixel
+//           for pixel: an equidistant projection of the visual field;
+//   flat    pixels linear in lateral retina height (a flat film seen along the axis);
+//   retina  pixels linear in arc length on the (curved) retina.
+// The screen is pbrt's: the shorter image axis spans [-1, 1]; "screen radius" is the distance
+// from the image centre in those units.
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cameras/retina_surface.h"
+#include "optics/sequential_trace.h"
+
+namespace eyetrace {
+
+enum class FieldMapping { Angle, Flat, Retina };
+
+// "angle", "flat", "retina"; parse returns false for anything else.
+const char* to_string(FieldMapping m);
+bool parse_field_mapping(const std::string& text, FieldMapping* out);
+
+// Chief-ray field angle as a function of retina arc length, traced once: (arc, angle) nodes with
+// the angle strictly increasing, and the inverse resampled on a uniform angle grid.
+class FieldAngleTable {
+ public:
+  FieldAngleTable() = default;
+  // Traces chief rays outwards from the retina centre until the field angle reaches
+  // max_angle_deg, the chief ray is lost, the angle stops growing or the retina point comes
+  // within reach of the sampling plane.
+  FieldAngleTable(const optics::CompiledSystem& system, const RetinaSurface& retina, double z_plane,
+                  double max_angle_deg, double max_arc_mm);
+
+  bool empty() const { return arcs_.size() < 2; }
+  double max_angle_deg() const { return angles_.empty() ? 0.0 : angles_.back(); }
+  double max_arc_mm() const { return arcs_.empty() ? 0.0 : arcs_.back(); }
+  // Retina arc whose chief ray leaves at angle_deg; negative beyond max_angle_deg().
+  double arc_for_angle(double angle_deg) const {
+    if (!(angle_deg <= max_angle_deg()) || empty()) return -1.0;
+    const double x = angle_deg * inverse_scale_;
+    const size_t i = std::min(static_cast<size_t>(x), inverse_.size() - 2);
+    const double t = x - static_cast<double>(i);
+    return inverse_[i] + t * (inverse_[i + 1] - inverse_[i]);
+  }
+  // Chief-ray field angle at arc a (linear between nodes); negative beyond the table.
+  double angle_for_arc(double a) const;
+  // q (meridian coordinate on the sampling plane) of the chief ray at arc a (linear between
+  // nodes): a starting guess for the pupil sampler; nullopt beyond the table.
+  std::optional<double> chief_q_for_arc(double a) const;
+
+ private:
+  std::vector<double> arcs_, angles_, chief_q_;
+  std::vector<double> inverse_;  // arc at angle j / inverse_scale_
+  double inverse_scale_ = 0.0;   // samples per degree
+};
+
+class RetinaMapping {
+ public:
+  RetinaMapping() = default;
+  // kind with its edge: the shorter half-axis of the image (screen radius 1) is at field angle
+  // half_fov_deg (angle), or at the height/arc of the chief ray at that angle (flat, retina).
+  // Throws optics::OpticsError when the chief ray does not reach half_fov_deg and the mapping
+  // needs it (flat, retina).
+  RetinaMapping(FieldMapping kind, double half_fov_deg, const FieldAngleTable& table,
+                const RetinaSurface& retina);
+  // A physical flat film: screen radius 1 at lateral height half_extent_mm.
+  RetinaMapping(double half_extent_mm, const RetinaSurface& retina);
+
+  FieldMapping kind() const { return kind_; }
+  // Retina arc length of a point at screen radius s >= 0; negative when it maps to nothing
+  // (beyond the traced field or the retina's reach). table: the one given at construction.
+  double arc_for_screen_radius(double s, const FieldAngleTable& table) const {
+    switch (kind_) {
+    case FieldMapping::Angle: return table.arc_for_angle(s * edge_);
+    case FieldMapping::Retina: return s * edge_;
+    case FieldMapping::Flat: {
+      const double h = s * edge_;
+      return h * std::abs(retina_curvature_) < 1.0 ? arc_for_height_(h) : -1.0;
+    }
+    }
+    return -1.0;
+  }
+  double edge() const { return edge_; }  // degrees (angle) or mm (flat, retina)
+
+ private:
+  double arc_for_height_(double h) const {
+    return RetinaSurface{0.0, retina_curvature_}.arc_for_height(h);
+  }
+  FieldMapping kind_ = FieldMapping::Angle;
+  double edge_ = 1.0;
+  double retina_curvature_ = 0.0;
+};
+
+}  // namespace eyetrace

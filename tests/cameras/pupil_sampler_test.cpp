@@ -1,0 +1,209 @@
+// The eye camera's pupil sampling: useful-ray fraction, containment of every passing ray (a
+// dense brute-force search of the sampling plane), uniform density over the stated area.
+#include "cameras/pupil_sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+
+#include "cameras/lens_system_camera.h"
+#include "core/parser.h"
+
+namespace eyetrace {
+namespace {
+
+std::unique_ptr<LensSystemCamera> make_eye(const std::string& params, IVec2 res = IVec2(256, 256)) {
+  SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");
+  CameraContext ctx{e.params, Transform(), res, ""};
+  std::unique_ptr<Camera> c = create_eye_camera(ctx);
+  return std::unique_ptr<LensSystemCamera>(dynamic_cast<LensSystemCamera*>(c.release()));
+}
+
+bool passes(const LensSystemCamera& cam, double arc, glm::dvec2 q) {
+  const glm::dvec2 p = cam.retina().point(arc);
+  const glm::dvec3 from(p.x, 0.0, p.y);
+  const optics::Ray ray{from, glm::dvec3(q.x, q.y, cam.pupil().z_plane()) - from};
+  return cam.system().trace_range(ray, cam.system().image_index() - 1, 0).ok();
+}
+
+// Fraction of generated rays that reach the scene, over random film and lens samples.
+double useful_fraction(const Camera& cam, IVec2 res, int n) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  int ok = 0;
+  for (int i = 0; i < n; ++i) {
+    CameraSample cs;
+    cs.p_film = Vec2(res.x * u(rng), res.y * u(rng));
+    cs.p_lens = Vec2(u(rng), u(rng));
+    ok += cam.generate_ray(cs).has_value();
+  }
+  return double(ok) / n;
+}
+
+// The brief's target: >= 95% of the rays generated over a 5 mm pupil and a 60 degree field
+// reach the scene (pbrt-v4's exit-pupil boxes waste at least a fifth). Measured: 0.987.
+TEST(PupilSampler, UsefulRayFractionAtLeast95Percent) {
+  for (const char* model : {"navarro", "gullstrand", "legrand", "kooijman"}) {
+    auto cam = make_eye(fmt::format("\"string model\" \"{}\" \"float pupildiameter\" 5 \"float fov\" 60", model));
+    const double f = useful_fraction(*cam, IVec2(256, 256), 400000);
+    std::printf("useful ray fraction, %s, 5 mm pupil, 60 deg fov: %.4f\n", model, f);
+    EXPECT_GE(f, 0.95) << model;
+  }
+}
+
+// Dense search: at many retina positions (interval ends and middles, where the polygon is
+// furthest from a traced position, and random ones) no ray through a point of the plane
+// outside the sampled polygon reaches the scene. The grid covers the passing region's box
+// grown by 30% in each direction, at a spacing of 1/300 of it.
+// Returns the fraction of passing grid rays found outside (0 is required where the passing
+// region is convex, see below).
+double passing_outside_fraction(const LensSystemCamera& cam, const std::string& label) {
+  const PupilSampler& ps = cam.pupil();
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> arcs;
+  for (int k = 0; k <= 24; ++k) arcs.push_back(ps.max_arc_mm() * k / 24.0 * (1.0 - 1e-12));
+  for (int k = 0; k < 12; ++k) arcs.push_back(ps.max_arc_mm() * u(rng));
+  int outside = 0, passing = 0;
+  for (double arc : arcs) {
+    // Coarse search for the passing box, 0.1 mm grid over +-10 mm; a region smaller than that
+    // grid is searched around the sampler's centre instead.
+    glm::dvec2 lo(1e9), hi(-1e9);
+    const glm::dvec2 c = ps.centre(arc);
+    for (int i = 0; i <= 200; ++i)
+      for (int j = 0; j <= 100; ++j) {
+        const glm::dvec2 q(c.x - 10.0 + 0.1 * i, 0.1 * j);
+        if (passes(cam, arc, q)) lo = glm::min(lo, q), hi = glm::max(hi, q);
+      }
+    if (lo.x > hi.x) lo = c, hi = c;
+    lo -= glm::dvec2(0.1);
+    hi += glm::dvec2(0.1);
+    const glm::dvec2 size = hi - lo;
+    lo -= 0.3 * size;
+    hi += 0.3 * size;
+    lo.y = -hi.y;
+    for (int i = 0; i < 300; ++i)
+      for (int j = 0; j < 300; ++j) {
+        const glm::dvec2 q(lo.x + (hi.x - lo.x) * (i + 0.5) / 300, lo.y + (hi.y - lo.y) * (j + 0.5) / 300);
+        if (!passes(cam, arc, q)) continue;
+        ++passing;
+        if (!ps.contains(arc, q)) ++outside;
+      }
+  }
+  EXPECT_GT(passing, 1000) << label;
+  std::printf("%s: %d of %d passing grid rays outside the sampled region\n", label.c_str(), outside, passing);
+  return double(outside) / passing;
+}
+
+// Dense search: at many retina positions (interval ends, where the polygon is furthest from a
+// traced middle, and random ones) no ray through a point of the plane outside the sampled
+// polygon reaches the scene. The grid covers the passing region's box grown by 30% on each
+// side at 1/300 of its width. Cases: the paper's pupil; a wide pupil and field where the lens
+// rims and the cornea cut the pupil into a cat's eye with sharp corners; a tiny pupil where
+// the region is a fraction of a millimetre.
+TEST(PupilSampler, NoPassingRayOutsideTheSampledRegion) {
+  EXPECT_EQ(passing_outside_fraction(*make_eye("\"float pupildiameter\" 5 \"float fov\" 60"), "navarro 5 mm"), 0.0);
+  EXPECT_EQ(passing_outside_fraction(*make_eye("\"float pupildiameter\" 8 \"float fov\" 140"), "navarro 8 mm"), 0.0);
+  EXPECT_EQ(passing_outside_fraction(*make_eye("\"string model\" \"legrand\" \"float pupildiameter\" 6 "
+                                               "\"float accommodation\" 5 \"float fov\" 120"),
+                                     "legrand accommodated"),
+            0.0);
+  EXPECT_EQ(passing_outside_fraction(*make_eye("\"string model\" \"kooijman\" \"float pupildiameter\" 0.5 \"float fov\" 120"),
+                                     "kooijman 0.5 mm"),
+            0.0);
+}
+
+// A multi-element camera lens (pbrt's double Gauss, US patent 2,673,491 at 50 mm) wide open,
+// where several element rims cut the pupil across a 35 mm film.
+TEST(PupilSampler, NoPassingRayOutsideForDoubleGaussLens) {
+  const std::string dir = ::testing::TempDir();
+  {
+    std::ofstream f(dir + "/eyecam_dgauss2.dat");
+    f << "29.475 3.76 1.67 25.2\n84.83 0.12 1 25.2\n19.275 4.025 1.67 23\n40.77 3.275 1.699 23\n"
+         "12.75 5.705 1 18\n0 4.5 0 17.1\n-14.495 1.18 1.603 17\n40.77 6.065 1.658 20\n"
+         "-20.385 0.19 1 20\n437.065 3.22 1.717 20\n-39.73 40 1 20\n";
+  }
+  SceneEntity e = parse_directive_text(
+      "Camera \"realistic\" \"string lensfile\" \"eyecam_dgauss2.dat\" \"float aperturediameter\" 17.1", "Camera", "test");
+  CameraContext ctx{e.params, Transform(), IVec2(300, 200), dir};
+  std::unique_ptr<Camera> cam = create_realistic_camera(ctx);
+  EXPECT_EQ(passing_outside_fraction(dynamic_cast<const LensSystemCamera&>(*cam), "double Gauss"), 0.0);
+}
+
+// Known limit (docs/eye-camera.md): the accommodated Gullstrand eye's nucleus is a thin lens
+// with a sharp rim; rays grazing it bend so strongly that a crescent tens of micrometres wide,
+// outside the main passing region and separated from it by rays the iris blocks, passes too.
+// The sampler (a star-shaped region) does not find it; measured: 1e-4 of the passing rays.
+TEST(PupilSampler, GullstrandNucleusRimCrescentIsBelowHalfPerMille) {
+  const double f = passing_outside_fraction(
+      *make_eye("\"string model\" \"gullstrand\" \"float pupildiameter\" 7 \"float accommodation\" 8 \"float fov\" 100"),
+      "gullstrand accommodated 7 mm");
+  EXPECT_LT(f, 5e-4);
+  EXPECT_EQ(passing_outside_fraction(*make_eye("\"string model\" \"gullstrand\" \"float pupildiameter\" 5 \"float fov\" 100"),
+                                     "gullstrand relaxed"),
+            0.0);
+}
+
+TEST(PupilSampler, SamplesAreUniformOverTheStatedArea) {
+  auto cam = make_eye("\"float pupildiameter\" 6 \"float fov\" 100");
+  const PupilSampler& ps = cam->pupil();
+  for (double arc : {0.0, 0.37 * ps.max_arc_mm(), 0.81 * ps.max_arc_mm()}) {
+    const double area = ps.area(arc);
+    ASSERT_GT(area, 0.0);
+    const int n = 400000, g = 24;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<glm::dvec2> pts(n);
+    glm::dvec2 lo(1e9), hi(-1e9);
+    for (auto& q : pts) {
+      double a;
+      ASSERT_TRUE(ps.sample(arc, u(rng), u(rng), &q, &a));
+      EXPECT_EQ(a, area);
+      lo = glm::min(lo, q), hi = glm::max(hi, q);
+    }
+    const glm::dvec2 cell = (hi - lo) / double(g);
+    std::vector<int> counts(g * g, 0);
+    for (const auto& q : pts) {
+      const int i = std::min(g - 1, int((q.x - lo.x) / cell.x)), j = std::min(g - 1, int((q.y - lo.y) / cell.y));
+      ++counts[i * g + j];
+    }
+    double chi2 = 0.0;
+    int cells = 0;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) {
+        bool inside = true;
+        for (int a = 0; a <= 4 && inside; ++a)
+          for (int b = 0; b <= 4 && inside; ++b)
+            inside = ps.contains(arc, lo + cell * glm::dvec2(i + a / 4.0, j + b / 4.0));
+        if (!inside) continue;
+        const double expected = n * cell.x * cell.y / area;
+        chi2 += (counts[i * g + j] - expected) * (counts[i * g + j] - expected) / expected;
+        ++cells;
+      }
+    ASSERT_GT(cells, 100);
+    const double k = cells, z = (std::cbrt(chi2 / k) - (1.0 - 2.0 / (9.0 * k))) / std::sqrt(2.0 / (9.0 * k));
+    EXPECT_LT(std::abs(z), 4.5) << "arc " << arc << " chi2 " << chi2 << " cells " << cells;
+  }
+}
+
+// The stated area is the polygon's: a fine grid count of contains() agrees within 0.5%.
+TEST(PupilSampler, AreaMatchesContainment) {
+  auto cam = make_eye("\"float pupildiameter\" 4 \"float fov\" 90");
+  const PupilSampler& ps = cam->pupil();
+  for (double arc : {0.0, 0.5 * ps.max_arc_mm(), ps.max_arc_mm()}) {
+    const glm::dvec2 c = ps.centre(arc);
+    const double half = 6.0;
+    const int n = 1200;
+    int inside = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        inside += ps.contains(arc, c + glm::dvec2(-half + 2 * half * (i + 0.5) / n, -half + 2 * half * (j + 0.5) / n));
+    const double counted = inside * (2 * half / n) * (2 * half / n);
+    EXPECT_NEAR(counted, ps.area(arc), 0.005 * ps.area(arc)) << arc;
+  }
+}
+
+}  // namespace
+}  // namespace eyetrace
