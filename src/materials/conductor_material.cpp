@@ -1,0 +1,68 @@
+#include "materials/conductor_material.h"
+
+#include "core/spectrum.h"
+#include "core/texture_store.h"
+#include "materials/conductor_bxdf.h"
+#include "materials/local_bsdf.h"
+#include "materials/normal_map.h"
+#include "materials/roughness.h"
+
+namespace eyetrace {
+
+namespace {
+
+RGB named_rgb(const std::string& name) {
+  Param p;
+  p.type = "spectrum";
+  p.name = name;
+  p.strings = {name};
+  return spectrum_param_to_rgb(p);
+}
+
+class ConductorMaterial final : public Material {
+ public:
+  ConductorMaterial(const SpectrumTexture* eta, const SpectrumTexture* k, const SpectrumTexture* reflectance,
+                    RoughnessParams roughness, const SpectrumTexture* normal_map)
+      : eta_(eta), k_(k), reflectance_(reflectance), roughness_(roughness), normal_map_(normal_map) {}
+
+  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+    SurfaceInteraction si = apply_normal_map(normal_map_, hit);
+    TextureEvalContext tc(si);
+    TrowbridgeReitz mf = roughness_.distribution(tc);
+    RGB eta, k;
+    if (reflectance_) {
+      // pbrt-v4: eta = 1 and the k whose normal-incidence reflectance k^2/(4+k^2) is r.
+      RGB r = glm::min(clamp_unit(reflectance_->evaluate(tc)), RGB(0.9999f));
+      eta = RGB(1.f);
+      k = 2.f * glm::sqrt(r) / glm::sqrt(RGB(1.f) - r);
+    } else {
+      eta = clamp_non_negative(eta_->evaluate(tc), 1.f);
+      k = clamp_non_negative(k_->evaluate(tc), 0.f);
+    }
+    return make_local_bsdf(arena, si, ConductorBxDF(mf, eta, k), hit.ns);
+  }
+
+ private:
+  const SpectrumTexture* eta_;
+  const SpectrumTexture* k_;
+  const SpectrumTexture* reflectance_;
+  RoughnessParams roughness_;
+  const SpectrumTexture* normal_map_;
+};
+
+}  // namespace
+
+std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) {
+  const SpectrumTexture* eta = ctx.textures.spectrum_param_or_null(ctx.params, "eta");
+  const SpectrumTexture* k = ctx.textures.spectrum_param_or_null(ctx.params, "k");
+  const SpectrumTexture* reflectance = ctx.textures.spectrum_param_or_null(ctx.params, "reflectance");
+  if (reflectance && (eta || k))
+    ctx.params.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
+  if (!reflectance) {
+    if (!eta) eta = ctx.textures.spectrum_param(ctx.params, "eta", named_rgb("metal-Cu-eta"));
+    if (!k) k = ctx.textures.spectrum_param(ctx.params, "k", named_rgb("metal-Cu-k"));
+  }
+  return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx), read_normal_map(ctx));
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,48 @@
+#include "materials/dielectric_material.h"
+
+#include "core/spectrum.h"
+#include "materials/dielectric_bxdf.h"
+#include "materials/local_bsdf.h"
+#include "materials/normal_map.h"
+#include "materials/roughness.h"
+
+namespace eyetrace {
+
+namespace {
+
+class DielectricMaterial final : public Material {
+ public:
+  DielectricMaterial(float eta, RoughnessParams roughness, const SpectrumTexture* normal_map)
+      : eta_(eta), roughness_(roughness), normal_map_(normal_map) {}
+  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+    SurfaceInteraction si = apply_normal_map(normal_map_, hit);
+    TrowbridgeReitz mf = roughness_.distribution(TextureEvalContext(si));
+    return make_local_bsdf(arena, si, DielectricBxDF(eta_, mf), hit.ns);
+  }
+
+ private:
+  float eta_;
+  RoughnessParams roughness_;
+  const SpectrumTexture* normal_map_;
+};
+
+}  // namespace
+
+float read_eta_at_550(const ParameterList& params, float def) {
+  const Param* p = params.find("eta");
+  if (!p) {
+    params.get_float("eta", def);  // records the query for "did you mean" hints
+    return def;
+  }
+  float eta = p->canonical_type() == "float" ? params.get_float("eta", def) : spectrum_param_at(*p, 550.f);
+  p->used = true;
+  if (!(eta > 0.f) || !std::isfinite(eta)) params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
+  return eta;
+}
+
+std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx) {
+  float eta = read_eta_at_550(ctx.params, 1.5f);
+  return std::make_unique<DielectricMaterial>(eta, RoughnessParams::read(ctx), read_normal_map(ctx));
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,17 @@
+// pbrt-v4's "dielectric" material: "eta" (float or spectrum, used at 550 nm; default 1.5),
+// "roughness" or "uroughness"/"vroughness" (default 0: smooth), "remaproughness" (true).
+#pragma once
+#include <memory>
+
+#include "core/material.h"
+#include "core/registry.h"
+
+namespace eyetrace {
+
+std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx);
+
+// The refractive index of a material's "eta" parameter at 550 nm (pbrt-v4 accepts a float
+// or a spectrum); `def` when absent. Shared by dielectric and coateddiffuse.
+float read_eta_at_550(const ParameterList& params, float def);
+
+}  // namespace eyetrace

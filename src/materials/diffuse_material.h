@@ -1,0 +1,12 @@
+// pbrt-v4's "diffuse" material: Lambertian reflection with "reflectance" (default 0.5).
+#pragma once
+#include <memory>
+
+#include "core/material.h"
+#include "core/registry.h"
+
+namespace eyetrace {
+
+std::unique_ptr<Material> create_diffuse_material(const MaterialContext& ctx);
+
+}  // namespace eyetrace

@@ -1,0 +1,13 @@
+// pbrt-v4's "interface" material: a surface that only bounds a participating medium. Its
+// bsdf() is null, which tells the integrator to continue the ray unchanged.
+#pragma once
+#include <memory>
+
+#include "core/material.h"
+#include "core/registry.h"
+
+namespace eyetrace {
+
+std::unique_ptr<Material> create_interface_material(const MaterialContext& ctx);
+
+}  // namespace eyetrace

@@ -1,0 +1,20 @@
+// The roughness parameters pbrt-v4 materials share: "roughness" or the anisotropic pair
+// "uroughness"/"vroughness" (each a float or a float texture), and "remaproughness".
+#pragma once
+#include "core/registry.h"
+#include "core/texture.h"
+#include "materials/microfacet.h"
+
+namespace eyetrace {
+
+struct RoughnessParams {
+  const FloatTexture* u = nullptr;
+  const FloatTexture* v = nullptr;
+  bool remap = true;
+
+  static RoughnessParams read(const MaterialContext& ctx);
+  // The distribution at a hit; negative roughness values count as 0.
+  TrowbridgeReitz distribution(const TextureEvalContext& tc) const;
+};
+
+}  // namespace eyetrace

@@ -1,0 +1,182 @@
+#include "textures/imagemap_texture.h"
+
+#include <OpenImageIO/texture.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/image_io.h"
+#include "core/texture_store.h"
+#include "textures/texture_mapping.h"
+
+namespace eyetrace {
+
+namespace {
+
+using OIIO::TextureOpt;
+using OIIO::TextureSystem;
+
+enum class Encoding { kLinear, kSRGB, kGamma };
+
+// Everything an image lookup needs, shared by the float and spectrum variants.
+struct ImageLookup {
+  TextureSystem* ts = nullptr;
+  TextureSystem::TextureHandle* handle = nullptr;
+  TextureOpt opt;
+  int channels = 0;      // colour channels in the file (alpha excluded when we can tell)
+  Encoding encoding = Encoding::kLinear;
+  float gamma = 1.f;
+  float scale = 1.f;
+  bool invert = false;
+  TextureMapping2D mapping;
+
+  // Up to 3 channels at the hit, decoded, scaled and inverted; returns how many are valid.
+  int fetch(const TextureEvalContext& ctx, float out[3]) const {
+    TextureCoords c = mapping.map(ctx);
+    TextureOpt o = opt;
+    int n = std::min(channels, 3);
+    out[0] = out[1] = out[2] = 0.f;
+    if (!ts->texture(handle, nullptr, o, c.st.x, 1.f - c.st.y, c.width, 0.f, 0.f, c.width, n, out)) return 0;
+    for (int i = 0; i < n; ++i) out[i] = finish(out[i]);
+    return n;
+  }
+
+  float finish(float v) const {
+    if (encoding == Encoding::kSRGB) v = srgb_to_linear(v);
+    else if (encoding == Encoding::kGamma) v = std::pow(std::max(v, 0.f), gamma);
+    v *= scale;
+    if (invert) v = std::max(0.f, 1.f - v);
+    return std::isfinite(v) ? v : 0.f;
+  }
+};
+
+void read_filter(const ParameterList& p, TextureOpt* opt) {
+  std::string filter = p.get_string("filter", "bilinear");
+  opt->interpmode = TextureOpt::InterpBilinear;
+  // pbrt-v4's point and bilinear filters pick one MIP level from the footprint.
+  if (filter == "point") {
+    opt->interpmode = TextureOpt::InterpClosest;
+    opt->mipmode = TextureOpt::MipModeOneLevel;
+  } else if (filter == "bilinear") {
+    opt->mipmode = TextureOpt::MipModeOneLevel;
+  } else if (filter == "trilinear") {
+    opt->mipmode = TextureOpt::MipModeTrilinear;
+  } else if (filter == "ewa" || filter == "EWA") {
+    opt->mipmode = TextureOpt::MipModeAniso;
+  } else {
+    p.fail("filter", fmt::format("unknown filter \"{}\"; eyetrace supports point, bilinear, trilinear, ewa", filter));
+  }
+  opt->anisotropic = std::max(1, int(p.get_float("maxanisotropy", 8.f)));
+}
+
+TextureOpt::Wrap read_wrap(const ParameterList& p) {
+  std::string wrap = p.get_string("wrap", "repeat");
+  if (wrap == "repeat") return TextureOpt::WrapPeriodic;
+  if (wrap == "black") return TextureOpt::WrapBlack;
+  if (wrap == "clamp") return TextureOpt::WrapClamp;
+  p.fail("wrap", fmt::format("unknown wrap mode \"{}\"; eyetrace supports repeat, black, clamp", wrap));
+}
+
+std::string resolve(const std::string& name, const std::string& dir) {
+  std::filesystem::path path(name);
+  if (path.is_relative() && !dir.empty()) path = std::filesystem::path(dir) / path;
+  return path.string();
+}
+
+void read_encoding(const ParameterList& p, const std::string& path, const OIIO::ImageSpec& spec, ImageLookup* l) {
+  bool eight_bit = spec.format.basetype == OIIO::TypeDesc::UINT8;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  std::string e = p.get_string("encoding", ext == ".png" || eight_bit ? "sRGB" : "linear");
+  if (e == "sRGB" || e == "srgb") {
+    l->encoding = Encoding::kSRGB;
+  } else if (e == "linear") {
+    l->encoding = Encoding::kLinear;
+  } else if (e.rfind("gamma ", 0) == 0) {
+    char* end = nullptr;
+    float g = std::strtof(e.c_str() + 6, &end);
+    if (!(g > 0.f) || !std::isfinite(g) || (end && *end != '\0'))
+      p.fail("encoding", fmt::format("bad gamma in \"{}\"", e));
+    l->encoding = Encoding::kGamma;
+    l->gamma = g;
+  } else {
+    p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
+  }
+  // Floating-point pixels are linear already (pbrt-v4 ignores the encoding for them).
+  if (spec.format.is_floating_point()) l->encoding = Encoding::kLinear;
+}
+
+ImageLookup open_image(const TextureContext& ctx) {
+  const ParameterList& p = ctx.params;
+  std::string name = p.get_string("filename", "");
+  if (name.empty()) p.fail("filename", "an imagemap texture needs a \"filename\"");
+  std::string path = resolve(name, ctx.search_dir);
+
+  ImageLookup l;
+  l.ts = static_cast<TextureSystem*>(ctx.textures.texture_system());
+  OIIO::ustring upath(path);
+  OIIO::ImageSpec spec;
+  if (!std::filesystem::is_regular_file(path)) p.fail("filename", fmt::format("image file \"{}\" not found", path));
+  if (!l.ts->get_imagespec(upath, 0, spec)) {
+    std::string why = l.ts->geterror();
+    p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
+  }
+  l.handle = l.ts->get_texture_handle(upath);
+  if (!l.handle) p.fail("filename", fmt::format("cannot read image \"{}\"", path));
+  l.channels = spec.nchannels;
+  if (spec.alpha_channel >= 0 && spec.alpha_channel < 3) l.channels = std::min(l.channels, spec.alpha_channel);
+  if (l.channels < 1) p.fail("filename", fmt::format("image \"{}\" has no colour channels", path));
+
+  read_filter(p, &l.opt);
+  l.opt.swrap = l.opt.twrap = read_wrap(p);
+  l.opt.fill = 0.f;
+  l.scale = p.get_float("scale", 1.f);
+  l.invert = p.get_bool("invert", false);
+  read_encoding(p, path, spec, &l);
+  l.mapping = TextureMapping2D::read(ctx);
+  return l;
+}
+
+class FloatImageTexture final : public FloatTexture {
+ public:
+  explicit FloatImageTexture(ImageLookup l) : l_(std::move(l)) {}
+  // One channel as is; RGB averaged, as pbrt-v4 does for a float lookup of a colour image.
+  float evaluate(const TextureEvalContext& ctx) const override {
+    float v[3];
+    int n = l_.fetch(ctx, v);
+    if (n == 0) return 0.f;
+    if (n < 3) return v[0];
+    return (v[0] + v[1] + v[2]) / 3.f;
+  }
+
+ private:
+  ImageLookup l_;
+};
+
+class SpectrumImageTexture final : public SpectrumTexture {
+ public:
+  explicit SpectrumImageTexture(ImageLookup l) : l_(std::move(l)) {}
+  // Grey images give grey; two-channel (grey, alpha) images use the grey channel.
+  RGB evaluate(const TextureEvalContext& ctx) const override {
+    float v[3];
+    int n = l_.fetch(ctx, v);
+    if (n == 0) return RGB(0.f);
+    if (n < 3) return RGB(v[0]);
+    return RGB(v[0], v[1], v[2]);
+  }
+
+ private:
+  ImageLookup l_;
+};
+
+}  // namespace
+
+std::unique_ptr<FloatTexture> create_imagemap_float_texture(const TextureContext& ctx) {
+  return std::make_unique<FloatImageTexture>(open_image(ctx));
+}
+
+std::unique_ptr<SpectrumTexture> create_imagemap_spectrum_texture(const TextureContext& ctx) {
+  return std::make_unique<SpectrumImageTexture>(open_image(ctx));
+}
+
+}  // namespace eyetrace

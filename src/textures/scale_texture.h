@@ -1,0 +1,13 @@
+// pbrt-v4's "scale" texture: "tex" (default 1) times "scale" (a float texture, default 1).
+#pragma once
+#include <memory>
+
+#include "core/registry.h"
+#include "core/texture.h"
+
+namespace eyetrace {
+
+std::unique_ptr<FloatTexture> create_scale_float_texture(const TextureContext& ctx);
+std::unique_ptr<SpectrumTexture> create_scale_spectrum_texture(const TextureContext& ctx);
+
+}  // namespace eyetrace

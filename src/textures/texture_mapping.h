@@ -1,0 +1,41 @@
+// pbrt-v4's 2D texture mappings, from a hit to texture coordinates (s, t):
+//  "uv" (default): s = uscale u + udelta, t = vscale v + vdelta;
+//  "spherical": equal-area square of the direction to the texture-space point;
+//  "cylindrical": s = (pi + atan2(y, x)) / (2 pi), t = z in texture space;
+//  "planar": s = udelta + dot(p, v1), t = vdelta + dot(p, v2) in texture space.
+#pragma once
+#include "core/registry.h"
+#include "core/texture.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+struct TextureCoords {
+  Vec2 st{0.f};
+  float width = 0.f;  // filter width in (s, t) units; 0 point-samples
+};
+
+class TextureMapping2D {
+ public:
+  static TextureMapping2D read(const TextureContext& ctx);
+  TextureCoords map(const TextureEvalContext& ctx) const;
+
+ private:
+  enum class Kind { kUV, kSpherical, kCylindrical, kPlanar };
+  Kind kind_ = Kind::kUV;
+  Vec2 scale_{1.f}, delta_{0.f};
+  Vec3 v1_{1.f, 0.f, 0.f}, v2_{0.f, 1.f, 0.f};
+  Transform texture_from_world_;
+};
+
+// Texture-space point for solid (3D) textures.
+class TextureMapping3D {
+ public:
+  static TextureMapping3D read(const TextureContext& ctx);
+  Vec3 map(const TextureEvalContext& ctx) const { return texture_from_world_.point(ctx.p); }
+
+ private:
+  Transform texture_from_world_;
+};
+
+}  // namespace eyetrace

@@ -1,0 +1,205 @@
+// Spectral parameters to RGB (core/spectrum.h): constants, pairs, blackbodies, named spectra
+// and the error messages, against published colorimetry.
+#include <gtest/gtest.h>
+
+#include "core/cie_tables.h"
+#include "core/named_spectra.h"
+#include "core/params.h"
+#include "core/spectrum.h"
+#include "materials/fresnel.h"
+
+namespace eyetrace {
+namespace {
+
+Param spectrum_param(std::vector<double> numbers, std::vector<std::string> strings = {}, std::string type = "spectrum") {
+  Param p;
+  p.type = std::move(type);
+  p.name = "reflectance";
+  p.loc = SourceLoc{"scene.pbrt", 3, 7};
+  p.numbers = std::move(numbers);
+  p.strings = std::move(strings);
+  return p;
+}
+
+Vec2 chromaticity(const Vec3& xyz) { return Vec2(xyz.x, xyz.y) / (xyz.x + xyz.y + xyz.z); }
+
+Vec3 named_xyz(const char* name) {
+  const NamedSpectrum* n = find_named_spectrum(name);
+  EXPECT_NE(n, nullptr) << name;
+  SpectrumSamples s{};
+  for (int i = 0; i < kCieRows; ++i) s[i] = evaluate_named_spectrum(*n, cie_table()[i].lambda_nm);
+  return spectrum_to_xyz(s);
+}
+
+std::string error_of(const Param& p) {
+  try {
+    spectrum_param_to_rgb(p);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CieTable, EqualEnergyWhiteHasEqualTristimulusSums) {
+  // The CIE 1931 functions are scaled so that illuminant E has X = Y = Z; the 5 nm table
+  // sums to 21.3714 for each (CIE 15, Table of the 1931 observer, column sums).
+  double x = 0, y = 0, z = 0;
+  for (const auto& r : cie_table()) x += r.x, y += r.y, z += r.z;
+  EXPECT_NEAR(x, 21.3714, 1e-3);
+  EXPECT_NEAR(y, 21.3714, 1e-3);
+  EXPECT_NEAR(z, 21.3715, 1e-3);
+}
+
+TEST(CieTable, IlluminantChromaticitiesMatchCie15) {
+  // CIE 15:2004 Table T.3 (2-degree observer).
+  Vec2 d65 = chromaticity(named_xyz("stdillum-D65"));
+  EXPECT_NEAR(d65.x, 0.31272, 2e-4);
+  EXPECT_NEAR(d65.y, 0.32903, 2e-4);
+  Vec2 d50 = chromaticity(named_xyz("stdillum-D50"));
+  EXPECT_NEAR(d50.x, 0.34567, 5e-4);
+  EXPECT_NEAR(d50.y, 0.35850, 5e-4);
+  Vec2 a = chromaticity(named_xyz("stdillum-A"));
+  EXPECT_NEAR(a.x, 0.44757, 5e-4);
+  EXPECT_NEAR(a.y, 0.40745, 5e-4);
+}
+
+TEST(XyzToSrgb, D65WhiteMapsToUnitRgb) {
+  // sRGB's white is D65, XYZ (0.95047, 1, 1.08883) (IEC 61966-2-1).
+  RGB w = xyz_to_linear_srgb(Vec3(0.95047f, 1.f, 1.08883f));
+  EXPECT_NEAR(w.r, 1.f, 2e-4);
+  EXPECT_NEAR(w.g, 1.f, 2e-4);
+  EXPECT_NEAR(w.b, 1.f, 2e-4);
+  // The red primary (x, y) = (0.64, 0.33) maps to pure red.
+  Vec3 red(0.64f / 0.33f, 1.f, 0.03f / 0.33f);
+  RGB r = xyz_to_linear_srgb(red);
+  EXPECT_NEAR(r.g / r.r, 0.f, 1e-4);
+  EXPECT_NEAR(r.b / r.r, 0.f, 1e-4);
+}
+
+TEST(SpectrumParam, ConstantIsGrey) {
+  RGB c = spectrum_param_to_rgb(spectrum_param({0.5}));
+  EXPECT_EQ(c, RGB(0.5f));
+}
+
+TEST(SpectrumParam, EqualEnergyPairsGiveEqualRgb) {
+  for (double v : {0.25, 0.5, 1.0}) {
+    RGB c = spectrum_param_to_rgb(spectrum_param({300, v, 550, v, 900, v}));
+    EXPECT_NEAR(c.r, v, 1e-5);
+    EXPECT_NEAR(c.g, v, 1e-5);
+    EXPECT_NEAR(c.b, v, 1e-5);
+  }
+  // A table that covers less than 380..780 nm is held constant beyond its ends.
+  RGB c = spectrum_param_to_rgb(spectrum_param({400, 0.5, 700, 0.5}));
+  EXPECT_NEAR(c.r, 0.5f, 1e-5);
+  EXPECT_NEAR(c.b, 0.5f, 1e-5);
+}
+
+TEST(SpectrumParam, LongWavelengthsLookRed) {
+  RGB c = spectrum_param_to_rgb(spectrum_param({380, 0, 599, 0, 601, 1, 780, 1}));
+  EXPECT_GT(c.r, 4.f * std::abs(c.g));
+  EXPECT_GT(c.r, 4.f * std::abs(c.b));
+}
+
+TEST(SpectrumParam, Blackbody6504KIsNearlyWhite) {
+  // 6504 K lies 0.003 in uv below D65 on the Planckian locus: its sRGB is white within 5%.
+  RGB c = spectrum_param_to_rgb(spectrum_param({6504}, {}, "blackbody"));
+  EXPECT_NEAR(luminance(c), 1.f, 1e-4);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(c[i], 1.f, 0.05f) << i;
+}
+
+TEST(SpectrumParam, BlackbodyChromaticityFollowsPlanckianLocus) {
+  // Planckian locus chromaticities (Wyszecki & Stiles, Table 1(3.11)): 2856 K is
+  // illuminant A (0.4476, 0.4074); 10000 K is (0.2807, 0.2884).
+  auto xy = [](double t) {
+    RGB rgb = spectrum_param_to_rgb(spectrum_param({t}, {}, "blackbody"));
+    // Back to XYZ through the inverse of the published XYZ -> sRGB matrix (column-major).
+    glm::mat3 m(3.2404542f, -0.9692660f, 0.0556434f, -1.5371385f, 1.8760108f, -0.2040259f, -0.4985314f, 0.0415560f,
+                1.0572252f);
+    Vec3 xyz = glm::inverse(m) * rgb;
+    return chromaticity(xyz);
+  };
+  Vec2 a = xy(2856.0);
+  EXPECT_NEAR(a.x, 0.4476f, 1e-3f);
+  EXPECT_NEAR(a.y, 0.4074f, 1e-3f);
+  Vec2 b = xy(10000.0);
+  EXPECT_NEAR(b.x, 0.2807f, 1e-3f);
+  EXPECT_NEAR(b.y, 0.2884f, 1e-3f);
+}
+
+TEST(SpectrumParam, Stdillum65IsWhite) {
+  RGB c = spectrum_param_to_rgb(spectrum_param({}, {"stdillum-D65"}));
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(c[i], 1.f, 2e-3f);
+}
+
+TEST(SpectrumParam, GlassIsItsIndexAt550nm) {
+  // Schott BK7: n_e = 1.51872 at 546.07 nm, n_d = 1.51680 at 587.56 nm (Schott datasheet);
+  // linear between them at 550 nm gives 1.5185.
+  RGB c = spectrum_param_to_rgb(spectrum_param({}, {"glass-BK7"}));
+  EXPECT_NEAR(c.g, 1.5185f, 5e-4f);
+  EXPECT_EQ(c.r, c.g);
+  EXPECT_EQ(c.b, c.g);
+  EXPECT_NEAR(spectrum_param_at(spectrum_param({}, {"glass-BK7"}), 587.56f), 1.51680f, 5e-4f);
+}
+
+TEST(SpectrumParam, CopperRgbReproducesSpectralReflectance) {
+  // Averaging eta and k to RGB is an approximation: the Fresnel reflectance of the RGB
+  // values must stay within 0.03 of the spectral reflectance projected to RGB, and copper
+  // must look copper (red > green > blue).
+  RGB eta = spectrum_param_to_rgb(spectrum_param({}, {"metal-Cu-eta"}));
+  RGB k = spectrum_param_to_rgb(spectrum_param({}, {"metal-Cu-k"}));
+  const NamedSpectrum* ne = find_named_spectrum("metal-Cu-eta");
+  const NamedSpectrum* nk = find_named_spectrum("metal-Cu-k");
+  for (float cos_i : {1.f, 0.5f, 0.2f}) {
+    SpectrumSamples r{};
+    for (int i = 0; i < kCieRows; ++i) {
+      float l = cie_table()[i].lambda_nm;
+      r[i] = fresnel_complex(cos_i, evaluate_named_spectrum(*ne, l), evaluate_named_spectrum(*nk, l));
+    }
+    RGB spectral = reflectance_spectrum_to_rgb(r);
+    RGB approx = fresnel_complex(cos_i, eta, k);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(approx[c], spectral[c], 0.03f) << cos_i << " " << c;
+    EXPECT_GT(approx.r, approx.g);
+    EXPECT_GT(approx.g, approx.b);
+  }
+}
+
+TEST(SpectrumParam, EveryNamedSpectrumConverts) {
+  for (const auto& name : named_spectrum_names()) {
+    RGB c = spectrum_param_to_rgb(spectrum_param({}, {name}));
+    EXPECT_TRUE(is_finite(c)) << name;
+    EXPECT_GT(max_component(c), 0.f) << name;
+  }
+  for (const char* name : {"metal-Ag-eta", "metal-Ag-k", "metal-Al-eta", "metal-Al-k", "metal-Au-eta", "metal-Au-k",
+                           "metal-Cu-eta", "metal-Cu-k", "glass-BK7", "stdillum-D65"})
+    EXPECT_NE(find_named_spectrum(name), nullptr) << name;
+}
+
+TEST(SpectrumParam, SpectrumFilesAreRejectedWithLocation) {
+  std::string e = error_of(spectrum_param({}, {"spds/copper.spd"}));
+  EXPECT_NE(e.find("scene.pbrt:3:7"), std::string::npos) << e;
+  EXPECT_NE(e.find("spectrum files are not supported: spds/copper.spd"), std::string::npos) << e;
+}
+
+TEST(SpectrumParam, UnknownNamesListKnownOnes) {
+  std::string e = error_of(spectrum_param({}, {"metal-Cu-etta"}));
+  EXPECT_NE(e.find("scene.pbrt:3:7"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean \"metal-Cu-eta\""), std::string::npos) << e;
+  EXPECT_NE(e.find("glass-BK7"), std::string::npos) << e;
+  EXPECT_NE(e.find("stdillum-D65"), std::string::npos) << e;
+}
+
+TEST(SpectrumParam, MalformedPairsAreErrors) {
+  EXPECT_NE(error_of(spectrum_param({400, 0.5, 500})).find("pairs"), std::string::npos);
+  EXPECT_NE(error_of(spectrum_param({500, 0.5, 400, 0.5})).find("increasing"), std::string::npos);
+  EXPECT_NE(error_of(spectrum_param({10}, {}, "blackbody")).find("outside"), std::string::npos);
+}
+
+TEST(SpectrumParamAt, InterpolatesPairs) {
+  Param p = spectrum_param({500, 1.4, 600, 1.6});
+  EXPECT_NEAR(spectrum_param_at(p, 550.f), 1.5f, 1e-6f);
+  EXPECT_NEAR(spectrum_param_at(p, 400.f), 1.4f, 1e-6f);
+  EXPECT_NEAR(spectrum_param_at(spectrum_param({1.33}), 550.f), 1.33f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace eyetrace
