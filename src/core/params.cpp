@@ -35,6 +35,16 @@ void ParameterList::note_query(const std::string& name) const {
   queried_.push_back(name);
 }
 
+// Values are parsed as doubles but used as floats: one beyond the float range would become
+// infinite (a point light at infinity, an infinite radiance) without a word.
+static void check_numbers(const Param& p) {
+  for (double v : p.numbers) {
+    if (!std::isfinite(v)) eyetrace::fail(p.loc, "parameter \"{}\" has a non-finite value", p.name);
+    if (std::abs(v) > 3.0e38)
+      eyetrace::fail(p.loc, "parameter \"{}\" value {} is out of the float range", p.name, v);
+  }
+}
+
 const Param* ParameterList::lookup(const std::string& name, const char* type, size_t min_values) const {
   note_query(name);
   const Param* p = find(name);
@@ -46,8 +56,7 @@ const Param* ParameterList::lookup(const std::string& name, const char* type, si
   size_t n = p->numbers.size() + p->strings.size() + p->bools.size();
   if (n < min_values)
     eyetrace::fail(p->loc, "parameter \"{}\" needs at least {} value(s), got {}", name, min_values, n);
-  for (double v : p->numbers)
-    if (!std::isfinite(v)) eyetrace::fail(p->loc, "parameter \"{}\" has a non-finite value", name);
+  check_numbers(*p);
   return p;
 }
 
@@ -110,8 +119,7 @@ std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
   }
   if (t == "spectrum" || t == "blackbody") {
     p->used = true;
-    for (double v : p->numbers)
-      if (!std::isfinite(v)) eyetrace::fail(p->loc, "parameter \"{}\" has a non-finite value", name);
+    check_numbers(*p);
     return spectrum_param_to_rgb(*p);
   }
   eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name, p->type);

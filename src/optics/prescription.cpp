@@ -71,6 +71,9 @@ double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile&
 
 namespace {
 
+constexpr double kMaxIndex = 10.0;
+constexpr double kMaxThicknessMm = 1e6;  // 1 km
+
 std::string label(const Prescription& p, size_t i) {
     return fmt::format("surface {} '{}'", i, p.surfaces[i].name);
 }
@@ -96,9 +99,17 @@ void validate_surface(const Prescription& p, size_t i) {
                                       label(p, i), s.semi_diameter_mm));
     if (s.thickness_mm < 0.0)
         throw OpticsError(fmt::format("{}: thickness {} mm is negative", label(p, i), s.thickness_mm));
+    // Beyond this, squared distances in the ray-conic intersection lose every significant digit.
+    if (s.thickness_mm > kMaxThicknessMm)
+        throw OpticsError(fmt::format("{}: thickness {} mm is more than {} mm", label(p, i),
+                                      s.thickness_mm, kMaxThicknessMm));
     if (s.index_after < 1.0)
         throw OpticsError(fmt::format("{}: index {} of medium '{}' is below 1", label(p, i),
                                       s.index_after, s.medium));
+    // No optical material comes near this; far beyond it, eta^2 in Snell's law overflows.
+    if (s.index_after > kMaxIndex)
+        throw OpticsError(fmt::format("{}: index {} of medium '{}' is above {}", label(p, i),
+                                      s.index_after, s.medium, kMaxIndex));
     if (s.profile.kind == ProfileKind::Plane && s.profile.curvature != 0.0)
         throw OpticsError(fmt::format("{}: a plane profile has curvature {}", label(p, i),
                                       s.profile.curvature));
@@ -128,7 +139,7 @@ void validate(const Prescription& p) {
     const std::string who = p.name.empty() ? "prescription" : fmt::format("prescription '{}'", p.name);
     if (p.surfaces.size() < 2)
         throw OpticsError(fmt::format("{}: needs at least one surface and an image surface", who));
-    if (!std::isfinite(p.object_index) || p.object_index < 1.0)
+    if (!std::isfinite(p.object_index) || p.object_index < 1.0 || p.object_index > kMaxIndex)
         throw OpticsError(fmt::format("{}: object-space index {} is invalid", who, p.object_index));
     if (!std::isfinite(p.wavelength_nm) || p.wavelength_nm <= 0.0)
         throw OpticsError(fmt::format("{}: wavelength {} nm is invalid", who, p.wavelength_nm));

@@ -57,8 +57,9 @@ struct Prescription {
 };
 
 // Throws OpticsError naming the surface and parameter at the first problem found: non-finite
-// numbers, negative thickness, index < 1, no or several stops, image not last, a semi-diameter
-// beyond a closed conic's reach, adjacent surfaces that cross within their clear apertures.
+// numbers, thickness outside [0, 1e6] mm, index outside [1, 10], no or several stops, image not
+// last, a semi-diameter beyond a closed conic's reach, adjacent surfaces that cross within their
+// clear apertures.
 void validate(const Prescription& p);
 
 // Same system with every surface index re-evaluated at lambda_nm from the media table (media

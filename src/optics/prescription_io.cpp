@@ -176,7 +176,7 @@ Prescription prescription_from_json_text(const std::string& text, const std::str
     json j;
     try {
         j = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number like 1e99999
         throw OpticsError(fmt::format("{}: invalid JSON: {}", origin, e.what()));
     }
     try {

@@ -84,6 +84,9 @@ inline TraceStatus CompiledSystem::step(const Interface& f, glm::dvec3& o, glm::
             gd = -gd;
         }
         const double g2 = glm::dot(g, g);
+        // Zero only at a conic's centre, which no true hit reaches; a hit computed there from
+        // a ray origin ~1e13 mm away (round-off) would otherwise turn into NaN below.
+        if (!(g2 > 0.0)) return TraceStatus::Missed;
         const double radicand = eta * eta * gd * gd + g2 * (1.0 - eta * eta);
         if (radicand < 0.0) return TraceStatus::TotalInternalReflection;
         const double gamma = (-eta * gd - std::sqrt(radicand)) * (1.0 / g2);

@@ -1,12 +1,9 @@
 #include "shapes/ply_mesh.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
-#include <assimp/Importer.hpp>
 #include <filesystem>
 
 #include "core/error.h"
+#include "shapes/ply_reader.h"
 
 namespace eyetrace {
 
@@ -14,22 +11,6 @@ namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-void append_mesh(const aiMesh& m, MeshData* out) {
-  int base = int(out->positions.size());
-  bool normals = m.HasNormals(), uvs = m.HasTextureCoords(0);
-  for (unsigned i = 0; i < m.mNumVertices; ++i) {
-    const aiVector3D& p = m.mVertices[i];
-    out->positions.emplace_back(p.x, p.y, p.z);
-    if (normals) out->normals.emplace_back(m.mNormals[i].x, m.mNormals[i].y, m.mNormals[i].z);
-    if (uvs) out->uvs.emplace_back(m.mTextureCoords[0][i].x, m.mTextureCoords[0][i].y);
-  }
-  for (unsigned f = 0; f < m.mNumFaces; ++f) {
-    const aiFace& face = m.mFaces[f];
-    if (face.mNumIndices != 3) continue;  // points and lines left by the triangulation
-    for (int k = 0; k < 3; ++k) out->indices.push_back(base + int(face.mIndices[k]));
-  }
 }
 
 }  // namespace
@@ -40,21 +21,15 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     params.fail("filename", fmt::format("cannot open \"{}\": no such file", path));
-  Assimp::Importer importer;
-  // No vertex joining: the file's vertices and their order are kept as written.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
-  if (!scene || !scene->mRootNode)
-    params.fail("filename", fmt::format("cannot read \"{}\": {}", path, importer.GetErrorString()));
   MeshData mesh;
-  bool all_normals = true, all_uvs = true;
-  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-    all_normals = all_normals && scene->mMeshes[i]->HasNormals();
-    all_uvs = all_uvs && scene->mMeshes[i]->HasTextureCoords(0);
+  try {
+    mesh = read_ply_file(path);
+  } catch (const PlyError& e) {
+    params.fail("filename", fmt::format("cannot read \"{}\": {}", path, e.what()));
   }
-  for (unsigned i = 0; i < scene->mNumMeshes; ++i) append_mesh(*scene->mMeshes[i], &mesh);
   // Per-vertex data must cover every vertex or none.
-  if (!all_normals) mesh.normals.clear();
-  if (!all_uvs) mesh.uvs.clear();
+  if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
+  if (mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
   if (mesh.indices.empty())
     params.fail("filename", fmt::format("\"{}\" contains no triangles or quads", path));
   return mesh;

@@ -1,5 +1,5 @@
-// pbrt-v4's "plymesh": a triangle mesh read from a PLY file with assimp. Quads (pbrt-v4
-// would make bilinear patches of them) are triangulated, which is exact for planar quads.
+// pbrt-v4's "plymesh": a triangle mesh read from a PLY file (shapes/ply_reader.h). Quads
+// (pbrt-v4 would make bilinear patches of them) are triangulated, exact for planar quads.
 #pragma once
 #include <memory>
 #include <string>
