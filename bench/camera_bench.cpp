@@ -26,6 +26,27 @@ std::vector<CameraSample> random_samples() {
   return samples;
 }
 
+// The order the integrator asks in: 16x16-pixel tiles, 16 jittered samples per pixel, so
+// consecutive samples share a retina position (and its pupil tables) as in a render.
+std::vector<CameraSample> tile_ordered_samples() {
+  std::vector<CameraSample> samples;
+  samples.reserve(1 << 16);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (int tile = 0; samples.size() < (1u << 16); tile += 7) {  // tiles spread over the image
+    const int tx = tile % (kResolution.x / 16), ty = (tile / (kResolution.x / 16)) % (kResolution.y / 16);
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x)
+        for (int i = 0; i < 16 && samples.size() < (1u << 16); ++i) {
+          CameraSample cs;
+          cs.p_film = Vec2(float(tx * 16 + x) + u(rng), float(ty * 16 + y) + u(rng));
+          cs.p_lens = Vec2(u(rng), u(rng));
+          samples.push_back(cs);
+        }
+  }
+  return samples;
+}
+
 std::unique_ptr<Camera> eye(const std::string& name, const std::string& params) {
   SceneEntity e = parse_directive_text("Camera \"" + name + "\" " + params, "Camera", "bench");
   CameraContext ctx{e.params, Transform(), kResolution, ""};
@@ -41,6 +62,24 @@ void run(benchmark::State& state, const Camera& cam) {
     benchmark::DoNotOptimize(r);
     i = (i + 1) & (samples.size() - 1);
     ++n;
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+  state.counters["useful"] = n ? double(rays) / double(n) : 0.0;
+}
+
+// The integrator's path: generate_rays over the samples of one pixel at a time (16 here), in
+// tile order.
+void run_batched(benchmark::State& state, const Camera& cam) {
+  const std::vector<CameraSample> samples = tile_ordered_samples();
+  constexpr size_t kChunk = 16;
+  std::optional<CameraRay> out[kChunk];
+  size_t i = 0, rays = 0, n = 0;
+  for (auto _ : state) {
+    cam.generate_rays(&samples[i], out, kChunk);
+    for (const auto& r : out) rays += r.has_value();
+    benchmark::DoNotOptimize(out);
+    i = (i + kChunk) & (samples.size() - 1);
+    n += kChunk;
   }
   state.SetItemsProcessed(static_cast<int64_t>(n));
   state.counters["useful"] = n ? double(rays) / double(n) : 0.0;
@@ -67,6 +106,18 @@ void BM_Navarro(benchmark::State& state) {
   run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
 }
 BENCHMARK(BM_Navarro);
+
+void BM_NavarroBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
+}
+BENCHMARK(BM_NavarroBatched);
+
+void BM_PinholeBatched(benchmark::State& state) {
+  PerspectiveCamera::Settings s;
+  s.fov_degrees = 60.f;
+  run_batched(state, PerspectiveCamera(Transform(), kResolution, s));
+}
+BENCHMARK(BM_PinholeBatched);
 
 void BM_NavarroAccommodated(benchmark::State& state) {
   run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60 \"float accommodation\" 4"));

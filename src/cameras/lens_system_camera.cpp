@@ -142,40 +142,73 @@ std::optional<LensSystemCamera::RetinaPoint> LensSystemCamera::retina_point(Vec2
   return RetinaPoint{{p.x * m.x, p.x * m.y, p.y}, {n.x * m.x, n.x * m.y, n.y}, a, m};
 }
 
-std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs) const {
+// The part of a camera sample before the lens trace: the retina point, the sampled point of the
+// sampling plane and the ray between them. False when the pupil tables say no ray passes.
+bool LensSystemCamera::start_ray(const CameraSample& cs, PendingRay* pending) const {
   const double sx = screen_window_[0] + double(cs.p_film.x) * screen_scale_.x;
   const double sy = screen_window_[3] - double(cs.p_film.y) * screen_scale_.y;
   const double radius = std::sqrt(sx * sx + sy * sy);
   const double a = mapping_.arc_for_screen_radius(radius, angles_);
   glm::dvec2 q;
-  double area;
-  if (!pupil_.sample(a, cs.p_lens.x, cs.p_lens.y, &q, &area)) return std::nullopt;
+  if (!pupil_.sample(a, cs.p_lens.x, cs.p_lens.y, &q, &pending->area)) return false;
   // Upright image: screen direction (sx, sy) -> retina direction (sx, -sy) (see the header).
   const double inv_radius = radius > 0.0 ? 1.0 / radius : 0.0;
   const glm::dvec2 m = radius > 0.0 ? glm::dvec2(sx * inv_radius, -sy * inv_radius) : glm::dvec2(1.0, 0.0);
-  glm::dvec2 p, n;
-  retina_points_.at(a, &p, &n);
-
+  glm::dvec2 p;
+  retina_points_.at(a, &p, &pending->normal);
   // Meridian frame: retina point (p.x, 0, p.y), plane point (q.x, q.y, z_plane).
-  const glm::dvec3 d_local(q.x - p.x, q.y, z_plane_ - p.y);
-  const optics::Ray ray{{p.x * m.x, p.x * m.y, p.y},
-                        {d_local.x * m.x - d_local.y * m.y, d_local.x * m.y + d_local.y * m.x, d_local.z}};
-  const optics::TraceResult r = system_.trace_range(ray, system_.image_index() - 1, 0);
-  if (!r.ok()) return std::nullopt;
+  const glm::dvec3 d(q.x - p.x, q.y, z_plane_ - p.y);
+  pending->d_local = d;
+  pending->ray = {{p.x * m.x, p.x * m.y, p.y}, {d.x * m.x - d.y * m.y, d.x * m.y + d.y * m.x, d.z}};
+  return true;
+}
 
+// The part after the trace: the weight and the conversion to a world-space ray.
+std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending, const optics::TraceResult& r,
+                                                      float time) const {
+  if (!r.ok()) return std::nullopt;
   // weight = C cos(theta_retina) cos(theta_plane) / d^2 / density, density = 1 / area.
+  const glm::dvec3& d_local = pending.d_local;
   const double d2 = glm::dot(d_local, d_local);
   const double inv_d = 1.0 / std::sqrt(d2);
-  const double cos_retina = (d_local.x * n.x + d_local.z * n.y) * inv_d;
+  const double cos_retina = (d_local.x * pending.normal.x + d_local.z * pending.normal.y) * inv_d;
   if (!(cos_retina > 0.0)) return std::nullopt;  // would have to leave through the retina
   const double cos_plane = -d_local.z * inv_d;
-  const double weight = normalisation_ * area * cos_retina * cos_plane * (inv_d * inv_d);
+  const double weight = normalisation_ * pending.area * cos_retina * cos_plane * (inv_d * inv_d);
 
   const double k = settings_.scene_units_per_mm;
   const Vec3 o(float(-r.ray.origin.x * k), float(r.ray.origin.y * k), float(-r.ray.origin.z * k));
   const Vec3 d(float(-r.ray.direction.x), float(r.ray.direction.y), float(-r.ray.direction.z));
-  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, cs.time},
+  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, time},
                    static_cast<float>(weight)};
+}
+
+std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs) const {
+  PendingRay pending;
+  if (!start_ray(cs, &pending)) return std::nullopt;
+  return finish_ray(pending, system_.trace_range(pending.ray, system_.image_index() - 1, 0), cs.time);
+}
+
+// Bit-identical to generate_ray per sample; the batch trace overlaps the rays' latency chains.
+void LensSystemCamera::generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays,
+                                     size_t count) const {
+  constexpr size_t kBatch = 16;
+  PendingRay pending[kBatch];
+  optics::Ray traced[kBatch];
+  optics::TraceResult results[kBatch];
+  size_t index[kBatch];
+  for (size_t base = 0; base < count; base += kBatch) {
+    const size_t n = std::min(kBatch, count - base);
+    size_t live = 0;
+    for (size_t j = 0; j < n; ++j) {
+      rays[base + j].reset();
+      if (!start_ray(samples[base + j], &pending[live])) continue;
+      traced[live] = pending[live].ray;
+      index[live++] = base + j;
+    }
+    system_.trace_range_batch(traced, results, live, system_.image_index() - 1, 0);
+    for (size_t j = 0; j < live; ++j) rays[index[j]] = finish_ray(pending[j], results[j], samples[index[j]].time);
+  }
 }
 
 Ray LensSystemCamera::camera_ray_from_exit(const optics::Ray& exit) const {

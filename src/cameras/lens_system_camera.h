@@ -45,6 +45,7 @@ class LensSystemCamera : public Camera {
                    IVec2 resolution, const Settings& settings);
 
   std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
+  void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const override;
   std::string to_string() const override;
 
   // --- For tests and tools ---------------------------------------------------------------
@@ -70,6 +71,14 @@ class LensSystemCamera : public Camera {
   double weight_normalisation() const { return normalisation_; }
 
  private:
+  struct PendingRay {
+    optics::Ray ray;       // from the retina towards the sampled plane point (system frame)
+    glm::dvec3 d_local;    // the same direction in the meridian frame, unnormalised
+    glm::dvec2 normal;     // retina normal in the meridian frame
+    double area = 0.0;     // sampled area of the plane (1 / density)
+  };
+  bool start_ray(const CameraSample& cs, PendingRay* pending) const;
+  std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation();
 

@@ -2,6 +2,7 @@
 // weight. An empty optional is a ray the camera lost (vignetted, stopped by the iris, totally
 // reflected inside a lens): the film counts it, it is not a magic zero radiance.
 #pragma once
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,11 @@ class Camera {
  public:
   virtual ~Camera() = default;
   virtual std::optional<CameraRay> generate_ray(const CameraSample& sample) const = 0;
+  // The same for `count` samples: rays[i] equals generate_ray(samples[i]) bit for bit. Lens
+  // cameras override it to trace several rays at once (their trace is latency-bound).
+  virtual void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const {
+    for (size_t i = 0; i < count; ++i) rays[i] = generate_ray(samples[i]);
+  }
   virtual std::string to_string() const = 0;
 };
 

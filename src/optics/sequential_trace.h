@@ -93,8 +93,12 @@ private:
         double eta_reverse;  // n_after / n_before, likewise
         SurfaceRole role;
     };
+    struct Lanes;  // rays of a batch in structure-of-arrays form (sequential_trace.cpp)
     template <bool Forward>
     static TraceStatus step(const Interface& f, glm::dvec3& o, glm::dvec3& d);
+    template <bool Forward>
+    static void batch_step(const Interface& f, int index, Lanes& lanes, std::size_t n);
+    void trace_lanes(const Ray* rays, TraceResult* results, std::size_t n, int first, int last) const;
     template <bool Forward>
     TraceResult trace_impl(const Ray& ray, int first, int last, glm::dvec3* points) const;
 

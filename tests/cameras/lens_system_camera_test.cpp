@@ -10,6 +10,8 @@
 #include <fstream>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "cameras/perspective_camera.h"
 #include "core/parser.h"
 #include "optics/paraxial.h"
@@ -355,6 +357,45 @@ TEST(LensSystemCamera, WorldTransformIsApplied) {
   EXPECT_NEAR(r->ray.o.z, r0->ray.o.z + 3.f, 1e-6f);
   EXPECT_NEAR(glm::length(r->ray.d - r0->ray.d), 0.f, 1e-6f);
   EXPECT_NE(lens->to_string().find("navarro"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace eyetrace
+
+namespace eyetrace {
+namespace {
+
+// generate_rays (the batch path the integrator takes) must equal generate_ray sample by
+// sample, bit for bit, lost rays included, for every eye model and a batch size that is not a
+// multiple of the internal batch.
+TEST(LensSystemCamera, BatchGenerationEqualsSingle) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (const char* model : {"navarro", "gullstrand", "legrand", "kooijman", "arizona"}) {
+    auto cam = eye_camera(fmt::format("\"string model\" \"{}\" \"float pupildiameter\" 6 \"float fov\" 100", model));
+    std::vector<CameraSample> samples(203);
+    for (CameraSample& cs : samples) {
+      cs.p_film = Vec2(256.f * u(rng), 256.f * u(rng));
+      cs.p_lens = Vec2(u(rng), u(rng));
+      cs.time = u(rng);
+    }
+    std::vector<std::optional<CameraRay>> batch(samples.size());
+    cam->generate_rays(samples.data(), batch.data(), samples.size());
+    int lost = 0;
+    for (size_t i = 0; i < samples.size(); ++i) {
+      const std::optional<CameraRay> one = cam->generate_ray(samples[i]);
+      ASSERT_EQ(one.has_value(), batch[i].has_value()) << model << " sample " << i;
+      if (!one) {
+        ++lost;
+        continue;
+      }
+      EXPECT_EQ(one->ray.o, batch[i]->ray.o);
+      EXPECT_EQ(one->ray.d, batch[i]->ray.d);
+      EXPECT_EQ(one->ray.time, batch[i]->ray.time);
+      EXPECT_EQ(one->weight, batch[i]->weight);
+    }
+    EXPECT_LT(lost, int(samples.size()));
+  }
 }
 
 }  // namespace

@@ -80,6 +80,22 @@ TEST(Report, HasTheDocumentedKeys) {
     o.model = "navarro";
     o.variant = "wu2011";
     EXPECT_TRUE(optics_report(make_eye(o))["retina_radius_mm"].is_null());
+    // wu2011 is 1.24 D myopic (eye-models.md): far point -1 / refraction, about 0.8 m.
+    const nlohmann::json wu = optics_report(make_eye(o));
+    EXPECT_NEAR(wu["far_point_m"].get<double>(), -1.0 / wu["refraction_diopters"].get<double>(), 1e-5);
+    EXPECT_NEAR(wu["far_point_m"].get<double>(), 0.81, 0.02);
+}
+
+// The relaxed Navarro eye is emmetropic (refraction 0 within 0.005 D, its published value):
+// no far point, rather than the 98 km its rounded axial length implies.
+TEST(Report, EmmetropicEyeHasNoFarPoint) {
+    EyeOptions o;
+    o.model = "navarro";
+    const nlohmann::json r = optics_report(make_eye(o));
+    EXPECT_NEAR(r["refraction_diopters"].get<double>(), 0.0, 0.005);
+    EXPECT_TRUE(r["far_point_m"].is_null());
+    o.accommodation_D = 1.0;  // the accommodated eye has a near far point
+    EXPECT_FALSE(optics_report(make_eye(o))["far_point_m"].is_null());
 }
 
 TEST(SpotDiagram, RasterHasPointsAndScaleBar) {
