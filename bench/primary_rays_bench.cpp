@@ -67,6 +67,28 @@ void BM_SceneIntersectOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_SceneIntersectOnly)->Unit(benchmark::kMillisecond);
 
+// The shadow rays of the same frame alone (Embree occlusion queries towards the distant
+// light from each primary hit): with BM_SceneIntersectOnly, all of Embree's share of a frame.
+void BM_SceneOccludedOnly(benchmark::State& state) {
+  RenderSetup s = make_setup("direct");
+  std::vector<Ray> shadow;
+  const Vec3 to_light = glm::normalize(Vec3(0.f, 0.f, 1.f) - Vec3(0.3f, 0.2f, 0.f));
+  for (int y = 0; y < kRes; ++y)
+    for (int x = 0; x < kRes; ++x) {
+      CameraSample cs;
+      cs.p_film = Vec2(x + 0.5f, y + 0.5f);
+      SurfaceInteraction si;
+      if (s.scene->intersect(s.camera->generate_ray(cs)->ray, &si)) shadow.push_back(spawn_ray(si.p, si.n, to_light));
+    }
+  size_t blocked = 0;
+  for (auto _ : state)
+    for (const Ray& r : shadow) blocked += s.scene->occluded(r);
+  benchmark::DoNotOptimize(blocked);
+  state.SetItemsProcessed(state.iterations() * shadow.size());
+  state.counters["rays_per_frame"] = double(shadow.size());
+}
+BENCHMARK(BM_SceneOccludedOnly)->Unit(benchmark::kMillisecond);
+
 // The whole render of one frame with one sample per pixel: camera + closest hit + shading +
 // one shadow ray + film, single thread. Items are rays traced (primary and shadow).
 void BM_RenderFrame(benchmark::State& state) {

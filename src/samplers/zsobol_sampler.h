@@ -6,6 +6,7 @@
 // since a pixel's 2^k samples are an aligned block of indices, each 1D and 2D projection of them
 // is a (0,k,2)-net: every sample has its own elementary interval.
 #pragma once
+#include <array>
 #include <memory>
 
 #include "core/registry.h"
@@ -30,11 +31,20 @@ class ZSobolSampler : public Sampler {
   uint64_t sample_index() const;
 
  private:
+  // Permuted digits from..to (inclusive, base-4 digit positions, from >= to) of the index.
+  uint64_t permuted_digits(int from, int to, uint64_t dim_salt) const;
+
+  static constexpr int kCachedDimensions = 64;
   Randomization randomization_;
   uint64_t seed_;
   int log2_spp_ = 0, n_base4_digits_ = 0;
   uint64_t morton_index_ = 0;
   int dimension_ = 0;
+  // Per-pixel cache of the permuted pixel digits, by dimension (see sample_index()).
+  IVec2 cached_pixel_{-1};
+  uint32_t stamp_ = 1;
+  mutable std::array<uint32_t, kCachedDimensions> stamps_{};
+  mutable std::array<uint64_t, kCachedDimensions> pixel_digits_{};
 };
 
 // pbrt-v4 "zsobol": integer pixelsamples (16; rounded up to a power of two), integer seed,

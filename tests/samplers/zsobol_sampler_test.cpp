@@ -3,6 +3,8 @@
 // randomisation; its index shuffle is a bijection over the image; pbrt-v4's parameters.
 #include "samplers/zsobol_sampler.h"
 
+#include <random>
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -123,3 +125,28 @@ TEST(ZSobolSampler, RejectsBadParameters) {
 }
 
 }  // namespace
+
+namespace eyetrace {
+namespace {
+
+// The sampler caches per-pixel work; values must not depend on the order of queries. A sampler
+// that jumps between pixels, samples and dimensions (some past the cache) must return exactly
+// what a fresh sampler returns for each query.
+TEST(ZSobolSampler, ValuesIndependentOfQueryOrder) {
+  for (int spp : {1, 2, 8, 16, 32}) {
+    ZSobolSampler shared(spp, IVec2(37, 21), Randomization::FastOwen, 7);
+    std::mt19937 rng{uint32_t(spp)};
+    for (int q = 0; q < 2000; ++q) {
+      const IVec2 pixel(int(rng() % 37), int(rng() % 21));
+      const int index = int(rng() % uint32_t(spp)), dim = int(rng() % 80);
+      ZSobolSampler fresh(spp, IVec2(37, 21), Randomization::FastOwen, 7);
+      shared.start_pixel_sample(pixel, index, dim);
+      fresh.start_pixel_sample(pixel, index, dim);
+      ASSERT_EQ(shared.get_2d(), fresh.get_2d()) << spp << " " << q;
+      ASSERT_EQ(shared.get_1d(), fresh.get_1d()) << spp << " " << q;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace eyetrace
