@@ -178,7 +178,7 @@ def add_model_times(rows):
 
 
 COLOURS = {"independent": "tab:gray", "stratified": "tab:blue", "halton": "tab:green", "sobol": "tab:orange",
-           "zsobol": "tab:red"}
+           "zsobol": "tab:red", "zsobol-padded": "tab:purple"}
 STYLES = {"pinhole": "-", "thinlens": "--", "navarro": ":"}
 
 

@@ -116,7 +116,10 @@ std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ct
 }
 
 std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx) {
-  warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
+  // "volpath" is also pbrt-v4's default for a scene without an Integrator line (never parsed:
+  // line 0); only a scene that asks for it by name is told that it gets "path".
+  if (ctx.params.loc().line > 0)
+    warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
   read_common(ctx);
   return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 5), "path");
 }

@@ -19,8 +19,9 @@ constexpr uint8_t kPermutations[24][4] = {
 
 }  // namespace
 
-ZSobolSampler::ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed)
-    : randomization_(randomization), seed_(seed) {
+ZSobolSampler::ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed,
+                             LensDimensions lens)
+    : randomization_(randomization), seed_(seed), lens_(lens) {
   log2_spp_ = std::countr_zero(std::bit_ceil(uint32_t(std::max(samples_per_pixel, 1))));
   int res = int(std::bit_ceil(uint32_t(std::max({resolution.x, resolution.y, 1}))));
   n_base4_digits_ = std::countr_zero(uint32_t(res)) + (log2_spp_ + 1) / 2;
@@ -58,18 +59,20 @@ uint64_t ZSobolSampler::permuted_digits(int from, int to, uint64_t dim_salt) con
 // The digits above the sample bits depend on the pixel and the dimension only, and cost most of
 // the hashing (about 9 of 11 digits at 512 pixels, 16 spp): they are computed once per pixel and
 // dimension and kept until the pixel changes. The result is the same bits either way.
-uint64_t ZSobolSampler::sample_index() const {
+uint64_t ZSobolSampler::sample_index() const { return sample_index(dimension_); }
+
+uint64_t ZSobolSampler::sample_index(int dimension) const {
   const bool odd = log2_spp_ & 1;
   const int last_digit = odd ? 1 : 0;
   const int first_sample_digit = (log2_spp_ + (odd ? 1 : 0)) / 2 - 1;  // highest digit below the pixel bits
-  const uint64_t dim_salt = 0x55555555ull * uint64_t(uint32_t(dimension_));
+  const uint64_t dim_salt = 0x55555555ull * uint64_t(uint32_t(dimension));
   uint64_t pixel_part;
-  if (dimension_ >= 0 && dimension_ < kCachedDimensions) {
-    if (stamps_[size_t(dimension_)] != stamp_) {
-      pixel_digits_[size_t(dimension_)] = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
-      stamps_[size_t(dimension_)] = stamp_;
+  if (dimension >= 0 && dimension < kCachedDimensions) {
+    if (stamps_[size_t(dimension)] != stamp_) {
+      pixel_digits_[size_t(dimension)] = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
+      stamps_[size_t(dimension)] = stamp_;
     }
-    pixel_part = pixel_digits_[size_t(dimension_)];
+    pixel_part = pixel_digits_[size_t(dimension)];
   } else {
     pixel_part = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
   }
@@ -88,27 +91,38 @@ float ZSobolSampler::get_1d() {
   return randomized_sobol_sample(index, 0, randomization_, h);
 }
 
+// With joint lens dimensions, the lens sample (dimensions 2-3, drawn right after the film
+// position) takes Sobol' dimensions 2 and 3 of the film sample's own index instead of
+// dimensions 0 and 1 of a differently shuffled one: a pixel's samples are then a 4-D net over
+// film position and pupil together, which is what a defocused pixel integrates.
 Vec2 ZSobolSampler::get_2d() {
-  uint64_t index = sample_index();
+  const bool joint = lens_ == LensDimensions::Joint && dimension_ == kLensDimension;
+  uint64_t index = sample_index(joint ? 0 : dimension_);
   dimension_ += 2;
   uint64_t bits = mix_bits(uint64_t(uint32_t(dimension_)) ^ seed_);
-  return Vec2(randomized_sobol_sample(index, 0, randomization_, uint32_t(bits)),
-              randomized_sobol_sample(index, 1, randomization_, uint32_t(bits >> 32)));
+  const int first = joint ? 2 : 0;
+  return Vec2(randomized_sobol_sample(index, first, randomization_, uint32_t(bits)),
+              randomized_sobol_sample(index, first + 1, randomization_, uint32_t(bits >> 32)));
 }
 
 std::string ZSobolSampler::to_string() const {
-  return fmt::format("ZSobolSampler[pixelsamples={} seed={} randomization={}]", samples_per_pixel(), int64_t(seed_),
-                     randomization_name(randomization_));
+  return fmt::format("ZSobolSampler[pixelsamples={} seed={} randomization={} lensdimensions={}]", samples_per_pixel(),
+                     int64_t(seed_), randomization_name(randomization_),
+                     lens_ == LensDimensions::Joint ? "joint" : "padded");
 }
 
 std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx) {
   int spp = read_pixel_samples(ctx, 16);
   uint64_t seed = read_seed(ctx);
   Randomization r = read_randomization(ctx.params, Randomization::FastOwen, true);
+  const std::string lens = ctx.params.get_string("lensdimensions", "joint");
+  if (lens != "joint" && lens != "padded") ctx.params.fail("lensdimensions", "must be \"joint\" or \"padded\"");
   if (!std::has_single_bit(uint32_t(spp)))
     warn(ctx.params.loc(), fmt::format("zsobol sampler: {} samples per pixel rounded up to the power of two {}", spp,
                                        std::bit_ceil(uint32_t(spp))));
-  return std::make_unique<ZSobolSampler>(spp, ctx.resolution, r, seed);
+  return std::make_unique<ZSobolSampler>(spp, ctx.resolution, r, seed,
+                                         lens == "joint" ? ZSobolSampler::LensDimensions::Joint
+                                                         : ZSobolSampler::LensDimensions::Padded);
 }
 
 }  // namespace eyetrace

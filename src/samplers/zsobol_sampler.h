@@ -17,8 +17,14 @@ namespace eyetrace {
 
 class ZSobolSampler : public Sampler {
  public:
+  // Padded: every 2-D sample is Sobol' dimensions 0-1 of its own shuffled index (pbrt-v4).
+  // Joint: the lens sample shares the film sample's index (see get_2d()).
+  enum class LensDimensions { Joint, Padded };
+  // The film position and lens sample are dimensions 0-1 and 2-3 (integrator.cpp draws them so).
+  static constexpr int kLensDimension = 2;
   // samples_per_pixel must be a power of two (the factory rounds up).
-  ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed);
+  ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomization randomization, uint64_t seed,
+                LensDimensions lens = LensDimensions::Joint);
   int samples_per_pixel() const override { return 1 << log2_spp_; }
   void start_pixel_sample(IVec2 pixel, int sample_index, int dimension = 0) override;
   float get_1d() override;
@@ -27,8 +33,9 @@ class ZSobolSampler : public Sampler {
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<ZSobolSampler>(*this); }
   std::string to_string() const override;
 
-  // The Sobol' index of the current (pixel, sample) for the current dimension.
+  // The Sobol' index of the current (pixel, sample) for the current (or a given) dimension.
   uint64_t sample_index() const;
+  uint64_t sample_index(int dimension) const;
 
  private:
   // Permuted digits from..to (inclusive, base-4 digit positions, from >= to) of the index.
@@ -37,6 +44,7 @@ class ZSobolSampler : public Sampler {
   static constexpr int kCachedDimensions = 64;
   Randomization randomization_;
   uint64_t seed_;
+  LensDimensions lens_;
   int log2_spp_ = 0, n_base4_digits_ = 0;
   uint64_t morton_index_ = 0;
   int dimension_ = 0;
@@ -48,7 +56,8 @@ class ZSobolSampler : public Sampler {
 };
 
 // pbrt-v4 "zsobol": integer pixelsamples (16; rounded up to a power of two), integer seed,
-// string randomization ("fastowen"; also "none", "permutedigits", "owen").
+// string randomization ("fastowen"; also "none", "permutedigits", "owen"), and eyetrace's
+// string lensdimensions ("joint"; "padded" is pbrt-v4's behaviour).
 std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace
