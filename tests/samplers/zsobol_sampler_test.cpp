@@ -3,6 +3,7 @@
 // randomisation; its index shuffle is a bijection over the image; pbrt-v4's parameters.
 #include "samplers/zsobol_sampler.h"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -146,6 +147,40 @@ TEST(ZSobolSampler, ValuesIndependentOfQueryOrder) {
       ASSERT_EQ(shared.get_1d(), fresh.get_1d()) << spp << " " << q;
     }
   }
+}
+
+}  // namespace
+}  // namespace eyetrace
+
+namespace eyetrace {
+namespace {
+
+// A defocused edge couples film position and pupil: f = [x + u > 1] over (film x, lens u),
+// mean 1/2 in every pixel. Joint lens dimensions stratify (x, u) together and must integrate it
+// with clearly less error than pbrt-v4's padded dimensions. At 64 spp the measured RMS errors
+// over 1024 pixels are 0.016 (joint) and 0.039 (padded); the test asks for a ratio < 0.75. (At
+// 16 spp the two are alike for this edge: the gain appears from about 32 spp, as in the
+// convergence harness.)
+TEST(ZSobolSampler, JointLensDimensionsStratifyFilmAndPupilTogether) {
+  auto rms_error = [](ZSobolSampler::LensDimensions lens) {
+    const int spp = 64;
+    ZSobolSampler s(spp, IVec2(32, 32), Randomization::FastOwen, 3, lens);
+    double sum_sq = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x) {
+        double mean = 0;
+        for (int i = 0; i < spp; ++i) {
+          s.start_pixel_sample(IVec2(x, y), i);
+          const Vec2 film = s.get_pixel_2d(), lens_uv = s.get_2d();
+          mean += (film.x + lens_uv.x > 1.f) ? 1.0 / spp : 0.0;
+        }
+        sum_sq += (mean - 0.5) * (mean - 0.5);
+      }
+    return std::sqrt(sum_sq / 1024);
+  };
+  const double joint = rms_error(ZSobolSampler::LensDimensions::Joint);
+  const double padded = rms_error(ZSobolSampler::LensDimensions::Padded);
+  EXPECT_LT(joint, 0.75 * padded) << "joint " << joint << " padded " << padded;
 }
 
 }  // namespace
