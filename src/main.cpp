@@ -14,7 +14,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 has an exit code per kind of mistake (105, 106, ...); eyetrace documents one:
+    // 2 for any bad command line (0 for --help).
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     if (app.got_subcommand("render")) return render();

@@ -3,13 +3,17 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "core/parser.h"
 #include "core/progress.h"
+#include "core/render_state.h"
 #include "core/scene_builder.h"
 
 namespace eyetrace {
@@ -28,6 +32,9 @@ struct RenderArgs {
   bool quiet = false;
   std::string stats;
   double max_memory_gib = 0;
+  double checkpoint = -1;  // seconds between checkpoints; 0: after every pass; < 0: none
+  bool resume = false;
+  int pass_samples = 0;  // 0: adaptive
 };
 
 IVec2 parse_resolution(const std::string& s) {
@@ -61,6 +68,74 @@ void check_output_extension(const std::string& path) {
     throw_error(fmt::format("output \"{}\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", path));
 }
 
+// Everything besides the scene description that changes the image, for the state fingerprint.
+std::string image_options(const RenderArgs& a, const RenderSetup& setup) {
+  const Film& f = *setup.film;
+  return fmt::format("spp={} seed={} camera={} resolution={}x{} bounds={},{},{},{}\n{}", setup.sampler->samples_per_pixel(),
+                     a.seed, a.camera, f.resolution().x, f.resolution().y, f.bounds().lo.x, f.bounds().lo.y,
+                     f.bounds().hi.x, f.bounds().hi.y, setup.description);
+}
+
+// Loads `path` into the film and tiles, refusing a state made for another render.
+void resume_from(const std::string& path, uint64_t fingerprint, RenderSetup& setup, TileProgress& tiles) {
+  RenderState s = read_render_state(path);
+  const Film& f = *setup.film;
+  int spp = setup.sampler->samples_per_pixel();
+  if (s.samples_per_pixel != spp)
+    throw_error(fmt::format("--resume: render state \"{}\" is for {} samples per pixel, this render asks for {} "
+                            "(resume with the same --spp, or render without --resume)", path, s.samples_per_pixel, spp));
+  if (s.resolution != f.resolution() || s.bounds.lo != f.bounds().lo || s.bounds.hi != f.bounds().hi)
+    throw_error(fmt::format("--resume: render state \"{}\" is for a {}x{} image (or another crop), this render is {}x{}",
+                            path, s.resolution.x, s.resolution.y, f.resolution().x, f.resolution().y));
+  if (s.fingerprint != fingerprint)
+    throw_error(fmt::format("--resume: render state \"{}\" was made for another scene or other options (the scene "
+                            "file, an included file, --seed or --camera differ); render without --resume to start over",
+                            path));
+  setup.film->restore(s.accumulators, s.nonfinite_samples);
+  tiles = std::move(s.tiles);
+}
+
+struct Snapshot {
+  bool interrupted = false;
+  bool final = false;
+};
+
+// Writes the image as it stands and, unless it is final, the state to resume it from.
+void save(const std::string& output, const RenderArgs& a, const RenderSetup& setup, const TileProgress& tiles,
+          uint64_t fingerprint, Snapshot kind) {
+  int spp = setup.sampler->samples_per_pixel();
+  std::map<std::string, std::string> meta = {{"eyetrace:samples_per_pixel", std::to_string(tiles.min_done())},
+                                             {"eyetrace:samples_requested", std::to_string(spp)},
+                                             {"eyetrace:interrupted", kind.interrupted ? "1" : "0"},
+                                             {"eyetrace:scene", a.scene},
+                                             {"eyetrace:camera", setup.camera->to_string()}};
+  // A render stopped mid-pass has tiles one pass ahead: each pixel is still a proper mean.
+  if (tiles.max_done() != tiles.min_done()) meta["eyetrace:samples_per_pixel_max"] = std::to_string(tiles.max_done());
+  if (!kind.final) {
+    RenderState s;
+    s.fingerprint = fingerprint;
+    s.resolution = setup.film->resolution();
+    s.bounds = setup.film->bounds();
+    s.samples_per_pixel = spp;
+    s.tiles = tiles;
+    s.accumulators = setup.film->accumulators();
+    s.nonfinite_samples = setup.film->nonfinite_samples();
+    write_render_state(state_path(output), s);
+  }
+  // The image after the state: a checkpoint image always has its state next to it.
+  write_image(output, setup.film->image(), meta);
+}
+
+void write_stats(const RenderArgs& a, const nlohmann::json& j) {
+  std::string tmp = a.stats + ".tmp";
+  {
+    std::ofstream f(tmp);
+    f << j.dump(2) << "\n";
+    if (!f) throw_error(fmt::format("--stats \"{}\": cannot write", a.stats));
+  }
+  std::filesystem::rename(tmp, a.stats);
+}
+
 int run_render(const RenderArgs& a) {
   set_warnings_enabled(!a.quiet);
   SceneDescription desc = parse_scene_file(a.scene);
@@ -76,74 +151,135 @@ int run_render(const RenderArgs& a) {
   RenderSetup setup = build_render_setup(desc, o);
   std::string output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(output);
+  const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup));
+  const int spp = setup.sampler->samples_per_pixel();
+  TileProgress tiles = TileProgress::start(setup.film->bounds());
+  if (a.resume) resume_from(state_path(output), fingerprint, setup, tiles);
+  const int resumed_at = tiles.min_done();
+  const double total = double(setup.film->bounds().area()) * spp;
+  progress.resume_at(tiles.samples(setup.film->bounds()) / total);
   double setup_seconds = progress.elapsed_seconds();
 
+  InterruptGuard interrupt;
   RenderCounters counters;
   RenderOptions ro;
   ro.threads = a.threads;
   ro.on_progress = [&](double f, uint64_t rays) { progress.update(f, rays); };
+  ro.tiles = &tiles;
+  ro.stop = &interrupt.stop_requested();
+  ro.pass_samples = a.pass_samples;
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  if (a.checkpoint >= 0)
+    ro.on_pass = [&](const TileProgress& t) {
+      auto now = std::chrono::steady_clock::now();
+      if (t.min_done() >= spp || std::chrono::duration<double>(now - last_checkpoint).count() < a.checkpoint) return;
+      save(output, a, setup, t, fingerprint, Snapshot{});
+      last_checkpoint = std::chrono::steady_clock::now();
+    };
   setup.integrator->render(*setup.camera, *setup.sampler, *setup.film, ro, counters);
   progress.finish();
   double seconds = progress.elapsed_seconds();
   double render_seconds = seconds - setup_seconds;
 
-  int spp = setup.sampler->samples_per_pixel();
-  write_image(output, setup.film->image(),
-              {{"eyetrace:samples_per_pixel", std::to_string(spp)},
-               {"eyetrace:scene", a.scene},
-               {"eyetrace:camera", setup.camera->to_string()}});
-  uint64_t rays = counters.rays_traced, cam = counters.camera_rays, lost = counters.camera_rays_lost;
-  if (!a.quiet)
-    fmt::print("{}: {:.2f} s ({:.2f} s render), {} spp, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
-               seconds, render_seconds, spp, cam, cam ? 100.0 * lost / cam : 0.0,
-               render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
-               counters.nonfinite_samples ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load()) : "");
-  if (!a.stats.empty()) {
-    nlohmann::json j = {{"scene", a.scene},
-                        {"output", output},
-                        {"seconds", seconds},
-                        {"setup_seconds", setup_seconds},
-                        {"render_seconds", render_seconds},
-                        {"samples_per_pixel", spp},
-                        {"samples", counters.samples.load()},
-                        {"camera_rays", cam},
-                        {"camera_rays_lost", lost},
-                        {"useful_camera_ray_fraction", cam ? double(cam - lost) / cam : 0.0},
-                        {"rays_traced", rays},
-                        {"rays_per_second", render_seconds > 0 ? rays / render_seconds : 0.0},
-                        {"nonfinite_samples", counters.nonfinite_samples.load()},
-                        {"threads", a.threads},
-                        {"resolution", {setup.film->resolution().x, setup.film->resolution().y}},
-                        {"camera", setup.camera->to_string()},
-                        {"warnings", warning_count()}};
-    std::string tmp = a.stats + ".tmp";
-    {
-      std::ofstream f(tmp);
-      f << j.dump(2) << "\n";
-      if (!f) throw_error(fmt::format("--stats \"{}\": cannot write", a.stats));
-    }
-    std::filesystem::rename(tmp, a.stats);
+  const bool complete = tiles.min_done() >= spp;
+  if (complete) {
+    save(output, a, setup, tiles, fingerprint, Snapshot{false, true});
+    std::error_code ec;
+    std::filesystem::remove(state_path(output), ec);  // finished: nothing left to resume
+  } else if (tiles.max_done() > 0) {
+    save(output, a, setup, tiles, fingerprint, Snapshot{true, false});
+    fmt::print(stderr, "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
+               output, tiles.min_done(), spp,
+               tiles.max_done() != tiles.min_done() ? fmt::format(" (up to {} in some tiles)", tiles.max_done()) : "",
+               state_path(output));
+  } else {
+    fmt::print(stderr, "eyetrace: interrupted before any sample was finished: nothing written\n");
   }
-  return 0;
+  uint64_t rays = counters.rays_traced, cam = counters.camera_rays, lost = counters.camera_rays_lost;
+  if (!a.quiet && complete)
+    fmt::print("{}: {:.2f} s ({:.2f} s render{}), {} spp, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
+               seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "", spp, cam,
+               cam ? 100.0 * lost / cam : 0.0, render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
+               counters.nonfinite_samples ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load()) : "");
+  if (!a.stats.empty())
+    write_stats(a, {{"scene", a.scene},
+                    {"output", output},
+                    {"seconds", seconds},
+                    {"setup_seconds", setup_seconds},
+                    {"render_seconds", render_seconds},
+                    {"samples_per_pixel", spp},
+                    {"samples_per_pixel_completed", tiles.min_done()},
+                    {"resumed_at_samples_per_pixel", resumed_at},
+                    {"interrupted", !complete},
+                    {"samples", counters.samples.load()},
+                    {"camera_rays", cam},
+                    {"camera_rays_lost", lost},
+                    {"useful_camera_ray_fraction", cam ? double(cam - lost) / cam : 0.0},
+                    {"rays_traced", rays},
+                    {"rays_per_second", render_seconds > 0 ? rays / render_seconds : 0.0},
+                    {"nonfinite_samples", counters.nonfinite_samples.load()},
+                    {"threads", a.threads},
+                    {"resolution", {setup.film->resolution().x, setup.film->resolution().y}},
+                    {"camera", setup.camera->to_string()},
+                    {"warnings", warning_count()}});
+  return complete ? 0 : 128 + interrupt.signal_number();
 }
+
+// CLI11 validators, so that a malformed value is a command-line error (exit status 2). CLI11
+// puts the option's name in front of the message, so it is taken off ours.
+CLI::Validator validator(std::function<void(const std::string&)> check, const std::string& option, const std::string& what) {
+  return CLI::Validator(
+      [check, option](std::string& value) -> std::string {
+        try {
+          check(value);
+        } catch (const SceneError& e) {
+          std::string m = e.what();
+          for (const std::string& prefix : {std::string("error: "), option + " "})
+            if (m.rfind(prefix, 0) == 0) m = m.substr(prefix.size());
+          return m;
+        }
+        return "";
+      },
+      what);
+}
+
+const char* kRenderFooter = R"(Interrupting: the first SIGINT (Ctrl-C) or SIGTERM stops the render after the tiles in
+flight, writes the image so far (EXR metadata eyetrace:interrupted = 1 and
+eyetrace:samples_per_pixel = the samples completed) and OUTPUT.state, and exits with 130
+(SIGINT) or 143 (SIGTERM); a second signal exits at once. --resume continues from
+OUTPUT.state to the same image an uninterrupted render gives, bit for bit.
+
+Exit status: 0 done; 1 error in the scene, a file or a value read as scene text (--camera);
+2 bad command line (unknown option, value out of range); 130 / 143 interrupted.)";
 
 }  // namespace
 
 CommandRunner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* c = app.add_subcommand("render", "Render a pbrt-v4 scene file");
+  c->footer(kRenderFooter);
   c->add_option("scene", args->scene, "Scene file (pbrt-v4 text format)")->required();
-  c->add_option("-o,--output", args->output, "Output image: .exr (linear float) or .png (sRGB 8-bit); default: the Film's filename");
+  c->add_option("-o,--output", args->output, "Output image: .exr (linear float) or .png (sRGB 8-bit); default: the Film's filename")
+      ->check(validator(check_output_extension, "--output", "PATH"));
   c->add_option("--spp", args->spp, "Samples per pixel (overrides the Sampler's pixelsamples)")->check(CLI::Range(1, 1 << 24));
-  c->add_option("--resolution", args->resolution, "Image size WxH (overrides the Film's xresolution/yresolution)");
+  c->add_option("--resolution", args->resolution, "Image size WxH (overrides the Film's xresolution/yresolution)")
+      ->check(validator(parse_resolution, "--resolution", "WxH"));
   c->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   c->add_option("--seed", args->seed, "Sampler seed; the same seed gives the same image for any thread count")->check(CLI::NonNegativeNumber);
-  c->add_option("--crop", args->crop, "Render only x0,x1,y0,y1 (fractions of the image, as pbrt's cropwindow)");
+  c->add_option("--crop", args->crop, "Render only x0,x1,y0,y1 (fractions of the image, as pbrt's cropwindow)")
+      ->check(validator(parse_crop, "--crop", "X0,X1,Y0,Y1"));
   c->add_option("--camera", args->camera,
                 "Replace the scene's camera with a Camera directive, e.g. 'Camera \"navarro\" \"float accommodation\" 2'");
   c->add_flag("-q,--quiet", args->quiet, "No progress line, summary or warnings");
   c->add_option("--stats", args->stats, "Write render statistics as JSON to this file");
   c->add_option("--max-memory", args->max_memory_gib, "Refuse renders predicted to need more GiB (default: 3/4 of RAM)");
+  c->add_option("--checkpoint", args->checkpoint,
+                "Every SECONDS (0: after every pass), write the image so far to the output and its resumable state to OUTPUT.state")
+      ->check(CLI::Range(0.0, 1e9));
+  c->add_flag("--resume", args->resume, "Continue the render saved in OUTPUT.state (same scene and options)");
+  c->add_option("--pass-samples", args->pass_samples,
+                "Samples per pixel per pass (default: passes of about a second); the image does not depend on it")
+      ->check(CLI::Range(1, 1 << 24));
   return [args] { return run_render(*args); };
 }
 

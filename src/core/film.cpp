@@ -1,5 +1,7 @@
 #include "core/film.h"
 
+#include <stdexcept>
+
 namespace eyetrace {
 
 PixelBounds crop_to_pixels(IVec2 res, Vec4 crop) {
@@ -33,6 +35,22 @@ Image Film::image() const {
       for (int c = 0; c < 3; ++c) img.at(x, y, c) = std::isfinite(v[c]) ? v[c] : 0.f;
     }
   return img;
+}
+
+std::vector<double> Film::accumulators() const {
+  std::vector<double> acc;
+  acc.reserve(pixels_.size() * 4);
+  for (const Pixel& p : pixels_) acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight});
+  return acc;
+}
+
+void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
+  if (acc.size() != pixels_.size() * 4) throw std::invalid_argument("Film::restore: wrong number of accumulators");
+  for (size_t i = 0; i < pixels_.size(); ++i) {
+    const double* a = &acc[4 * i];
+    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3]};
+  }
+  nonfinite_ = nonfinite_samples;
 }
 
 }  // namespace eyetrace

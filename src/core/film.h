@@ -48,6 +48,13 @@ class Film {
   Image image() const;  // the crop region, top row first
   uint64_t nonfinite_samples() const { return nonfinite_; }
 
+  // The exact accumulators, 4 doubles per pixel (weighted r, g, b sums and the weight sum),
+  // row-major over bounds(): a checkpoint stores them, and a film restored from them
+  // continues bit for bit as if it had never stopped.
+  std::vector<double> accumulators() const;
+  // Throws std::invalid_argument unless `acc` holds 4 values per pixel.
+  void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
+
  private:
   struct Pixel {
     double sum[3] = {0, 0, 0};

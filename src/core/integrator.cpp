@@ -4,16 +4,16 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <stdexcept>
 
 #include "core/film.h"
 
 namespace eyetrace {
 
 namespace {
-
-constexpr int kTileSize = 16;
 
 struct ThreadState {
   std::unique_ptr<Sampler> sampler;
@@ -44,52 +44,80 @@ void render_sample(const Integrator& integrator, const Camera& camera, Film& fil
   ts.arena.reset();
 }
 
+// The next pass size: about `target` seconds at the speed of the last pass, at least one
+// sample, and at most double the last pass so one slow start cannot make a huge pass.
+int next_pass_samples(int last, double last_seconds, double target) {
+  if (!(last_seconds > 0)) return 2 * last;
+  double n = target * last / last_seconds;
+  return int(std::clamp(n, 1.0, 2.0 * last));
+}
+
 }  // namespace
 
 void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts,
                         RenderCounters& counters) const {
   const PixelBounds& b = film.bounds();
   const int spp = sampler.samples_per_pixel();
-  const IVec2 ntiles((b.width() + kTileSize - 1) / kTileSize, (b.height() + kTileSize - 1) / kTileSize);
-  const size_t tile_count = size_t(ntiles.x) * ntiles.y;
+  TileProgress own;
+  TileProgress& tp = opts.tiles ? *opts.tiles : own;
+  if (tp.done.empty()) tp = TileProgress::start(b);
+  if (!tp.matches(b)) throw std::invalid_argument("Integrator::render: tile progress does not match the film");
   tbb::enumerable_thread_specific<ThreadState> states([&] { return ThreadState{sampler.clone(), ScratchBuffer()}; });
-  std::atomic<size_t> tiles_done{0};
+  const double total = double(b.area()) * spp;
+  std::atomic<uint64_t> samples_done{tp.samples(b)};
   std::mutex progress_mutex;
   auto last_report = std::chrono::steady_clock::now();
+  auto stopped = [&] { return opts.stop && opts.stop->load(std::memory_order_relaxed); };
+  auto report = [&](bool force) {
+    if (!opts.on_progress) return;
+    if (force) progress_mutex.lock();
+    else if (!progress_mutex.try_lock()) return;
+    auto now = std::chrono::steady_clock::now();
+    if (force || now - last_report > std::chrono::milliseconds(250)) {
+      last_report = now;
+      opts.on_progress(total > 0 ? double(samples_done.load()) / total : 1.0, counters.rays_traced.load());
+    }
+    progress_mutex.unlock();
+  };
 
-  auto render_tile = [&](size_t t) {
+  // Tile t gets samples [tp.done[t], end) of each pixel; only this thread touches tile t.
+  auto render_tile = [&](size_t t, int end) {
+    if (tp.done[t] >= end || stopped()) return;
     ThreadState& ts = states.local();
-    IVec2 lo = b.lo + IVec2(int(t % ntiles.x), int(t / ntiles.x)) * kTileSize;
-    IVec2 hi = glm::min(lo + IVec2(kTileSize), b.hi);
+    PixelBounds tb = tp.tile_bounds(t, b);
     RayTally tally;
     uint64_t lost = 0;
-    for (int y = lo.y; y < hi.y; ++y)
-      for (int x = lo.x; x < hi.x; ++x)
-        for (int i = 0; i < spp; ++i) render_sample(*this, camera, film, IVec2(x, y), i, ts, tally, &lost);
-    uint64_t n = uint64_t(hi.x - lo.x) * uint64_t(hi.y - lo.y) * spp;
+    for (int y = tb.lo.y; y < tb.hi.y; ++y)
+      for (int x = tb.lo.x; x < tb.hi.x; ++x)
+        for (int i = tp.done[t]; i < end; ++i) render_sample(*this, camera, film, IVec2(x, y), i, ts, tally, &lost);
+    uint64_t n = tb.area() * uint64_t(end - tp.done[t]);
+    tp.done[t] = end;
     counters.samples += n;
     counters.camera_rays += n;
     counters.camera_rays_lost += lost;
     counters.rays_traced += tally.rays;
-    size_t done = ++tiles_done;
-    if (opts.on_progress && progress_mutex.try_lock()) {
-      auto now = std::chrono::steady_clock::now();
-      if (now - last_report > std::chrono::milliseconds(250) || done == tile_count) {
-        last_report = now;
-        opts.on_progress(double(done) / tile_count, counters.rays_traced.load());
-      }
-      progress_mutex.unlock();
-    }
+    samples_done += n;
+    report(false);
   };
 
   int threads = opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, tile_count, 1), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t t = r.begin(); t != r.end(); ++t) render_tile(t);
+  int pass = opts.pass_samples > 0 ? opts.pass_samples : 1;
+  while (tp.min_done() < spp && !stopped()) {
+    // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
+    const int first = tp.min_done(), end = std::min(spp, first + pass);
+    auto t0 = std::chrono::steady_clock::now();
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, tp.done.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t t = r.begin(); t != r.end(); ++t) render_tile(t, end);
+      });
     });
-  });
-  if (opts.on_progress) opts.on_progress(1.0, counters.rays_traced.load());
+    if (stopped()) break;
+    if (opts.on_pass) opts.on_pass(tp);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (opts.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts.pass_seconds);
+  }
+  report(true);
   counters.nonfinite_samples = film.nonfinite_samples();
 }
 

@@ -1,5 +1,7 @@
 // Integrator interface: the base class owns the parallel tile loop (render()), each
-// integrator supplies radiance() for one camera ray.
+// integrator supplies radiance() for one camera ray. render() works in passes of
+// sample-index ranges so that it can stop between tiles, report each finished pass (for
+// checkpoints), and resume from a saved film with the same result as an uninterrupted run.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include "core/camera.h"
 #include "core/ray.h"
 #include "core/sampler.h"
+#include "core/tile_progress.h"
 
 namespace eyetrace {
 
@@ -34,6 +37,20 @@ struct RenderOptions {
   bool progress = true;
   // Called from the render loop with the fraction done; may print a progress line.
   std::function<void(double fraction, uint64_t rays)> on_progress;
+
+  // In: the samples the film already holds (resuming a checkpoint); empty means none.
+  // Out: where the render stopped. Null: the render keeps its own.
+  TileProgress* tiles = nullptr;
+  // Checked before each tile: once true, tiles not yet started in the pass are skipped and
+  // render() returns (tiles in flight finish their pass range, so every tile stays whole).
+  const std::atomic<bool>* stop = nullptr;
+  // Samples per pixel in each pass; 0 picks pass sizes so that a pass takes about
+  // pass_seconds (1, 2, 4, ... samples, at most doubling). The image does not depend on it.
+  int pass_samples = 0;
+  double pass_seconds = 1.0;
+  // Called after every complete pass, on the calling thread, with no tile in flight: the
+  // film and `tiles` are consistent, so this is where a checkpoint can be written.
+  std::function<void(const TileProgress&)> on_pass;
 };
 
 class Integrator {

@@ -17,7 +17,8 @@ double ProgressLine::elapsed_seconds() const {
 void ProgressLine::update(double fraction, uint64_t rays) {
   if (!active_) return;
   double t = elapsed_seconds();
-  double left = fraction > 0 ? t * (1 - fraction) / fraction : 0;
+  double run = fraction - start_fraction_;
+  double left = run > 0 ? t * (1 - fraction) / run : 0;
   const int width = 30;
   int filled = int(fraction * width);
   std::string bar(filled, '=');

@@ -72,9 +72,11 @@ class Builder {
       LightContext ctx{l.params, l.world_from_object, desc_.search_dir};
       auto light = find_plugin(reg_.lights, "light", l.name, l.loc)(ctx);
       l.params.check_unused("LightSource \"" + l.name + "\"");
+      light_sources_.emplace_back(light.get(), &l);
       setup_.scene->add_light(std::move(light));
     }
     setup_.scene->commit();
+    check_light_power();
   }
 
  private:
@@ -134,6 +136,7 @@ class Builder {
           auto light = find_plugin(reg_.area_lights, "area light", a.name, a.loc)(actx);
           a.params.check_unused("AreaLightSource \"" + a.name + "\"");
           prim.area_light = light.get();
+          light_sources_.emplace_back(light.get(), &a);
           setup_.scene->add_light(std::move(light));
         }
       }
@@ -153,10 +156,28 @@ class Builder {
     setup_.scene->define_instance(def.name, std::move(prims));
   }
 
+  // A light whose power overflows float would never be chosen by the light sampler, and its
+  // radiance would turn every sample it lights into a discarded one: refuse it instead.
+  // Runs after commit(): distant and infinite lights know their power once the scene's size is.
+  void check_light_power() const {
+    for (const auto& [light, e] : light_sources_) {
+      if (std::isfinite(light->power())) continue;
+      std::string culprit = "scale";
+      for (const char* name : {"scale", "power", "illuminance", "L", "I", "filename"})
+        if (e->params.has(name)) {
+          culprit = name;
+          break;
+        }
+      e->params.fail(culprit, "the light's power overflows the float range (its emission times \"scale\" times its "
+                              "size, or the scene's for a distant or infinite light, is above 3.4e38)");
+    }
+  }
+
   const SceneDescription& desc_;
   RenderSetup& setup_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
+  std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
 };
 
 std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOverrides& o, IVec2 resolution) {

@@ -22,6 +22,27 @@ bool is_finite(const Mat4& m) {
   return true;
 }
 
+// Largest |entry| of columns [c0, c1) in the affine rows of m.
+float max_entry(const Mat4& m, int c0, int c1) {
+  float v = 0.f;
+  for (int c = c0; c < c1; ++c)
+    for (int r = 0; r < 3; ++r) v = std::max(v, std::abs(m[c][r]));
+  return v;
+}
+
+// The renderer squares lengths in float (3.4e38): a transform that stretches (or, through
+// its inverse, shrinks) lengths beyond 1e18 makes distances and normals overflow later, far
+// from the directive that caused it. Returns why, or "" when the transform is usable.
+std::string overflow_reason(const Transform& t) {
+  constexpr float kLimit = 1e18f;
+  float stretch = max_entry(t.matrix(), 0, 3), shrink = max_entry(t.inverse_matrix(), 0, 3);
+  float shift = max_entry(t.matrix(), 3, 4);
+  if (stretch > kLimit) return fmt::format("overflow: it scales lengths by up to {:g}", stretch);
+  if (shrink > kLimit) return fmt::format("degenerate: it scales lengths by as little as {:g}", 1.f / shrink);
+  if (shift > kLimit) return fmt::format("overflow: it moves the origin {:g} away", shift);
+  return "";
+}
+
 }  // namespace
 
 const std::map<std::string, SceneParser::Handler, std::less<>>& SceneParser::handlers() {
@@ -106,6 +127,10 @@ void SceneParser::apply(const SourceLoc& loc, const char* directive, const Trans
     Transform r = replace ? t : state_.ctm[i] * t;
     if (!is_finite(r.matrix()) || !is_finite(r.inverse_matrix()) || glm::determinant(glm::dmat4(r.matrix())) == 0.0)
       fail(loc, "{} makes the current transform singular or non-finite", directive);
+    std::string why = overflow_reason(r);
+    if (!why.empty())
+      fail(loc, "{} makes the current transform {} (lengths between 1e-18 and 1e18 keep their squares in "
+                "single precision)", directive, why);
     state_.ctm[i] = r;
   }
 }

@@ -4,7 +4,20 @@
 
 namespace eyetrace {
 
+namespace {
+
+// pbrt-v4 takes roughness >= 0; a negative constant is a mistake in the scene, not a surface
+// (textures may still dip below 0 and count as 0 at the hit).
+void check_not_negative(const ParameterList& params, const char* name) {
+  const Param* p = params.find(name);
+  if (p && p->canonical_type() == "float" && !p->numbers.empty() && p->numbers[0] < 0)
+    params.fail(name, fmt::format("roughness {} must not be negative", p->numbers[0]));
+}
+
+}  // namespace
+
 RoughnessParams RoughnessParams::read(const MaterialContext& ctx) {
+  for (const char* name : {"roughness", "uroughness", "vroughness"}) check_not_negative(ctx.params, name);
   RoughnessParams r;
   r.u = ctx.textures.float_param_or_null(ctx.params, "uroughness");
   r.v = ctx.textures.float_param_or_null(ctx.params, "vroughness");
