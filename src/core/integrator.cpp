@@ -20,10 +20,22 @@ struct ThreadState {
   ScratchBuffer arena;
 };
 
-// One camera sample: the film position is drawn first so that samplers can stratify it.
-void render_sample(const Integrator& integrator, const Camera& camera, Film& film, IVec2 pixel,
-                   int index, ThreadState& ts, RayTally& tally, uint64_t* lost) {
-  Sampler& sampler = *ts.sampler;
+// The sampler dimensions a camera sample takes: pixel 2-D, lens 2-D, time, wavelength.
+// The integrator restarts the sample's stream here after generating the camera rays.
+constexpr int kCameraDimensions = 6;
+// Camera rays generated together: lens cameras trace a batch at once (Camera::generate_rays),
+// which hides the latency of their dependent surface-by-surface arithmetic.
+constexpr int kCameraBatch = 16;
+
+struct PendingSample {
+  IVec2 pixel;
+  int index;
+  CameraSample cs;
+};
+
+// The camera dimensions of one sample: the film position is drawn first so that samplers can
+// stratify it.
+CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index) {
   sampler.start_pixel_sample(pixel, index);
   FilterSample fs = film.filter().sample(sampler.get_pixel_2d());
   CameraSample cs;
@@ -32,17 +44,57 @@ void render_sample(const Integrator& integrator, const Camera& camera, Film& fil
   cs.time = sampler.get_1d();
   cs.wavelength_u = sampler.get_1d();
   cs.filter_weight = fs.weight;
-  std::optional<CameraRay> cr = camera.generate_ray(cs);
-  if (!cr) {
-    // A lost camera ray is a zero-radiance sample: the pixel averages it in (vignetting).
-    ++*lost;
-    film.add_sample(pixel, RGB(0.f), fs.weight);
-    return;
-  }
-  RGB L = integrator.radiance(cr->ray, sampler, ts.arena, tally) * cr->weight;
-  film.add_sample(pixel, L, fs.weight);
-  ts.arena.reset();
+  return cs;
 }
+
+// Collects camera samples in the order the tile loop makes them and, per batch, generates
+// their rays together and integrates each in the same order: the image is bit for bit the
+// one of a sample-at-a-time loop, since every sample's stream restarts at its own
+// (pixel, index, dimension) and each pixel still receives its samples in index order.
+class SampleBatch {
+ public:
+  SampleBatch(const Integrator& integrator, const Camera& camera, Film& film, ThreadState& ts, RayTally& tally,
+              uint64_t& lost)
+      : integrator_(integrator), camera_(camera), film_(film), ts_(ts), tally_(tally), lost_(lost) {}
+  ~SampleBatch() { flush(); }
+
+  void add(IVec2 pixel, int index) {
+    pending_[count_] = {pixel, index, draw_camera_sample(film_, *ts_.sampler, pixel, index)};
+    if (++count_ == kCameraBatch) flush();
+  }
+
+  void flush() {
+    CameraSample cs[kCameraBatch];
+    for (int i = 0; i < count_; ++i) cs[i] = pending_[i].cs;
+    camera_.generate_rays(cs, rays_, size_t(count_));
+    for (int i = 0; i < count_; ++i) integrate(pending_[i], rays_[i]);
+    count_ = 0;
+  }
+
+ private:
+  void integrate(const PendingSample& s, const std::optional<CameraRay>& cr) {
+    if (!cr) {
+      // A lost camera ray is a zero-radiance sample: the pixel averages it in (vignetting).
+      ++lost_;
+      film_.add_sample(s.pixel, RGB(0.f), s.cs.filter_weight);
+      return;
+    }
+    ts_.sampler->start_pixel_sample(s.pixel, s.index, kCameraDimensions);
+    RGB L = integrator_.radiance(cr->ray, *ts_.sampler, ts_.arena, tally_) * cr->weight;
+    film_.add_sample(s.pixel, L, s.cs.filter_weight);
+    ts_.arena.reset();
+  }
+
+  const Integrator& integrator_;
+  const Camera& camera_;
+  Film& film_;
+  ThreadState& ts_;
+  RayTally& tally_;
+  uint64_t& lost_;
+  PendingSample pending_[kCameraBatch];
+  std::optional<CameraRay> rays_[kCameraBatch];
+  int count_ = 0;
+};
 
 // The next pass size: about `target` seconds at the speed of the last pass, at least one
 // sample, and at most double the last pass so one slow start cannot make a huge pass.
@@ -87,9 +139,12 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
     PixelBounds tb = tp.tile_bounds(t, b);
     RayTally tally;
     uint64_t lost = 0;
-    for (int y = tb.lo.y; y < tb.hi.y; ++y)
-      for (int x = tb.lo.x; x < tb.hi.x; ++x)
-        for (int i = tp.done[t]; i < end; ++i) render_sample(*this, camera, film, IVec2(x, y), i, ts, tally, &lost);
+    {
+      SampleBatch batch(*this, camera, film, ts, tally, lost);
+      for (int y = tb.lo.y; y < tb.hi.y; ++y)
+        for (int x = tb.lo.x; x < tb.hi.x; ++x)
+          for (int i = tp.done[t]; i < end; ++i) batch.add(IVec2(x, y), i);
+    }
     uint64_t n = tb.area() * uint64_t(end - tp.done[t]);
     tp.done[t] = end;
     counters.samples += n;

@@ -173,6 +173,38 @@ TEST_P(SamplerProperties, StartingAtADimensionSkipsTheDimensionsBefore) {
   }
 }
 
+TEST_P(SamplerProperties, RestartAfterTheCameraDimensionsContinuesTheStream) {
+  // The integrator draws a sample's six camera dimensions (film 2-D, lens 2-D, time,
+  // wavelength), generates camera rays in batches, then restarts the sample at dimension 6
+  // for the path: the path must see the values an uninterrupted stream would give.
+  auto camera_dims = [](Sampler& s, IVec2 p, int i) {
+    s.start_pixel_sample(p, i);
+    s.get_pixel_2d();
+    s.get_2d();
+    s.get_1d();
+    s.get_1d();
+  };
+  auto path_dims = [](Sampler& s) {
+    std::vector<float> v;
+    for (int k = 0; k < 6; ++k) {
+      v.push_back(s.get_1d());
+      Vec2 u = s.get_2d();
+      v.insert(v.end(), {u.x, u.y});
+    }
+    return v;
+  };
+  auto a = make(GetParam());
+  auto b = make(GetParam());
+  for (IVec2 p : {IVec2(0, 0), IVec2(5, 3)})
+    for (int i : {0, 1, 7}) {
+      camera_dims(*a, p, i);
+      camera_dims(*b, p, i);
+      camera_dims(*b, IVec2(2, 6), 3);  // another sample's camera dimensions in between
+      b->start_pixel_sample(p, i, 6);
+      EXPECT_EQ(path_dims(*a), path_dims(*b)) << "pixel " << p.x << "," << p.y << " sample " << i;
+    }
+}
+
 TEST_P(SamplerProperties, CloneContinuesTheSameStream) {
   auto s = make(GetParam());
   s->start_pixel_sample(IVec2(1, 2), 3);
