@@ -216,6 +216,8 @@ int run_render(const RenderArgs& a) {
                     {"camera_rays_lost", lost},
                     {"useful_camera_ray_fraction", cam ? double(cam - lost) / cam : 0.0},
                     {"rays_traced", rays},
+                    {"shadow_rays", counters.shadow_rays.load()},
+                    {"shadow_rays_skipped", counters.shadow_rays_skipped.load()},
                     {"rays_per_second", render_seconds > 0 ? rays / render_seconds : 0.0},
                     {"nonfinite_samples", counters.nonfinite_samples.load()},
                     {"threads", a.threads},

@@ -151,6 +151,8 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
     counters.camera_rays += n;
     counters.camera_rays_lost += lost;
     counters.rays_traced += tally.rays;
+    counters.shadow_rays += tally.shadow_rays;
+    counters.shadow_rays_skipped += tally.shadow_rays_skipped;
     samples_done += n;
     report(false);
   };

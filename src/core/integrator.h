@@ -25,11 +25,17 @@ struct RenderCounters {
   std::atomic<uint64_t> rays_traced{0};      // every ray given to Embree (closest or shadow)
   std::atomic<uint64_t> samples{0};          // camera samples taken
   std::atomic<uint64_t> nonfinite_samples{0};
+  std::atomic<uint64_t> shadow_rays{0};          // of rays_traced: occlusion tests for light samples
+  std::atomic<uint64_t> shadow_rays_skipped{0};  // scattering points that needed no occlusion test
 };
 
 // Per-thread tally, flushed to RenderCounters once per tile to keep atomics off the hot path.
 struct RayTally {
   uint64_t rays = 0;
+  uint64_t shadow_rays = 0;
+  // Scattering points where light sampling traced no shadow ray because it could not
+  // contribute (no lights, a specular BSDF, a zero light sample or a zero f cos term).
+  uint64_t shadow_rays_skipped = 0;
 };
 
 struct RenderOptions {

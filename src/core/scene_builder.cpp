@@ -1,5 +1,7 @@
 #include "core/scene_builder.h"
 
+#include <set>
+
 #include "core/registry.h"
 
 namespace eyetrace {
@@ -63,7 +65,14 @@ class Builder {
     setup_.scene = std::make_unique<Scene>();
     for (const TextureEntity& t : desc_.textures) build_texture(t);
     for (const ShapeEntity& s : desc_.shapes) add_shape(s);
-    for (const auto& [name, def] : desc_.instances) build_instance(def);
+    std::set<std::string> used;
+    for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
+    for (const auto& [name, def] : desc_.instances) {
+      // No ray can reach an object that is never instanced: building its shapes and BVH
+      // would only cost time and memory.
+      if (used.count(name)) build_instance(def);
+      else warn(def.loc, fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name));
+    }
     for (const InstanceUse& u : desc_.instance_uses) {
       if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
       setup_.scene->add_instance(u.name, u.world_from_instance);

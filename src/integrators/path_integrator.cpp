@@ -19,14 +19,20 @@ RGB PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf
   float u_light = sampler.get_1d();
   Vec2 u = sampler.get_2d();
   float pmf = 0.f;
+  // A sample that cannot contribute costs no shadow ray.
+  auto skip = [&] {
+    ++tally.shadow_rays_skipped;
+    return RGB(0.f);
+  };
   const Light* light = lights_.sample(u_light, &pmf);
-  if (!light || pmf == 0.f) return RGB(0.f);
+  if (!light || pmf == 0.f) return skip();
   LightSampleContext ctx{si.p, si.n};
   std::optional<LightLiSample> ls = light->sample_li(ctx, u);
-  if (!ls || ls->pdf <= 0.f || is_black(ls->L)) return RGB(0.f);
+  if (!ls || ls->pdf <= 0.f || is_black(ls->L)) return skip();
   RGB f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
-  if (is_black(f)) return RGB(0.f);
+  if (is_black(f)) return skip();
   ++tally.rays;
+  ++tally.shadow_rays;
   if (scene_.occluded(spawn_ray_to(si.p, si.n, ls->p_light, si.time))) return RGB(0.f);
   float light_pdf = pmf * ls->pdf;
   if (light->is_delta()) return f * ls->L / light_pdf;
@@ -69,6 +75,7 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     }
     if (depth++ == max_depth_) break;
     if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy))) L += beta * sample_direct(si, *bsdf, sampler, tally);
+    else ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
 
     float uc = sampler.get_1d();
     std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());

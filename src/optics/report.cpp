@@ -57,6 +57,7 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
         const SpotResult s = trace_spot(p, {field, options.object_distance_m, options.spot_grid});
         spots.push_back({{"field_deg", field},
                          {"rms_radius_um", s.rays > 0 ? json(round6(s.rms_radius_um)) : json(nullptr)},
+                         {"ee50_radius_um", s.rays > 0 ? json(round6(s.ee50_radius_um)) : json(nullptr)},
                          {"rays", s.rays},
                          {"rays_launched", s.rays_launched}});
     }
@@ -87,8 +88,9 @@ std::string format_report(const json& r) {
                        r["spot_object_distance_m"].is_null() ? std::string("infinity")
                                                              : num(r["spot_object_distance_m"], "{:.3f} m"));
     for (const json& s : r["spot"])
-        out += fmt::format("    field {:>5.1f} deg: RMS radius {:>9} um ({} of {} rays)\n", s["field_deg"].get<double>(),
-                           num(s["rms_radius_um"], "{:.2f}"), s["rays"].get<int>(), s["rays_launched"].get<int>());
+        out += fmt::format("    field {:>5.1f} deg: RMS radius {:>9} um, 50% of rays within {:>9} um ({} of {} rays)\n",
+                           s["field_deg"].get<double>(), num(s["rms_radius_um"], "{:.2f}"), num(s["ee50_radius_um"], "{:.2f}"),
+                           s["rays"].get<int>(), s["rays_launched"].get<int>());
     for (const json& n : r["notes"]) out += fmt::format("  note: {}\n", n.get<std::string>());
     return out;
 }

@@ -101,14 +101,21 @@ SpotResult trace_spot(const Prescription& p, const SpotOptions& options) {
     for (const glm::dvec3& h : hits) c += h;
     c /= static_cast<double>(hits.size());
     double sum2 = 0.0;
+    std::vector<double> r2;
+    r2.reserve(hits.size());
     out.points_um.reserve(hits.size());
     for (const glm::dvec3& h : hits) {
         const glm::dvec3 d = h - c;
-        sum2 += glm::dot(d, d);
+        r2.push_back(glm::dot(d, d));
+        sum2 += r2.back();
         out.points_um.emplace_back(d.x * 1000.0, d.y * 1000.0);
     }
     out.centroid_mm = c;
     out.rms_radius_um = std::sqrt(sum2 / static_cast<double>(hits.size())) * 1000.0;
+    // The smallest radius with at least half the rays inside: the ceil(n/2)-th smallest distance.
+    auto half = r2.begin() + static_cast<std::ptrdiff_t>((r2.size() - 1) / 2);
+    std::nth_element(r2.begin(), half, r2.end());
+    out.ee50_radius_um = std::sqrt(*half) * 1000.0;
     return out;
 }
 

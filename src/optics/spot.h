@@ -32,6 +32,9 @@ struct SpotResult {
     int rays = 0;           // rays that reached the image surface
     int rays_launched = 0;  // rays of the fine grid
     double rms_radius_um = 0.0;  // about the centroid (3D distances on the image surface); 0 if rays == 0
+    // Radius about the centroid that holds half the rays (same distances): unlike the RMS radius
+    // it follows the dense core of the spot, not its sparse flare.
+    double ee50_radius_um = 0.0;
     glm::dvec3 centroid_mm{0.0};
     std::vector<glm::dvec2> points_um;  // (x, y) of every ray relative to the centroid, micrometres
 };

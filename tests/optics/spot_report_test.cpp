@@ -98,6 +98,29 @@ TEST(Report, EmmetropicEyeHasNoFarPoint) {
     EXPECT_FALSE(optics_report(make_eye(o))["far_point_m"].is_null());
 }
 
+TEST(Spot, Ee50RadiusHoldsHalfTheRays) {
+    // Gullstrand's retina is flat, so the 2-D points are the distances the radius is taken over.
+    EyeOptions o;
+    o.model = "gullstrand";
+    o.pupil_diameter_mm = 5.0;
+    for (double field : {0.0, 20.0}) {
+        const SpotResult s = trace_spot(make_eye(o), {field});
+        ASSERT_GT(s.rays, 1000);
+        const double r = s.ee50_radius_um;
+        size_t inside = 0, strictly = 0;
+        for (const glm::dvec2& q : s.points_um) {
+            const double d = std::hypot(q.x, q.y);
+            inside += d <= r * (1 + 1e-9);
+            strictly += d < r * (1 - 1e-9);
+        }
+        const size_t half = (s.points_um.size() + 1) / 2;
+        EXPECT_GE(inside, half) << field;
+        EXPECT_LT(strictly, half) << field;
+        // Markov's inequality on r^2: at most half the rays lie beyond sqrt(2) x the RMS radius.
+        EXPECT_LE(r, std::sqrt(2.0) * s.rms_radius_um) << field;
+    }
+}
+
 TEST(SpotDiagram, RasterHasPointsAndScaleBar) {
     const Prescription p = navarro(4.0);
     std::vector<SpotResult> spots{trace_spot(p, {0.0}), trace_spot(p, {20.0})};
