@@ -1,5 +1,7 @@
 #include "integrators/path_integrator.h"
 
+#include <algorithm>
+
 #include "core/material.h"
 #include "core/sampling.h"
 #include "core/scene.h"
@@ -7,7 +9,9 @@
 namespace eyetrace {
 
 PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name)
-    : Integrator(scene), max_depth_(max_depth), name_(std::move(name)), lights_(scene.lights()) {}
+    : Integrator(scene), max_depth_(max_depth), name_(std::move(name)), lights_(scene.lights()),
+      hittable_lights_(std::any_of(scene.lights().begin(), scene.lights().end(),
+                                   [](const auto& l) { return !l->is_delta(); })) {}
 
 std::string PathIntegrator::to_string() const {
   return fmt::format("{} integrator: maxdepth {}, {} light(s), power light sampling", name_, max_depth_,
@@ -76,6 +80,8 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     if (depth++ == max_depth_) break;
     if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy))) L += beta * sample_direct(si, *bsdf, sampler, tally);
     else ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
+    // The next ray could only add emission it finds, and there is none to find.
+    if (depth == max_depth_ && !hittable_lights_) break;
 
     float uc = sampler.get_1d();
     std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());

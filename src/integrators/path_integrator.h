@@ -23,6 +23,10 @@ class PathIntegrator : public Integrator {
   int max_depth_;
   std::string name_;
   PowerLightSampler lights_;
+  // Whether any light can be hit by a ray (area and infinite lights; point, spot and distant
+  // lights cannot). Without one, the BSDF-sampled ray after the last bounce, which exists
+  // only to find emission, is not traced.
+  bool hittable_lights_;
 };
 
 std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx);

@@ -1,7 +1,8 @@
-// Light sampling traces a shadow ray only where the light sample can contribute. With the
-// direct integrator and a camera that sees nothing but a diffuse plane, every camera ray makes
-// exactly one scattering point, so shadow_rays + shadow_rays_skipped equals the camera rays;
-// which of the two each point lands in follows from where the light is.
+// Light sampling traces a shadow ray only where the light sample can contribute, and the ray
+// after the last bounce is traced only if a light can be hit. With the direct integrator and a
+// camera that sees nothing but a diffuse plane, every camera ray makes exactly one scattering
+// point, so shadow_rays + shadow_rays_skipped equals the camera rays; which of the two each
+// point lands in, and how many rays are traced, follows from the lights.
 #include <gtest/gtest.h>
 
 #include "core/parser.h"
@@ -36,8 +37,9 @@ TEST(ShadowRaySkip, LightInFrontNeedsAShadowRayAtEveryPoint) {
   EXPECT_EQ(c.camera_rays, kCameraRays);
   EXPECT_EQ(c.shadow_rays, kCameraRays);
   EXPECT_EQ(c.shadow_rays_skipped, 0u);
-  // Each camera ray and its one BSDF-sampled continuation (which finds the sky), plus the shadow rays.
-  EXPECT_EQ(c.rays_traced, 2 * kCameraRays + kCameraRays);
+  // A distant light cannot be hit, so after the one bounce no BSDF-sampled ray is traced to
+  // look for emission: each camera ray and its shadow ray, nothing else.
+  EXPECT_EQ(c.rays_traced, 2 * kCameraRays);
 }
 
 TEST(ShadowRaySkip, LightBehindThePlaneNeedsNone) {
@@ -45,13 +47,20 @@ TEST(ShadowRaySkip, LightBehindThePlaneNeedsNone) {
   Counts c = render("LightSource \"distant\" \"point3 from\" [0 0 -1] \"point3 to\" [0 0 0]\n");
   EXPECT_EQ(c.shadow_rays, 0u);
   EXPECT_EQ(c.shadow_rays_skipped, kCameraRays);
-  EXPECT_EQ(c.rays_traced, 2 * kCameraRays);
+  EXPECT_EQ(c.rays_traced, kCameraRays);
 }
 
 TEST(ShadowRaySkip, NoLightNeedsNone) {
   Counts c = render("");
   EXPECT_EQ(c.shadow_rays, 0u);
   EXPECT_EQ(c.shadow_rays_skipped, kCameraRays);
+  EXPECT_EQ(c.rays_traced, kCameraRays);
+}
+
+TEST(ShadowRaySkip, AnInfiniteLightIsLookedForAfterTheLastBounce) {
+  // An environment light can be hit: the BSDF-sampled ray after the bounce is traced (MIS).
+  Counts c = render("LightSource \"infinite\" \"rgb L\" [1 1 1]\n");
+  EXPECT_EQ(c.rays_traced, 2 * kCameraRays + c.shadow_rays);
 }
 
 }  // namespace
