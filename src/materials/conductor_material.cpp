@@ -1,5 +1,7 @@
 #include "materials/conductor_material.h"
 
+#include <algorithm>
+
 #include "core/spectrum.h"
 #include "core/texture_store.h"
 #include "materials/conductor_bxdf.h"
@@ -52,7 +54,20 @@ class ConductorMaterial final : public Material {
 
 }  // namespace
 
+// A constant eta must be positive and k non-negative (textures are clamped where they are
+// evaluated, as in pbrt-v4): a negative value given as a number is a mistake, not a clamp.
+static void check_constant(const ParameterList& params, const char* name, bool zero_allowed) {
+  const Param* p = params.find(name);
+  if (!p || p->canonical_type() == "texture") return;
+  RGB v = *params.get_rgb(name);
+  float lo = std::min({v.r, v.g, v.b});
+  if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
+  params.fail(name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
+}
+
 std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) {
+  check_constant(ctx.params, "eta", false);
+  check_constant(ctx.params, "k", true);
   const SpectrumTexture* eta = ctx.textures.spectrum_param_or_null(ctx.params, "eta");
   const SpectrumTexture* k = ctx.textures.spectrum_param_or_null(ctx.params, "k");
   const SpectrumTexture* reflectance = ctx.textures.spectrum_param_or_null(ctx.params, "reflectance");

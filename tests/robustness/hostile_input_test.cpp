@@ -339,6 +339,18 @@ TEST(HostileInput, NegativeRoughnessIsAnErrorNamingTheParameter) {
   EXPECT_EQ(build_error(in_world("Material \"conductor\" \"float roughness\" 0\nShape \"sphere\"\n")), "");
 }
 
+// Optical constants given as numbers: a conductor's eta must be positive and its k
+// non-negative (they were clamped silently); a spectrum value beyond float range is named.
+TEST(HostileInput, ConductorOpticalConstantsAndHugeSpectrumValues) {
+  EXPECT_ERROR(in_world("Material \"conductor\" \"spectrum eta\" [400 -1 700 -1]\nShape \"sphere\"\n"),
+               "error: parameter \"eta\": must be positive (its smallest value here is");
+  EXPECT_ERROR(in_world("Material \"conductor\" \"rgb k\" [1 -0.5 1]\nShape \"sphere\"\n"),
+               "error: parameter \"k\": must be non-negative (its smallest value here is -0.5)");
+  EXPECT_EQ(build_error(in_world("Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [0 3 3]\nShape \"sphere\"\n")), "");
+  EXPECT_ERROR(in_world("Material \"dielectric\" \"spectrum eta\" [400 1e308 700 1e308]\nShape \"sphere\"\n"),
+               "error: parameter \"eta\" value 1e+308 is out of the float range");
+}
+
 // ---------------------------------------------------------------------------------------
 // Shapes: negative sizes and indices, degenerate and empty meshes
 
