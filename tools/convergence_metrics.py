@@ -11,14 +11,14 @@ a pixel is the angle between its chief ray and the optical axis: pinhole and thi
 tan(angle) linearly to pixels, the eye cameras map the angle itself); the periphery is the rest.
 """
 import math
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import OpenImageIO as oiio
+
+import image_files
 
 FOV = 50.0        # degrees across the shorter (vertical) image axis, for every camera
 FOVEA_DEG = 10.0  # eccentricity radius of the "fovea" region (see docs/convergence.md)
@@ -32,36 +32,17 @@ REFERENCE_MARGIN = 3.0  # a target needs the reference's own relMSE this many ti
 
 
 def read_rgb(path):
-    inp = oiio.ImageInput.open(path)
-    if inp is None:
-        raise SystemExit(f"convergence: cannot read {path}: {oiio.geterror()}")
-    px = inp.read_image(oiio.FLOAT)
-    inp.close()
-    return np.asarray(px, dtype=np.float64)[:, :, :3]
+    return image_files.read_rgb(path, "convergence")
 
 
-def write_exr(rgb, path):
-    tmp = path + ".tmp.exr"
-    out = oiio.ImageOutput.create(tmp)
-    out.open(tmp, oiio.ImageSpec(rgb.shape[1], rgb.shape[0], 3, oiio.FLOAT))
-    out.write_image(np.ascontiguousarray(rgb, dtype=np.float32))
-    out.close()
-    os.replace(tmp, path)
+write_exr = image_files.write_exr
 
 
 def write_png(rgb, path):
     """sRGB preview, exposure scaled so the 99th percentile of luminance maps to white."""
     y = 0.2126 * rgb[:, :, 0] + 0.7152 * rgb[:, :, 1] + 0.0722 * rgb[:, :, 2]
     top = float(np.percentile(y, 99)) if y.size else 1.0
-    v = np.clip(rgb / (top if top > 0 else 1.0), 0.0, None)
-    srgb = np.where(v <= 0.0031308, 12.92 * v, 1.055 * np.power(v, 1 / 2.4) - 0.055)
-    data = (np.clip(srgb, 0, 1) * 255 + 0.5).astype(np.uint8)
-    tmp = path + ".tmp.png"
-    out = oiio.ImageOutput.create(tmp)
-    out.open(tmp, oiio.ImageSpec(data.shape[1], data.shape[0], 3, oiio.UINT8))
-    out.write_image(data)
-    out.close()
-    os.replace(tmp, path)
+    image_files.write_png(rgb, path, 1.0 / (top if top > 0 else 1.0))
 
 
 def eccentricity(shape, camera):

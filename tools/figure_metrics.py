@@ -20,7 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import OpenImageIO as oiio
+
+import image_files
 
 FOV = 50.0
 ECCENTRICITY_EDGES = [0, 5, 10, 15, 20, 25, 30, 35]
@@ -33,34 +34,11 @@ REFERENCE_PUPIL_MM = 0.1
 
 
 def read_rgb(path):
-    inp = oiio.ImageInput.open(path)
-    if inp is None:
-        raise SystemExit(f"figures: cannot read {path}: {oiio.geterror()}")
-    px = inp.read_image(oiio.FLOAT)
-    inp.close()
-    return np.asarray(px, dtype=np.float64)[:, :, :3]
+    return image_files.read_rgb(path, "figures")
 
 
-def write_exr(rgb, path):
-    data = np.ascontiguousarray(rgb, dtype=np.float32)
-    tmp = path + ".tmp.exr"
-    out = oiio.ImageOutput.create(tmp)
-    out.open(tmp, oiio.ImageSpec(data.shape[1], data.shape[0], 3, oiio.FLOAT))
-    out.write_image(data)
-    out.close()
-    os.replace(tmp, path)
-
-
-def write_png(rgb, path):
-    v = np.clip(rgb, 0.0, None)
-    srgb = np.where(v <= 0.0031308, 12.92 * v, 1.055 * np.power(v, 1 / 2.4) - 0.055)
-    data = (np.clip(srgb, 0, 1) * 255 + 0.5).astype(np.uint8)
-    tmp = path + ".tmp.png"
-    out = oiio.ImageOutput.create(tmp)
-    out.open(tmp, oiio.ImageSpec(data.shape[1], data.shape[0], 3, oiio.UINT8))
-    out.write_image(data)
-    out.close()
-    os.replace(tmp, path)
+write_exr = image_files.write_exr
+write_png = image_files.write_png
 
 
 def luminance(rgb):

@@ -1,5 +1,6 @@
 #include "shapes/analytic_shape.h"
 
+#include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace eyetrace {
@@ -131,6 +132,23 @@ Vec3 AnalyticShape::vector_to_world(const glm::dvec3& v) const {
 Vec3 AnalyticShape::normal_to_world(const glm::dvec3& n) const {
   glm::dvec3 w = glm::normalize(normal_from_object_ * n);
   return Vec3(reverse_orientation_ ? -w : w);
+}
+
+SurfaceInteraction AnalyticShape::interaction(const Ray& ray, float t, unsigned, Vec2, Vec3) const {
+  DRay r = to_object(ray.o, ray.d);
+  SurfaceInteraction si;
+  surface_at(r.o + double(t) * r.d, &si);
+  finish(ray, t, &si);
+  return si;
+}
+
+void AnalyticShape::set_surface(SurfaceInteraction* si, const glm::dvec3& p, const glm::dvec3& n, double u, double v,
+                                const glm::dvec3& dpdu, const glm::dvec3& dpdv) const {
+  si->p = point_to_world(p);
+  si->n = normal_to_world(n);
+  si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
+  si->dpdu = vector_to_world(dpdu);
+  si->dpdv = vector_to_world(dpdv);
 }
 
 void AnalyticShape::finish(const Ray& ray, float t, SurfaceInteraction* si) const {

@@ -19,6 +19,8 @@ class AnalyticShape : public Shape {
 
   unsigned attach(RTCDevice device, RTCScene scene) const override;
   Bounds3 bounds() const override;
+  // Recomputes the hit in object space from t (double precision) and fills it via surface_at.
+  SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
 
   // Smallest t in (tmin, tmax) where the ray (given in the space the geometry lives in,
   // `d` not necessarily unit) meets the surface; public for tests.
@@ -31,6 +33,11 @@ class AnalyticShape : public Shape {
   virtual std::optional<double> hit_object(const DRay& r, double tmin, double tmax) const = 0;
   // Object-space box around the surface.
   virtual void object_bounds(glm::dvec3* lo, glm::dvec3* hi) const = 0;
+  // Position, normal, uv and tangents of the object-space surface point p (on the surface).
+  virtual void surface_at(glm::dvec3 p, SurfaceInteraction* si) const = 0;
+  // Stores object-space p, outward normal n, (u, v) clamped to [0, 1] and tangents in world space.
+  void set_surface(SurfaceInteraction* si, const glm::dvec3& p, const glm::dvec3& n, double u, double v,
+                   const glm::dvec3& dpdu, const glm::dvec3& dpdv) const;
 
   DRay to_object(const Vec3& o, const Vec3& d) const;
   Vec3 point_to_world(const glm::dvec3& p) const;

@@ -52,19 +52,7 @@ void Disk::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   double v = (radius_ - r_hit) / (radius_ - inner_radius_);
   glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0);
   glm::dvec3 dpdv = r_hit > 0.0 ? glm::dvec3(p.x, p.y, 0.0) * ((inner_radius_ - radius_) / r_hit) : glm::dvec3(0.0);
-  si->p = point_to_world(p);
-  si->n = normal_to_world(glm::dvec3(0.0, 0.0, 1.0));
-  si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
-  si->dpdu = vector_to_world(dpdu);
-  si->dpdv = vector_to_world(dpdv);
-}
-
-SurfaceInteraction Disk::interaction(const Ray& ray, float t, unsigned, Vec2, Vec3) const {
-  DRay r = to_object(ray.o, ray.d);
-  SurfaceInteraction si;
-  surface_at(r.o + double(t) * r.d, &si);
-  finish(ray, t, &si);
-  return si;
+  set_surface(si, p, glm::dvec3(0.0, 0.0, 1.0), u, v, dpdu, dpdv);
 }
 
 ShapeSample Disk::sample_area(Vec2 u) const {

@@ -15,7 +15,6 @@ class Disk : public AnalyticShape {
   Disk(const Transform& world_from_object, bool reverse_orientation, double height, double radius,
        double inner_radius, double phimax_deg);
 
-  SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
   float area() const override { return float(area_); }
   ShapeSample sample_area(Vec2 u) const override;
 
@@ -24,7 +23,7 @@ class Disk : public AnalyticShape {
   void object_bounds(glm::dvec3* lo, glm::dvec3* hi) const override;
 
  private:
-  void surface_at(glm::dvec3 p, SurfaceInteraction* si) const;
+  void surface_at(glm::dvec3 p, SurfaceInteraction* si) const override;
 
   double height_, radius_, inner_radius_, phimax_;
   double area_;

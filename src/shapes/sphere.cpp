@@ -80,19 +80,7 @@ void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   double v = (theta - theta_zmin_) / (theta_zmax_ - theta_zmin_);
   glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0);
   glm::dvec3 dpdv = (theta_zmax_ - theta_zmin_) * glm::dvec3(p.z * cos_phi, p.z * sin_phi, -radius_ * sin_theta);
-  si->p = point_to_world(p);
-  si->n = normal_to_world(p);
-  si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
-  si->dpdu = vector_to_world(dpdu);
-  si->dpdv = vector_to_world(dpdv);
-}
-
-SurfaceInteraction Sphere::interaction(const Ray& ray, float t, unsigned, Vec2, Vec3) const {
-  DRay r = to_object(ray.o, ray.d);
-  SurfaceInteraction si;
-  surface_at(r.o + double(t) * r.d, &si);
-  finish(ray, t, &si);
-  return si;
+  set_surface(si, p, p, u, v, dpdu, dpdv);
 }
 
 ShapeSample Sphere::sample_area(Vec2 u) const {

@@ -16,7 +16,6 @@ class Sphere : public AnalyticShape {
   Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin,
          double zmax, double phimax_deg);
 
-  SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
   float area() const override { return float(area_); }
   ShapeSample sample_area(Vec2 u) const override;
 
@@ -27,7 +26,7 @@ class Sphere : public AnalyticShape {
  private:
   bool cut_away(const glm::dvec3& p) const;
   // Surface quantities at an object-space point on the sphere.
-  void surface_at(glm::dvec3 p, SurfaceInteraction* si) const;
+  void surface_at(glm::dvec3 p, SurfaceInteraction* si) const override;
 
   double radius_, zmin_, zmax_, phimax_;
   double theta_zmin_, theta_zmax_;  // polar angles of the cut planes (theta_zmin >= theta_zmax)

@@ -17,16 +17,10 @@
 #include "core/render_state.h"
 #include "core/scene_builder.h"
 
+#include "../support/unit_box_filter.h"
+
 namespace eyetrace {
 namespace {
-
-class UnitBox : public Filter {
- public:
-  Vec2 radius() const override { return Vec2(0.5f); }
-  float evaluate(Vec2) const override { return 1.f; }
-  FilterSample sample(Vec2 u) const override { return {u - Vec2(0.5f), 1.f}; }
-  std::string to_string() const override { return "box"; }
-};
 
 // 40x24 pixels: 3x2 tiles, the right and bottom ones partial.
 const char* kScene = R"(LookAt 0 0 -4  0 0 0  0 1 0

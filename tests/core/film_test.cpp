@@ -7,16 +7,10 @@
 
 #include "core/error.h"
 
+#include "../support/unit_box_filter.h"
+
 namespace eyetrace {
 namespace {
-
-class UnitBox : public Filter {
- public:
-  Vec2 radius() const override { return Vec2(0.5f); }
-  float evaluate(Vec2) const override { return 1.f; }
-  FilterSample sample(Vec2 u) const override { return {u - Vec2(0.5f), 1.f}; }
-  std::string to_string() const override { return "box"; }
-};
 
 // pbrt-v4 rounds crop windows up: [ceil(x0 * w), ceil(x1 * w)).
 TEST(Film, CropWindowMatchesPbrtRounding) {
