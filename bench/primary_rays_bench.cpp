@@ -1,5 +1,6 @@
 // Primary-ray throughput on a 204,800-triangle terrain, split into what Embree's traversal
-// costs and what eyetrace adds (camera, interaction, shading, film). Run:
+// costs (BM_EmbreeTraversalOnly + BM_SceneOccludedOnly) and what eyetrace adds (camera,
+// interaction, shading, sampling, film). Run:
 //   build/bench/primary_rays_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
@@ -66,6 +67,38 @@ void BM_SceneIntersectOnly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * rays.size());
 }
 BENCHMARK(BM_SceneIntersectOnly)->Unit(benchmark::kMillisecond);
+
+// Embree's traversal alone: rtcIntersect1 on the same rays, no interaction. The difference
+// to BM_SceneIntersectOnly is eyetrace's work of turning a hit into a SurfaceInteraction.
+void BM_EmbreeTraversalOnly(benchmark::State& state) {
+  RenderSetup s = make_setup("direct");
+  std::vector<RTCRayHit> rays;
+  for (int y = 0; y < kRes; ++y)
+    for (int x = 0; x < kRes; ++x) {
+      CameraSample cs;
+      cs.p_film = Vec2(x + 0.5f, y + 0.5f);
+      Ray r = s.camera->generate_ray(cs)->ray;
+      RTCRayHit rh{};
+      rh.ray.org_x = r.o.x, rh.ray.org_y = r.o.y, rh.ray.org_z = r.o.z;
+      rh.ray.dir_x = r.d.x, rh.ray.dir_y = r.d.y, rh.ray.dir_z = r.d.z;
+      rh.ray.mask = 0xFFFFFFFFu;
+      rays.push_back(rh);
+    }
+  size_t hits = 0;
+  for (auto _ : state) {
+    for (RTCRayHit rh : rays) {
+      rh.ray.tfar = kInfinity;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      rtcIntersect1(s.scene->embree_scene(), &context, &rh);
+      hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    }
+  }
+  benchmark::DoNotOptimize(hits);
+  state.SetItemsProcessed(state.iterations() * rays.size());
+}
+BENCHMARK(BM_EmbreeTraversalOnly)->Unit(benchmark::kMillisecond);
 
 // The shadow rays of the same frame alone (Embree occlusion queries towards the distant
 // light from each primary hit): with BM_SceneIntersectOnly, all of Embree's share of a frame.

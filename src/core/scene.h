@@ -58,6 +58,8 @@ class Scene {
   Bounds3 bounds() const { return bounds_; }
   size_t primitive_count() const;  // triangles + analytic shapes, instances counted once
   RTCDevice device() const { return device_; }
+  // The committed Embree scene, for benchmarks that time Embree's traversal alone.
+  RTCScene embree_scene() const { return root_; }
 
  private:
   struct InstanceGroup;
