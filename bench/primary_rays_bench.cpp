@@ -45,10 +45,8 @@ RenderSetup make_setup(const std::string& integrator) {
   return build_render_setup(desc, {});
 }
 
-// Closest hits alone (Embree traversal plus turning the hit into an interaction), one ray
-// per pixel: no camera, shading, shadow rays or film.
-void BM_SceneIntersectOnly(benchmark::State& state) {
-  RenderSetup s = make_setup("direct");
+// One camera ray through each pixel centre, generated once outside the timed loops.
+std::vector<Ray> primary_rays(const RenderSetup& s) {
   std::vector<Ray> rays;
   for (int y = 0; y < kRes; ++y)
     for (int x = 0; x < kRes; ++x) {
@@ -56,6 +54,14 @@ void BM_SceneIntersectOnly(benchmark::State& state) {
       cs.p_film = Vec2(x + 0.5f, y + 0.5f);
       rays.push_back(s.camera->generate_ray(cs)->ray);
     }
+  return rays;
+}
+
+// Closest hits alone (Embree traversal plus turning the hit into an interaction), one ray
+// per pixel: no camera, shading, shadow rays or film.
+void BM_SceneIntersectOnly(benchmark::State& state) {
+  RenderSetup s = make_setup("direct");
+  std::vector<Ray> rays = primary_rays(s);
   size_t hits = 0;
   for (auto _ : state) {
     for (const Ray& r : rays) {
@@ -73,17 +79,13 @@ BENCHMARK(BM_SceneIntersectOnly)->Unit(benchmark::kMillisecond);
 void BM_EmbreeTraversalOnly(benchmark::State& state) {
   RenderSetup s = make_setup("direct");
   std::vector<RTCRayHit> rays;
-  for (int y = 0; y < kRes; ++y)
-    for (int x = 0; x < kRes; ++x) {
-      CameraSample cs;
-      cs.p_film = Vec2(x + 0.5f, y + 0.5f);
-      Ray r = s.camera->generate_ray(cs)->ray;
-      RTCRayHit rh{};
-      rh.ray.org_x = r.o.x, rh.ray.org_y = r.o.y, rh.ray.org_z = r.o.z;
-      rh.ray.dir_x = r.d.x, rh.ray.dir_y = r.d.y, rh.ray.dir_z = r.d.z;
-      rh.ray.mask = 0xFFFFFFFFu;
-      rays.push_back(rh);
-    }
+  for (const Ray& r : primary_rays(s)) {
+    RTCRayHit rh{};
+    rh.ray.org_x = r.o.x, rh.ray.org_y = r.o.y, rh.ray.org_z = r.o.z;
+    rh.ray.dir_x = r.d.x, rh.ray.dir_y = r.d.y, rh.ray.dir_z = r.d.z;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rays.push_back(rh);
+  }
   size_t hits = 0;
   for (auto _ : state) {
     for (RTCRayHit rh : rays) {
@@ -106,13 +108,10 @@ void BM_SceneOccludedOnly(benchmark::State& state) {
   RenderSetup s = make_setup("direct");
   std::vector<Ray> shadow;
   const Vec3 to_light = glm::normalize(Vec3(0.f, 0.f, 1.f) - Vec3(0.3f, 0.2f, 0.f));
-  for (int y = 0; y < kRes; ++y)
-    for (int x = 0; x < kRes; ++x) {
-      CameraSample cs;
-      cs.p_film = Vec2(x + 0.5f, y + 0.5f);
-      SurfaceInteraction si;
-      if (s.scene->intersect(s.camera->generate_ray(cs)->ray, &si)) shadow.push_back(spawn_ray(si.p, si.n, to_light));
-    }
+  for (const Ray& r : primary_rays(s)) {
+    SurfaceInteraction si;
+    if (s.scene->intersect(r, &si)) shadow.push_back(spawn_ray(si.p, si.n, to_light));
+  }
   size_t blocked = 0;
   for (auto _ : state)
     for (const Ray& r : shadow) blocked += s.scene->occluded(r);
