@@ -27,12 +27,6 @@ constexpr int kCameraDimensions = 6;
 // which hides the latency of their dependent surface-by-surface arithmetic.
 constexpr int kCameraBatch = 16;
 
-struct PendingSample {
-  IVec2 pixel;
-  int index;
-  CameraSample cs;
-};
-
 // The camera dimensions of one sample: the film position is drawn first so that samplers can
 // stratify it.
 CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index) {
@@ -59,29 +53,31 @@ class SampleBatch {
   ~SampleBatch() { flush(); }
 
   void add(IVec2 pixel, int index) {
-    pending_[count_] = {pixel, index, draw_camera_sample(film_, *ts_.sampler, pixel, index)};
+    pixels_[count_] = pixel;
+    indices_[count_] = index;
+    samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index);
     if (++count_ == kCameraBatch) flush();
   }
 
   void flush() {
-    CameraSample cs[kCameraBatch];
-    for (int i = 0; i < count_; ++i) cs[i] = pending_[i].cs;
-    camera_.generate_rays(cs, rays_, size_t(count_));
-    for (int i = 0; i < count_; ++i) integrate(pending_[i], rays_[i]);
+    camera_.generate_rays(samples_, rays_, size_t(count_));
+    for (int i = 0; i < count_; ++i) integrate(i);
     count_ = 0;
   }
 
  private:
-  void integrate(const PendingSample& s, const std::optional<CameraRay>& cr) {
+  void integrate(int i) {
+    const std::optional<CameraRay>& cr = rays_[i];
+    const float filter_weight = samples_[i].filter_weight;
     if (!cr) {
       // A lost camera ray is a zero-radiance sample: the pixel averages it in (vignetting).
       ++lost_;
-      film_.add_sample(s.pixel, RGB(0.f), s.cs.filter_weight);
+      film_.add_sample(pixels_[i], RGB(0.f), filter_weight);
       return;
     }
-    ts_.sampler->start_pixel_sample(s.pixel, s.index, kCameraDimensions);
+    ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
     RGB L = integrator_.radiance(cr->ray, *ts_.sampler, ts_.arena, tally_) * cr->weight;
-    film_.add_sample(s.pixel, L, s.cs.filter_weight);
+    film_.add_sample(pixels_[i], L, filter_weight);
     ts_.arena.reset();
   }
 
@@ -91,7 +87,9 @@ class SampleBatch {
   ThreadState& ts_;
   RayTally& tally_;
   uint64_t& lost_;
-  PendingSample pending_[kCameraBatch];
+  IVec2 pixels_[kCameraBatch];
+  int indices_[kCameraBatch];
+  CameraSample samples_[kCameraBatch];
   std::optional<CameraRay> rays_[kCameraBatch];
   int count_ = 0;
 };

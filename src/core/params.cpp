@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/spectrum.h"
+
 namespace eyetrace {
 
 std::string Param::canonical_type() const {
@@ -123,6 +125,15 @@ std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
     return spectrum_param_to_rgb(*p);
   }
   eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name, p->type);
+}
+
+float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, float def) const {
+  note_query(name);
+  const Param* p = find(name);
+  if (!p) return def;
+  p->used = true;
+  check_numbers(*p);
+  return spectrum_param_at(*p, lambda_nm);
 }
 
 std::string ParameterList::get_texture(const std::string& name) const {

@@ -44,6 +44,8 @@ class ParameterList {
   Vec3 get_vector3(const std::string& name, const Vec3& def) const;
   // An "rgb", "spectrum" or "blackbody" parameter as linear RGB; nullopt if absent.
   std::optional<RGB> get_rgb(const std::string& name) const;
+  // A "spectrum", "rgb" (its green value) or "float" parameter at one wavelength; def if absent.
+  float get_spectrum_at(const std::string& name, float lambda_nm, float def) const;
   // Name of a "texture" parameter, or "" when absent.
   std::string get_texture(const std::string& name) const;
 

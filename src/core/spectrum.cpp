@@ -156,8 +156,6 @@ RGB spectrum_param_to_rgb(const Param& p) {
 }
 
 float spectrum_param_at(const Param& p, float lambda_nm) {
-  for (double v : p.numbers)
-    if (!(std::abs(v) <= 3.0e38)) fail(p.loc, "parameter \"{}\" value {} is out of the float range", p.name, v);
   std::string type = p.canonical_type();
   if (type == "float") {
     if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\" takes one value, got {}", p.name, p.numbers.size());

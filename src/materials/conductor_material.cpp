@@ -52,11 +52,9 @@ class ConductorMaterial final : public Material {
   const SpectrumTexture* normal_map_;
 };
 
-}  // namespace
-
 // A constant eta must be positive and k non-negative (textures are clamped where they are
 // evaluated, as in pbrt-v4): a negative value given as a number is a mistake, not a clamp.
-static void check_constant(const ParameterList& params, const char* name, bool zero_allowed) {
+void check_constant(const ParameterList& params, const char* name, bool zero_allowed) {
   const Param* p = params.find(name);
   if (!p || p->canonical_type() == "texture") return;
   RGB v = *params.get_rgb(name);
@@ -64,6 +62,8 @@ static void check_constant(const ParameterList& params, const char* name, bool z
   if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
   params.fail(name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
 }
+
+}  // namespace
 
 std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) {
   check_constant(ctx.params, "eta", false);

@@ -30,12 +30,7 @@ class DielectricMaterial final : public Material {
 
 float read_eta_at_550(const ParameterList& params, float def) {
   const Param* p = params.find("eta");
-  if (!p) {
-    params.get_float("eta", def);  // records the query for "did you mean" hints
-    return def;
-  }
-  float eta = p->canonical_type() == "float" ? params.get_float("eta", def) : spectrum_param_at(*p, 550.f);
-  p->used = true;
+  float eta = p && p->canonical_type() != "float" ? params.get_spectrum_at("eta", 550.f, def) : params.get_float("eta", def);
   if (!(eta > 0.f) || !std::isfinite(eta)) params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
   return eta;
 }
