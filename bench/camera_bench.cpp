@@ -8,7 +8,7 @@
 
 #include "cameras/lens_system_camera.h"
 #include "cameras/perspective_camera.h"
-#include "core/parser.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 namespace {

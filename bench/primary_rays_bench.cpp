@@ -7,9 +7,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/film.h"
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "render/film.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

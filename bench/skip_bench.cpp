@@ -18,8 +18,8 @@
 
 #include "cameras/chief_ray.h"
 #include "cameras/lens_system_camera.h"
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

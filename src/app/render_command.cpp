@@ -11,10 +11,10 @@
 
 #include "app/commands.h"
 #include "app/interrupt.h"
-#include "core/parser.h"
-#include "core/progress.h"
-#include "core/render_state.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "render/progress.h"
+#include "render/render_state.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 

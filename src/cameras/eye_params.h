@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cameras/lens_system_camera.h"
-#include "core/params.h"
+#include "scene/params.h"
 #include "optics/eye_models.h"
 #include "optics/prescription.h"
 

@@ -23,7 +23,7 @@
 #include "cameras/retina_mapping.h"
 #include "cameras/retina_surface.h"
 #include "core/camera.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "optics/prescription.h"
 #include "optics/sequential_trace.h"
 

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "core/camera.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

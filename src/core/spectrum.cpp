@@ -1,30 +1,12 @@
-// Spectral parameters to RGB; see core/spectrum.h for the two conversions and why.
+// Spectra to RGB; see core/spectrum.h for the two conversions and why.
 #include "core/spectrum.h"
 
 #include <cmath>
 #include <vector>
 
-#include "core/named_spectra.h"
-
 namespace eyetrace {
 
 namespace {
-
-struct Pairs {
-  std::vector<float> lambda, value;
-};
-
-// Piecewise linear through the points, constant beyond the ends.
-float interpolate(std::span<const float> lambda, std::span<const float> value, float l) {
-  size_t n = std::min(lambda.size(), value.size());
-  if (n == 0) return 0.f;
-  if (l <= lambda[0]) return value[0];
-  if (l >= lambda[n - 1]) return value[n - 1];
-  size_t j = 0;
-  while (lambda[j + 1] < l) ++j;
-  float t = (l - lambda[j]) / (lambda[j + 1] - lambda[j]);
-  return (1.f - t) * value[j] + t * value[j + 1];
-}
 
 SpectrumSamples sample_named(const NamedSpectrum& n) {
   SpectrumSamples s{};
@@ -49,39 +31,20 @@ RGB d65_white_rgb() {
   return white;
 }
 
-[[noreturn]] void unknown_name(const Param& p, const std::string& name) {
-  if (name.find('.') != std::string::npos || name.find('/') != std::string::npos)
-    fail(p.loc, "parameter \"{}\": spectrum files are not supported: {}", p.name, name);
-  std::vector<std::string> names = named_spectrum_names();
-  std::string list, hint = closest_match(name, names);
-  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  fail(p.loc, "parameter \"{}\": unknown named spectrum \"{}\"{}; known spectra: {}", p.name, name,
-       hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint), list);
+}  // namespace
+
+float interpolate_spectrum(std::span<const float> lambda, std::span<const float> value, float l) {
+  size_t n = std::min(lambda.size(), value.size());
+  if (n == 0) return 0.f;
+  if (l <= lambda[0]) return value[0];
+  if (l >= lambda[n - 1]) return value[n - 1];
+  size_t j = 0;
+  while (lambda[j + 1] < l) ++j;
+  float t = (l - lambda[j]) / (lambda[j + 1] - lambda[j]);
+  return (1.f - t) * value[j] + t * value[j + 1];
 }
 
-const NamedSpectrum& named_of(const Param& p) {
-  if (p.strings.size() != 1) fail(p.loc, "parameter \"{}\" takes one spectrum name", p.name);
-  const NamedSpectrum* n = find_named_spectrum(p.strings[0]);
-  if (!n) unknown_name(p, p.strings[0]);
-  return *n;
-}
-
-// [lambda value ...] pairs, checked: increasing positive wavelengths.
-Pairs pairs_of(const Param& p) {
-  const auto& v = p.numbers;
-  if (v.size() < 2 || v.size() % 2 != 0)
-    fail(p.loc, "parameter \"{}\": a spectrum is one value or (wavelength, value) pairs; got {} values", p.name, v.size());
-  std::vector<float> lambda, value;
-  for (size_t i = 0; i < v.size(); i += 2) {
-    if (v[i] <= 0.0 || (!lambda.empty() && float(v[i]) <= lambda.back()))
-      fail(p.loc, "parameter \"{}\": wavelengths must be positive and increasing (got {} nm)", p.name, v[i]);
-    lambda.push_back(float(v[i]));
-    value.push_back(float(v[i + 1]));
-  }
-  return {lambda, value};
-}
-
-RGB named_to_rgb(const NamedSpectrum& n) {
+RGB named_spectrum_to_rgb(const NamedSpectrum& n) {
   switch (n.kind) {
     case NamedSpectrumKind::kGlass: return RGB(evaluate_named_spectrum(n, 550.f));
     case NamedSpectrumKind::kMetal: return reflectance_spectrum_to_rgb(sample_named(n));
@@ -90,11 +53,9 @@ RGB named_to_rgb(const NamedSpectrum& n) {
   return RGB(0.f);
 }
 
-}  // namespace
-
 SpectrumSamples sample_spectrum(std::span<const float> lambda_nm, std::span<const float> values) {
   SpectrumSamples s{};
-  for (int i = 0; i < kCieRows; ++i) s[i] = interpolate(lambda_nm, values, cie_table()[i].lambda_nm);
+  for (int i = 0; i < kCieRows; ++i) s[i] = interpolate_spectrum(lambda_nm, values, cie_table()[i].lambda_nm);
   return s;
 }
 
@@ -137,40 +98,6 @@ RGB blackbody_to_rgb(float kelvin) {
   double ref = planck(555.0, kelvin);
   for (int i = 0; i < kCieRows; ++i) s[i] = float(planck(cie_table()[i].lambda_nm, kelvin) / ref);
   return emission_spectrum_to_rgb(s);
-}
-
-RGB spectrum_param_to_rgb(const Param& p) {
-  std::string type = p.canonical_type();
-  if (type == "blackbody") {
-    if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\": blackbody takes one temperature in kelvin", p.name);
-    // Below 100 K the visible tail spans more than float range; such a body is black anyway.
-    if (!(p.numbers[0] >= 100.0 && p.numbers[0] <= 1e7))
-      fail(p.loc, "parameter \"{}\": blackbody temperature {} K is outside [100, 1e7] K", p.name, p.numbers[0]);
-    return blackbody_to_rgb(float(p.numbers[0]));
-  }
-  if (type != "spectrum") fail(p.loc, "parameter \"{}\" of type \"{}\" is not a spectrum", p.name, p.type);
-  if (!p.strings.empty()) return named_to_rgb(named_of(p));
-  if (p.numbers.size() == 1) return RGB(float(p.numbers[0]));
-  Pairs pairs = pairs_of(p);
-  return reflectance_spectrum_to_rgb(sample_spectrum(pairs.lambda, pairs.value));
-}
-
-float spectrum_param_at(const Param& p, float lambda_nm) {
-  std::string type = p.canonical_type();
-  if (type == "float") {
-    if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\" takes one value, got {}", p.name, p.numbers.size());
-    return float(p.numbers[0]);
-  }
-  if (type == "rgb") {
-    if (p.numbers.size() != 3) fail(p.loc, "parameter \"{}\" takes 3 values, got {}", p.name, p.numbers.size());
-    return float(p.numbers[1]);
-  }
-  if (type != "spectrum")
-    fail(p.loc, "parameter \"{}\" has type \"{}\" but must be \"float\" or \"spectrum\"", p.name, p.type);
-  if (!p.strings.empty()) return evaluate_named_spectrum(named_of(p), lambda_nm);
-  if (p.numbers.size() == 1) return float(p.numbers[0]);
-  Pairs pairs = pairs_of(p);
-  return interpolate(pairs.lambda, pairs.value, lambda_nm);
 }
 
 }  // namespace eyetrace

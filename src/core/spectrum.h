@@ -1,6 +1,6 @@
 // Spectra turned into the renderer's RGB (linear sRGB: Rec.709 primaries, D65 white).
 // The renderer is RGB, so every spectral parameter becomes one colour when the scene is
-// built; spectrum_param_to_rgb (declared in core/params.h) is the entry point.
+// built; scene parameters come in through scene/spectrum_param.h.
 //
 // Two conversions, because a spectrum means different things:
 //  - reflectance-like (reflectances, conductor eta and k, [lambda value] pairs): the colour
@@ -16,7 +16,7 @@
 
 #include "core/cie_tables.h"
 #include "core/math.h"
-#include "core/params.h"
+#include "core/named_spectra.h"
 
 namespace eyetrace {
 
@@ -36,8 +36,10 @@ RGB emission_spectrum_to_rgb(const SpectrumSamples& s);  // luminance 1 (black s
 // Planck's law at `kelvin`, as an emitter of luminance 1.
 RGB blackbody_to_rgb(float kelvin);
 
-// A "float" or "spectrum" parameter's value at one wavelength (a refractive index at
-// 550 nm, say); "rgb" gives its green channel. Errors name the parameter.
-float spectrum_param_at(const Param& p, float lambda_nm);
+// Piecewise linear through (lambda, value) points, constant beyond the ends.
+float interpolate_spectrum(std::span<const float> lambda_nm, std::span<const float> values, float l_nm);
+// A named spectrum's colour: glasses their index at 550 nm, metals as reflectance-like,
+// illuminants as emission.
+RGB named_spectrum_to_rgb(const NamedSpectrum& n);
 
 }  // namespace eyetrace

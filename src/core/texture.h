@@ -25,4 +25,25 @@ class SpectrumTexture {
   virtual RGB evaluate(const TextureEvalContext& ctx) const = 0;
 };
 
+// One value everywhere: what a plain material parameter ("rgb reflectance" [...]) becomes,
+// and pbrt-v4's "constant" texture plugin. They live with the interfaces because the scene
+// front end makes them for every constant parameter.
+class ConstantFloatTexture final : public FloatTexture {
+ public:
+  explicit ConstantFloatTexture(float v) : v_(v) {}
+  float evaluate(const TextureEvalContext&) const override { return v_; }
+
+ private:
+  float v_;
+};
+
+class ConstantSpectrumTexture final : public SpectrumTexture {
+ public:
+  explicit ConstantSpectrumTexture(const RGB& v) : v_(v) {}
+  RGB evaluate(const TextureEvalContext&) const override { return v_; }
+
+ private:
+  RGB v_;
+};
+
 }  // namespace eyetrace

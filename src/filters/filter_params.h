@@ -2,7 +2,7 @@
 #pragma once
 #include <fmt/format.h>
 
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 

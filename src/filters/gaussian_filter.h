@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "core/filter.h"
-#include "core/params.h"
+#include "scene/params.h"
 #include "filters/filter_sampler.h"
 
 namespace eyetrace {

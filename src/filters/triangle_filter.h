@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "core/filter.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 

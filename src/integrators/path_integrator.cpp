@@ -4,7 +4,7 @@
 
 #include "core/material.h"
 #include "core/sampling.h"
-#include "core/scene.h"
+#include "render/scene.h"
 
 namespace eyetrace {
 

@@ -17,7 +17,7 @@
 #include <optional>
 
 #include "core/light.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/shape.h"
 #include "lights/rgb_image.h"
 

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "core/light.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

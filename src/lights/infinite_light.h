@@ -14,7 +14,7 @@
 #include <memory>
 
 #include "core/light.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/transform.h"
 #include "lights/environment_map.h"
 

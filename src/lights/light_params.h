@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 

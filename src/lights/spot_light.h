@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "core/light.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/transform.h"
 
 namespace eyetrace {

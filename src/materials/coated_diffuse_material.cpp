@@ -1,6 +1,6 @@
 #include "materials/coated_diffuse_material.h"
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/dielectric_material.h"
 #include "materials/local_bsdf.h"

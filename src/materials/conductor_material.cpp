@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "core/spectrum.h"
-#include "core/texture_store.h"
+#include "scene/spectrum_param.h"
+#include "scene/texture_store.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "core/material.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -1,6 +1,6 @@
 #include "materials/dielectric_material.h"
 
-#include "core/spectrum.h"
+#include "scene/spectrum_param.h"
 #include "materials/dielectric_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"

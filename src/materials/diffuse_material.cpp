@@ -1,6 +1,6 @@
 #include "materials/diffuse_material.h"
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "materials/lambertian_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "textures/imagemap_texture.h"
 
 namespace eyetrace {

@@ -3,7 +3,7 @@
 // (dpdu, ns x dpdu, ns) of the hit. Shared by every material that takes it.
 #pragma once
 #include "core/interaction.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/texture.h"
 
 namespace eyetrace {

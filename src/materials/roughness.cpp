@@ -1,6 +1,6 @@
 #include "materials/roughness.h"
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 

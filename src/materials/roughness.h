@@ -1,7 +1,7 @@
 // The roughness parameters pbrt-v4 materials share: "roughness" or the anisotropic pair
 // "uroughness"/"vroughness" (each a float or a float texture), and "remaproughness".
 #pragma once
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/texture.h"
 #include "materials/microfacet.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <memory>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/rng.h"
 

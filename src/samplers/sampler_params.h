@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "samplers/lowdiscrepancy.h"
 
 namespace eyetrace {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/lowdiscrepancy.h"
 

@@ -9,7 +9,7 @@
 #include <array>
 #include <memory>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/lowdiscrepancy.h"
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "shapes/analytic_shape.h"
 
 namespace eyetrace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/shape.h"
 #include "core/transform.h"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
 
 namespace eyetrace {

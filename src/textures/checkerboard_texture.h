@@ -6,7 +6,7 @@
 #pragma once
 #include <memory>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/texture.h"
 
 namespace eyetrace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/image_io.h"
-#include "core/texture_store.h"
+#include "render/image_io.h"
+#include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
 
 namespace eyetrace {

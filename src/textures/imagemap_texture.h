@@ -11,7 +11,7 @@
 #pragma once
 #include <memory>
 
-#include "core/registry.h"
+#include "scene/registry.h"
 #include "core/texture.h"
 
 namespace eyetrace {

@@ -21,7 +21,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/image_io.h"
+#include "render/image_io.h"
 
 extern char** environ;
 

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "cameras/lens_system_camera.h"
-#include "core/parser.h"
+#include "scene/parser.h"
 #include "optics/paraxial.h"
 
 namespace eyetrace {

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "cameras/perspective_camera.h"
-#include "core/parser.h"
+#include "scene/parser.h"
 #include "optics/paraxial.h"
 
 namespace eyetrace {

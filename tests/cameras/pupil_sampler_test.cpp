@@ -9,7 +9,7 @@
 #include <random>
 
 #include "cameras/lens_system_camera.h"
-#include "core/parser.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 namespace {

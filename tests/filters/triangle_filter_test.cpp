@@ -8,7 +8,7 @@
 
 #include "../support/chi2.h"
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "core/parser.h"
+#include "scene/parser.h"
 
 namespace {
 

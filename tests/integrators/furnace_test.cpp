@@ -3,8 +3,8 @@
 // so rho = 1 is the white furnace: the object must vanish into the background.
 #include <gtest/gtest.h>
 
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

@@ -2,8 +2,8 @@
 // number of threads, and another seed gives another image.
 #include <gtest/gtest.h>
 
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

@@ -5,8 +5,8 @@
 // point lands in, and how many rays are traced, follows from the lights.
 #include <gtest/gtest.h>
 
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

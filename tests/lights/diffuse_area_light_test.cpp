@@ -13,7 +13,7 @@
 
 #include "core/error.h"
 #include "core/sampling.h"
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "lights/diffuse_area_light.h"
 #include "light_test_util.h"
 

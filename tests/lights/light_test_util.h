@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 namespace {

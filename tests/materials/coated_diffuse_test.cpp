@@ -5,7 +5,7 @@
 #include <random>
 
 #include "core/arena.h"
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/coated_diffuse_material.h"
 #include "materials/local_bsdf.h"

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "core/arena.h"
-#include "core/spectrum.h"
-#include "core/texture_store.h"
+#include "scene/spectrum_param.h"
+#include "scene/texture_store.h"
 #include "materials/conductor_material.h"
 
 namespace eyetrace {

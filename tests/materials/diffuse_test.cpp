@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "core/arena.h"
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "materials/diffuse_material.h"
 #include "materials/interface_material.h"
 #include "textures/constant_texture.h"

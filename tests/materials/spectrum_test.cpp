@@ -4,8 +4,9 @@
 
 #include "core/cie_tables.h"
 #include "core/named_spectra.h"
-#include "core/params.h"
+#include "scene/params.h"
 #include "core/spectrum.h"
+#include "scene/spectrum_param.h"
 #include "materials/fresnel.h"
 
 namespace eyetrace {

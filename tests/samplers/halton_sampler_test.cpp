@@ -10,7 +10,7 @@
 #include <map>
 
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 // so the test can fail.
 #include <gtest/gtest.h>
 
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

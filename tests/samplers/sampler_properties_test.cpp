@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "../support/chi2.h"
-#include "core/params.h"
+#include "scene/params.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/sobol_sampler.h"

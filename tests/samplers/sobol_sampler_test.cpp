@@ -10,7 +10,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 #include "samplers/lowdiscrepancy.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "core/params.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <functional>
 
-#include "core/scene.h"
+#include "render/scene.h"
 
 namespace eyetrace {
 namespace {

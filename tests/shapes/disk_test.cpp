@@ -7,7 +7,7 @@
 #include <functional>
 #include <random>
 
-#include "core/scene.h"
+#include "render/scene.h"
 
 namespace eyetrace {
 namespace {

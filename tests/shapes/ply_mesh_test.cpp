@@ -9,7 +9,7 @@
 #include <fstream>
 #include <functional>
 
-#include "core/scene.h"
+#include "render/scene.h"
 
 namespace eyetrace {
 namespace {

@@ -2,7 +2,7 @@
 // parameters, the solid (3D) checker and the closed-form filtered average.
 #include <gtest/gtest.h>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "core/transform.h"
 #include "textures/checkerboard_texture.h"
 

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "core/transform.h"
 #include "textures/imagemap_texture.h"
 

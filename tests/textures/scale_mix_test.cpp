@@ -2,7 +2,7 @@
 // named textures.
 #include <gtest/gtest.h>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "core/transform.h"
 #include "textures/checkerboard_texture.h"
 #include "textures/constant_texture.h"

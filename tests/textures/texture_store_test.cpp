@@ -2,7 +2,7 @@
 // references that do not resolve.
 #include <gtest/gtest.h>
 
-#include "core/texture_store.h"
+#include "scene/texture_store.h"
 #include "textures/constant_texture.h"
 
 namespace eyetrace {

@@ -1,0 +1,79 @@
+// Integrator interface: the base class owns the parallel tile loop (render()), each
+// integrator supplies radiance() for one camera ray. render() works in passes of
+// sample-index ranges so that it can stop between tiles, report each finished pass (for
+// checkpoints), and resume from a saved film with the same result as an uninterrupted run.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "core/arena.h"
+#include "core/camera.h"
+#include "core/ray.h"
+#include "core/sampler.h"
+#include "render/tile_progress.h"
+
+namespace eyetrace {
+
+class Scene;
+class Film;
+
+// Counters shared by all threads (relaxed atomics: totals only).
+struct RenderCounters {
+  std::atomic<uint64_t> camera_rays{0};
+  std::atomic<uint64_t> camera_rays_lost{0};
+  std::atomic<uint64_t> rays_traced{0};      // every ray given to Embree (closest or shadow)
+  std::atomic<uint64_t> samples{0};          // camera samples taken
+  std::atomic<uint64_t> nonfinite_samples{0};
+  std::atomic<uint64_t> shadow_rays{0};          // of rays_traced: occlusion tests for light samples
+  std::atomic<uint64_t> shadow_rays_skipped{0};  // scattering points that needed no occlusion test
+};
+
+// Per-thread tally, flushed to RenderCounters once per tile to keep atomics off the hot path.
+struct RayTally {
+  uint64_t rays = 0;
+  uint64_t shadow_rays = 0;
+  // Scattering points where light sampling traced no shadow ray because it could not
+  // contribute (no lights, a specular BSDF, a zero light sample or a zero f cos term).
+  uint64_t shadow_rays_skipped = 0;
+};
+
+struct RenderOptions {
+  int threads = 0;  // 0: all cores
+  bool progress = true;
+  // Called from the render loop with the fraction done; may print a progress line.
+  std::function<void(double fraction, uint64_t rays)> on_progress;
+
+  // In: the samples the film already holds (resuming a checkpoint); empty means none.
+  // Out: where the render stopped. Null: the render keeps its own.
+  TileProgress* tiles = nullptr;
+  // Checked before each tile: once true, tiles not yet started in the pass are skipped and
+  // render() returns (tiles in flight finish their pass range, so every tile stays whole).
+  const std::atomic<bool>* stop = nullptr;
+  // Samples per pixel in each pass; 0 picks pass sizes so that a pass takes about
+  // pass_seconds (1, 2, 4, ... samples, at most doubling). The image does not depend on it.
+  int pass_samples = 0;
+  double pass_seconds = 1.0;
+  // Called after every complete pass, on the calling thread, with no tile in flight: the
+  // film and `tiles` are consistent, so this is where a checkpoint can be written.
+  std::function<void(const TileProgress&)> on_pass;
+};
+
+class Integrator {
+ public:
+  explicit Integrator(const Scene& scene) : scene_(scene) {}
+  virtual ~Integrator() = default;
+
+  // Radiance arriving along `ray` (camera weight not included).
+  virtual RGB radiance(const Ray& ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const = 0;
+  virtual std::string to_string() const = 0;
+
+  // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel.
+  void render(const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts,
+              RenderCounters& counters) const;
+
+ protected:
+  const Scene& scene_;
+};
+
+}  // namespace eyetrace

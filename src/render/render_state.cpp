@@ -1,0 +1,247 @@
+#include "render/render_state.h"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace eyetrace {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kMagic = "EYETRACE-RENDER-STATE\n";
+
+// Native byte order: a state file is for resuming on the machine (or kind of machine) that
+// wrote it. The byte-order mark below makes any other reader refuse it instead of misreading.
+constexpr uint32_t kByteOrderMark = 0x01020304;
+
+class Writer {
+ public:
+  template <typename T>
+  void put(const T& v) {
+    bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  template <typename T>
+  void put_array(const std::vector<T>& v) {
+    put(uint64_t(v.size()));
+    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  std::string& bytes() { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
+  template <typename T>
+  T get() {
+    T v;
+    need(sizeof v);
+    std::memcpy(&v, bytes_.data() + pos_, sizeof v);
+    pos_ += sizeof v;
+    return v;
+  }
+  template <typename T>
+  std::vector<T> get_array() {
+    uint64_t n = get<uint64_t>();
+    if (n > (bytes_.size() - pos_) / sizeof(T)) corrupt("an array is longer than the file");
+    std::vector<T> v(n);
+    std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(T));
+    pos_ += n * sizeof(T);
+    return v;
+  }
+  size_t position() const { return pos_; }
+  [[noreturn]] void corrupt(const std::string& why) const {
+    throw_error(fmt::format("render state \"{}\": {} (the file is damaged; render without --resume)", path_, why));
+  }
+
+ private:
+  void need(size_t n) const {
+    if (bytes_.size() - pos_ < n) corrupt("it ends early");
+  }
+  const std::string& bytes_;
+  const std::string& path_;
+  size_t pos_ = 0;
+};
+
+// Hashes a scene description field by field; values enter as their exact bits.
+class Fingerprint {
+ public:
+  void add(std::string_view s) {
+    uint64_t n = s.size();
+    h_ = fnv1a(std::string_view(reinterpret_cast<const char*>(&n), sizeof n), h_);
+    h_ = fnv1a(s, h_);
+  }
+  template <typename T>
+  void add_pod(const T& v) {
+    h_ = fnv1a(std::string_view(reinterpret_cast<const char*>(&v), sizeof v), h_);
+  }
+  void add(const ParameterList& params) {
+    add_pod(params.params().size());
+    for (const Param& p : params.params()) {
+      add(p.type);
+      add(p.name);
+      add_pod(p.numbers.size());
+      for (double v : p.numbers) add_pod(v);
+      add_pod(p.strings.size());
+      for (const std::string& s : p.strings) add(s);
+      add_pod(p.bools.size());
+      for (bool b : p.bools) add_pod(b);
+    }
+  }
+  void add(const Transform& t) {
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) add_pod(t.matrix()[c][r]);
+  }
+  void add(const SceneEntity& e) {
+    add(e.name);
+    add(e.params);
+  }
+  void add(const TransformedEntity& e) {
+    add(static_cast<const SceneEntity&>(e));
+    add(e.world_from_object);
+    add_pod(e.reverse_orientation);
+  }
+  void add(const ShapeEntity& s) {
+    add(static_cast<const TransformedEntity&>(s));
+    add_pod(s.material.index);
+    add(s.material.name);
+    add_pod(s.area_light);
+  }
+  template <typename T>
+  void add_all(const std::vector<T>& v) {
+    add_pod(v.size());
+    for (const T& e : v) add(e);
+  }
+  uint64_t value() const { return h_; }
+
+ private:
+  uint64_t h_ = fnv1a("");
+};
+
+}  // namespace
+
+uint64_t fnv1a(std::string_view bytes, uint64_t h) {
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options) {
+  Fingerprint f;
+  f.add(options);
+  f.add_pod(d.has_camera);
+  f.add(d.camera);
+  f.add(d.camera.world_from_camera);
+  for (const SceneEntity* e : {&d.film, &d.sampler, &d.integrator, &d.filter}) f.add(*e);
+  f.add(d.color_space);
+  f.add_all(d.options);
+  f.add_all(d.materials);
+  for (const auto& [name, m] : d.named_materials) {
+    f.add(name);
+    f.add(m);
+  }
+  f.add_pod(d.textures.size());
+  for (const TextureEntity& t : d.textures) {
+    f.add(static_cast<const TransformedEntity&>(t));
+    f.add(t.texture_name);
+    f.add(t.value_type);
+  }
+  f.add_all(d.shapes);
+  f.add_all(d.lights);
+  f.add_all(d.area_lights);
+  for (const auto& [name, def] : d.instances) {
+    f.add(name);
+    f.add_all(def.shapes);
+  }
+  for (const InstanceUse& u : d.instance_uses) {
+    f.add(u.name);
+    f.add(u.world_from_instance);
+  }
+  f.add(d.search_dir);
+  return f.value();
+}
+
+void write_render_state(const std::string& path, const RenderState& s) {
+  Writer w;
+  w.bytes().append(kMagic);
+  w.put(kByteOrderMark);
+  w.put(RenderState::kVersion);
+  w.put(s.fingerprint);
+  for (int v : {s.resolution.x, s.resolution.y, s.bounds.lo.x, s.bounds.lo.y, s.bounds.hi.x, s.bounds.hi.y,
+                s.samples_per_pixel, TileProgress::kTileSize, s.tiles.tiles.x, s.tiles.tiles.y})
+    w.put(int32_t(v));
+  w.put_array(s.tiles.done);
+  w.put(s.nonfinite_samples);
+  w.put_array(s.accumulators);
+  w.put(fnv1a(w.bytes()));
+
+  fs::path target(path);
+  fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  fs::path tmp = dir / fmt::format(".{}.tmp{:08x}", target.filename().string(), std::random_device()());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(w.bytes().data(), std::streamsize(w.bytes().size()));
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw_error(fmt::format("render state \"{}\": cannot write", path));
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw_error(fmt::format("render state \"{}\": cannot move it into place", path));
+  }
+}
+
+RenderState read_render_state(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw_error(fmt::format("render state \"{}\" not found: --resume needs the state an interrupted or "
+                            "checkpointed render leaves next to its output", path));
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Reader r(bytes, path);
+  if (bytes.compare(0, kMagic.size(), kMagic) != 0) r.corrupt("not an eyetrace render state");
+  if (bytes.size() < kMagic.size() + 8 + 8) r.corrupt("it ends early");
+  uint64_t stored_sum;
+  std::memcpy(&stored_sum, bytes.data() + bytes.size() - 8, 8);
+  if (fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8)) != stored_sum) r.corrupt("its checksum does not match");
+  for (size_t i = 0; i < kMagic.size(); ++i) r.get<char>();
+  if (r.get<uint32_t>() != kByteOrderMark) r.corrupt("it was written on a machine of another byte order");
+  uint32_t version = r.get<uint32_t>();
+  if (version != RenderState::kVersion)
+    r.corrupt(fmt::format("format version {}, this eyetrace reads version {}", version, RenderState::kVersion));
+  RenderState s;
+  s.fingerprint = r.get<uint64_t>();
+  int32_t v[10];
+  for (int32_t& x : v) x = r.get<int32_t>();
+  s.resolution = IVec2(v[0], v[1]);
+  s.bounds = PixelBounds{IVec2(v[2], v[3]), IVec2(v[4], v[5])};
+  s.samples_per_pixel = v[6];
+  if (v[7] != TileProgress::kTileSize) r.corrupt("it was written with another tile size");
+  s.tiles.tiles = IVec2(v[8], v[9]);
+  s.tiles.done = r.get_array<int>();
+  s.nonfinite_samples = r.get<uint64_t>();
+  s.accumulators = r.get_array<double>();
+  if (r.position() + 8 != bytes.size()) r.corrupt("it has trailing bytes");
+  bool sane = s.bounds.lo.x >= 0 && s.bounds.lo.y >= 0 && s.bounds.hi.x > s.bounds.lo.x &&
+              s.bounds.hi.y > s.bounds.lo.y && s.tiles.matches(s.bounds) && s.accumulators.size() == s.bounds.area() * 4;
+  if (!sane) r.corrupt("its film and tile sizes disagree");
+  for (int d : s.tiles.done)
+    if (d < 0 || d > s.samples_per_pixel) r.corrupt("a tile count is outside [0, samples per pixel]");
+  return s;
+}
+
+}  // namespace eyetrace

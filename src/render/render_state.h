@@ -1,0 +1,42 @@
+// A render's resumable state, saved next to the output image as "<output>.state": the film's
+// exact double accumulators, the samples each tile holds, and a fingerprint of everything
+// that decides the image, so `eyetrace render --resume` continues a stopped render to the
+// same bits an uninterrupted one gives, and refuses a state made for another scene.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/film.h"
+#include "scene/scene_description.h"
+#include "render/tile_progress.h"
+
+namespace eyetrace {
+
+struct RenderState {
+  static constexpr uint32_t kVersion = 1;
+  uint64_t fingerprint = 0;  // of the scene and every option that changes the image
+  IVec2 resolution{0};
+  PixelBounds bounds;
+  int samples_per_pixel = 0;  // requested
+  TileProgress tiles;
+  std::vector<double> accumulators;  // Film::accumulators()
+  uint64_t nonfinite_samples = 0;
+};
+
+// The state file that belongs to an output image.
+inline std::string state_path(const std::string& output) { return output + ".state"; }
+
+// Writes through a temporary file and a rename, like images. Throws SceneError naming the file.
+void write_render_state(const std::string& path, const RenderState& state);
+// Throws SceneError naming the file when it is missing, truncated, corrupt or another version.
+RenderState read_render_state(const std::string& path);
+
+// FNV-1a, 64 bits: a fingerprint, not a cryptographic hash.
+uint64_t fnv1a(std::string_view bytes, uint64_t h = 0xcbf29ce484222325ull);
+// Every directive, parameter value (exactly, as parsed) and transform of the scene, plus
+// `options` (the command-line settings that change the image), hashed.
+uint64_t scene_fingerprint(const SceneDescription& desc, const std::string& options);
+
+}  // namespace eyetrace

@@ -1,0 +1,276 @@
+// The Embree side of the scene: one device, a root BVH over every shape and instance, and
+// the mapping from Embree's hit record (geometry, instance and primitive IDs) back to the
+// shape, material and emitter that own it.
+#include "render/scene.h"
+
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+#include "core/error.h"
+
+namespace eyetrace {
+
+namespace {
+
+// Embree reports errors through a callback that must not throw (it runs inside Embree's C
+// API); it records the first message per device and the Scene turns it into a SceneError at
+// its next checkpoint.
+std::mutex g_error_mutex;
+std::map<const void*, std::string> g_errors;  // by device
+
+void embree_error_callback(void* device, RTCError code, const char* str) {
+  if (code == RTC_ERROR_NONE) return;
+  std::lock_guard<std::mutex> lock(g_error_mutex);
+  std::string& message = g_errors[device];
+  if (message.empty()) message = fmt::format("Embree error {}: {}", int(code), str ? str : "");
+}
+
+void check_embree(RTCDevice device, const std::string& what) {
+  std::string message;
+  {
+    std::lock_guard<std::mutex> lock(g_error_mutex);
+    auto it = g_errors.find(device);
+    if (it == g_errors.end()) return;
+    message = std::move(it->second);
+    g_errors.erase(it);
+  }
+  if (!message.empty()) throw_error(fmt::format("{}: {}", what, message));
+}
+
+void forget_errors(RTCDevice device) {
+  std::lock_guard<std::mutex> lock(g_error_mutex);
+  g_errors.erase(device);
+}
+
+bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Rays Embree must never see: non-finite origin or direction, a zero direction (no
+// direction to report wo for) or an empty/NaN [0, tmax] interval.
+bool traceable(const Ray& ray) {
+  return finite3(ray.o) && finite3(ray.d) && (ray.d.x != 0.f || ray.d.y != 0.f || ray.d.z != 0.f) &&
+         ray.tmax > 0.f;
+}
+
+RTCRay to_embree(const Ray& ray) {
+  RTCRay r;
+  r.org_x = ray.o.x, r.org_y = ray.o.y, r.org_z = ray.o.z;
+  r.dir_x = ray.d.x, r.dir_y = ray.d.y, r.dir_z = ray.d.z;
+  r.tnear = 0.f;
+  r.tfar = ray.tmax;
+  r.time = ray.time;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+Bounds3 transform_bounds(const Transform& t, const Bounds3& b) {
+  Bounds3 out;
+  if (b.empty()) return out;
+  for (int corner = 0; corner < 8; ++corner) {
+    Vec3 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y, (corner & 4) ? b.hi.z : b.lo.z);
+    out.extend(t.point(p));
+  }
+  return out;
+}
+
+Vec3 normalized_or(const Vec3& v, const Vec3& fallback) {
+  float len = glm::length(v);
+  return (len > 0.f && std::isfinite(len)) ? v / len : fallback;
+}
+
+// An interaction computed in instance space, moved to world space: points by the transform,
+// tangents as vectors, normals by the inverse transpose (as pbrt-v4 does for instances).
+SurfaceInteraction to_world(const SurfaceInteraction& local, const Transform& world_from_instance) {
+  SurfaceInteraction si = local;
+  si.p = world_from_instance.point(local.p);
+  si.n = normalized_or(world_from_instance.normal(local.n), local.n);
+  si.ns = normalized_or(world_from_instance.normal(local.ns), si.n);
+  if (glm::dot(si.ns, si.n) < 0.f) si.ns = -si.ns;
+  si.dpdu = world_from_instance.vector(local.dpdu);
+  si.dpdv = world_from_instance.vector(local.dpdv);
+  return si;
+}
+
+}  // namespace
+
+struct Scene::InstanceGroup {
+  ~InstanceGroup() {
+    if (scene) rtcReleaseScene(scene);
+  }
+  RTCScene scene = nullptr;
+  std::vector<Primitive> prims;  // indexed by geometry ID inside `scene`
+  Bounds3 bounds;
+  size_t primitive_count = 0;
+};
+
+struct Scene::Placement {
+  const InstanceGroup* group = nullptr;
+  Transform world_from_instance;
+};
+
+Scene::Scene() {
+  // Threads follow the hardware (Embree shares TBB's pool with the renderer); no thread
+  // pinning, since the machine is shared with other processes.
+  device_ = rtcNewDevice("set_affinity=0,verbose=0");
+  if (!device_) throw_error(fmt::format("cannot create the Embree device (error {})", int(rtcGetDeviceError(nullptr))));
+  rtcSetDeviceErrorFunction(device_, embree_error_callback, device_);
+  root_ = rtcNewScene(device_);
+  // ROBUST: eye models put thin, strongly curved surfaces close together; avoid Embree's
+  // optimisations that trade accuracy for speed.
+  rtcSetSceneFlags(root_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(root_, RTC_BUILD_QUALITY_HIGH);
+  check_embree(device_, "creating the scene");
+}
+
+Scene::~Scene() {
+  // Embree scenes hold callbacks into the shapes: release them before the shapes go.
+  // (Embree reference-counts: the device lives until the last scene is released.)
+  if (root_) rtcReleaseScene(root_);
+  groups_.clear();
+  if (device_) {
+    rtcReleaseDevice(device_);
+    forget_errors(device_);
+  }
+}
+
+void Scene::add_primitive(Primitive prim) {
+  if (committed_) throw std::logic_error("Scene::add_primitive after commit()");
+  if (!prim.shape) throw std::invalid_argument("Scene::add_primitive: null shape");
+  unsigned id = prim.shape->attach(device_, root_);
+  check_embree(device_, "adding a shape to the Embree scene");
+  bounds_.extend(prim.shape->bounds());
+  if (geom_kind_.size() <= id) {
+    geom_kind_.resize(id + 1, -1);
+    geom_index_.resize(id + 1, 0);
+  }
+  geom_kind_[id] = 0;
+  geom_index_[id] = prims_.size();
+  prims_.push_back(std::move(prim));
+}
+
+void Scene::define_instance(const std::string& name, std::vector<Primitive> prims) {
+  if (committed_) throw std::logic_error("Scene::define_instance after commit()");
+  if (groups_.count(name)) throw_error(fmt::format("object \"{}\" is defined twice", name));
+  auto group = std::make_unique<InstanceGroup>();
+  group->scene = rtcNewScene(device_);
+  rtcSetSceneFlags(group->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(group->scene, RTC_BUILD_QUALITY_HIGH);
+  for (auto& prim : prims) {
+    if (!prim.shape) throw std::invalid_argument("Scene::define_instance: null shape");
+    unsigned id = prim.shape->attach(device_, group->scene);
+    check_embree(device_, "adding a shape to an object instance");
+    group->bounds.extend(prim.shape->bounds());
+    group->primitive_count += prim.shape->primitive_count();
+    if (group->prims.size() <= id) group->prims.resize(id + 1);
+    group->prims[id] = std::move(prim);
+  }
+  // An instanced scene must be committed before any scene that instances it.
+  rtcCommitScene(group->scene);
+  check_embree(device_, fmt::format("building object \"{}\"", name));
+  groups_.emplace(name, std::move(group));
+}
+
+bool Scene::has_instance(const std::string& name) const { return groups_.count(name) != 0; }
+
+void Scene::add_instance(const std::string& name, const Transform& world_from_instance) {
+  if (committed_) throw std::logic_error("Scene::add_instance after commit()");
+  auto it = groups_.find(name);
+  if (it == groups_.end()) throw_error(fmt::format("object \"{}\" is not defined", name));
+  const InstanceGroup* group = it->second.get();
+  if (group->prims.empty()) return;  // an empty object contributes nothing
+  RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(geom, group->scene);
+  rtcSetGeometryTimeStepCount(geom, 1);
+  // glm matrices are column-major 4x4 floats, exactly Embree's FLOAT4X4_COLUMN_MAJOR.
+  rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &world_from_instance.matrix()[0][0]);
+  rtcCommitGeometry(geom);
+  unsigned id = rtcAttachGeometry(root_, geom);
+  rtcReleaseGeometry(geom);
+  check_embree(device_, fmt::format("placing object \"{}\"", name));
+  bounds_.extend(transform_bounds(world_from_instance, group->bounds));
+  if (geom_kind_.size() <= id) {
+    geom_kind_.resize(id + 1, -1);
+    geom_index_.resize(id + 1, 0);
+  }
+  geom_kind_[id] = 1;
+  geom_index_[id] = placements_.size();
+  placements_.push_back(Placement{group, world_from_instance});
+}
+
+void Scene::add_light(std::unique_ptr<Light> light) {
+  if (!light) throw std::invalid_argument("Scene::add_light: null light");
+  lights_.push_back(light.get());
+  if (light->is_infinite()) infinite_lights_.push_back(light.get());
+  light_store_.push_back(std::move(light));
+}
+
+void Scene::commit() {
+  if (committed_) throw std::logic_error("Scene::commit called twice");
+  rtcCommitScene(root_);
+  check_embree(device_, "building the scene BVH");
+  committed_ = true;
+  // Lights need a finite extent even for an empty scene: use the origin.
+  Bounds3 extent = bounds_;
+  if (extent.empty()) extent.extend(Vec3(0.f));
+  if (bounds_.empty()) bounds_ = extent;
+  for (auto& light : light_store_) light->preprocess(extent);
+}
+
+bool Scene::intersect(const Ray& ray, SurfaceInteraction* si) const {
+  if (!committed_) throw std::logic_error("Scene::intersect before commit()");
+  if (!traceable(ray)) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray = to_embree(ray);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(root_, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+  float t = rh.ray.tfar;
+  Vec2 uv(rh.hit.u, rh.hit.v);
+  Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  const Primitive* prim;
+  if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+    prim = &prims_[geom_index_[rh.hit.geomID]];
+    *si = prim->shape->interaction(ray, t, rh.hit.primID, uv, ng);
+  } else {
+    const Placement& place = placements_[geom_index_[rh.hit.instID[0]]];
+    prim = &place.group->prims[rh.hit.geomID];
+    // The same ray in instance space: t is unchanged because the direction is mapped
+    // linearly without renormalisation.
+    const Transform& inst = place.world_from_instance;
+    Ray local{Vec3(inst.inverse_matrix() * Vec4(ray.o, 1.f)), Vec3(inst.inverse_matrix() * Vec4(ray.d, 0.f)),
+              ray.tmax, ray.time};
+    *si = to_world(prim->shape->interaction(local, t, rh.hit.primID, uv, ng), inst);
+  }
+  si->t = t;
+  si->time = ray.time;
+  si->wo = -glm::normalize(ray.d);
+  si->material = prim->material;
+  si->area_light = prim->area_light;
+  return true;
+}
+
+bool Scene::occluded(const Ray& ray) const {
+  if (!committed_) throw std::logic_error("Scene::occluded before commit()");
+  if (!traceable(ray)) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = to_embree(ray);
+  rtcOccluded1(root_, &context, &r);
+  // Embree marks an occluded ray by setting tfar to -inf.
+  return r.tfar < 0.f;
+}
+
+size_t Scene::primitive_count() const {
+  size_t n = 0;
+  for (const auto& prim : prims_) n += prim.shape->primitive_count();
+  for (const auto& [name, group] : groups_) n += group->primitive_count;
+  return n;
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,201 @@
+#include "scene/param_reader.h"
+
+#include <cmath>
+
+namespace eyetrace {
+
+namespace {
+
+enum class ValueKind { kNumbers, kIntegers, kBools, kStrings, kSpectrum };
+
+struct ParamType {
+  const char* name;
+  ValueKind kind;
+  size_t tuple;  // values per element: 3 for point3, 1 for float
+};
+
+// pbrt-v4's parameter types, plus the pbrt-v3 spellings it still reads.
+constexpr ParamType kParamTypes[] = {
+    {"float", ValueKind::kNumbers, 1},     {"integer", ValueKind::kIntegers, 1},
+    {"bool", ValueKind::kBools, 1},        {"string", ValueKind::kStrings, 1},
+    {"texture", ValueKind::kStrings, 1},   {"point2", ValueKind::kNumbers, 2},
+    {"vector2", ValueKind::kNumbers, 2},   {"point3", ValueKind::kNumbers, 3},
+    {"vector3", ValueKind::kNumbers, 3},   {"normal", ValueKind::kNumbers, 3},
+    {"normal3", ValueKind::kNumbers, 3},   {"point", ValueKind::kNumbers, 3},
+    {"vector", ValueKind::kNumbers, 3},    {"rgb", ValueKind::kNumbers, 3},
+    {"color", ValueKind::kNumbers, 3},     {"spectrum", ValueKind::kSpectrum, 1},
+    {"blackbody", ValueKind::kNumbers, 1},
+};
+
+const ParamType* find_type(const std::string& name) {
+  for (const auto& t : kParamTypes)
+    if (name == t.name) return &t;
+  return nullptr;
+}
+
+std::vector<std::string> split_words(const std::string& s) {
+  std::vector<std::string> words;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    size_t start = i;
+    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
+    if (i > start) words.push_back(s.substr(start, i - start));
+  }
+  return words;
+}
+
+// Adds value tokens to one parameter, checking each against the declared type.
+class ValueReader {
+ public:
+  ValueReader(Tokenizer& tok, Param& p, const ParamType& type) : tok_(tok), p_(p), type_(type) {}
+
+  // `open` is the '[' the value sits in, if any (for the missing-']' hint).
+  void add(const Token& t, const Token* open) {
+    if (t.kind == TokenKind::kString) return add_string(t);
+    if (t.text == "true" || t.text == "false") {
+      if (type_.kind != ValueKind::kBools) fail(t, fmt::format("expected {}, got {}", expected(), t.text));
+      p_.bools.push_back(t.text == "true");
+      return;
+    }
+    if (type_.kind == ValueKind::kBools || type_.kind == ValueKind::kStrings)
+      fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
+    if (type_.kind == ValueKind::kSpectrum && !p_.strings.empty())
+      fail(t, "cannot mix numbers and a spectrum name");
+    p_.numbers.push_back(number(t, open));
+  }
+
+  void check_counts() const {
+    size_t n = p_.numbers.size() + p_.strings.size() + p_.bools.size();
+    if (n == 0) eyetrace::fail(p_.loc, "parameter \"{}\" has no values", declaration());
+    size_t nums = p_.numbers.size();
+    if (type_.tuple > 1 && nums % type_.tuple != 0)
+      eyetrace::fail(p_.loc, "parameter \"{}\" needs a multiple of {} values, got {}", declaration(),
+                     type_.tuple, nums);
+    if (type_.kind != ValueKind::kSpectrum) return;
+    if (nums > 1 && nums % 2 != 0)
+      eyetrace::fail(p_.loc,
+                     "parameter \"{}\" needs one constant value or (wavelength, value) pairs, got {} values",
+                     declaration(), nums);
+    if (p_.strings.size() > 1)
+      eyetrace::fail(p_.loc, "parameter \"{}\" takes one spectrum name or file name, got {}", declaration(),
+                     p_.strings.size());
+  }
+
+ private:
+  std::string declaration() const { return p_.type + " " + p_.name; }
+
+  const char* expected() const {
+    switch (type_.kind) {
+      case ValueKind::kBools: return "true or false";
+      case ValueKind::kStrings: return "a quoted string";
+      case ValueKind::kIntegers: return "an integer";
+      case ValueKind::kSpectrum: return "numbers or a quoted spectrum name";
+      case ValueKind::kNumbers: break;
+    }
+    return "a number";
+  }
+
+  [[noreturn]] void fail(const Token& t, const std::string& message) const {
+    eyetrace::fail(tok_.loc(t), "parameter \"{}\": {}", declaration(), message);
+  }
+
+  void add_string(const Token& t) {
+    std::string s = t.string_value();
+    switch (type_.kind) {
+      case ValueKind::kBools:
+        if (s != "true" && s != "false") fail(t, fmt::format("expected true or false, got {}", t.describe()));
+        p_.bools.push_back(s == "true");
+        return;
+      case ValueKind::kSpectrum:
+        if (!p_.numbers.empty()) fail(t, "cannot mix numbers and a spectrum name");
+        [[fallthrough]];
+      case ValueKind::kStrings:
+        p_.strings.push_back(std::move(s));
+        return;
+      default:
+        fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
+    }
+  }
+
+  double number(const Token& t, const Token* open) const {
+    double v = 0;
+    switch (parse_number(t.text, &v)) {
+      case NumberStatus::kOk: break;
+      case NumberStatus::kNotANumber: {
+        std::string hint;
+        if (open) hint = fmt::format(" (is the ']' for the '[' at {}:{} missing?)", open->line, open->column);
+        fail(t, fmt::format("expected {}, got {}{}", expected(), t.describe(), hint));
+      }
+      case NumberStatus::kNotFinite: fail(t, fmt::format("{} is not a finite number", t.describe()));
+      case NumberStatus::kOutOfRange: fail(t, fmt::format("value {} is out of range", t.text));
+    }
+    if (type_.kind == ValueKind::kIntegers && (v != std::floor(v) || std::abs(v) > 2147483647.0))
+      fail(t, fmt::format("value {} is not a 32-bit integer", t.text));
+    return v;
+  }
+
+  Tokenizer& tok_;
+  Param& p_;
+  const ParamType& type_;
+};
+
+Param declare(const Tokenizer& tok, const Token& decl) {
+  std::string text = decl.string_value();
+  std::vector<std::string> words = split_words(text);
+  if (words.size() != 2)
+    fail(tok.loc(decl), "malformed parameter declaration \"{}\": expected \"type name\"", text);
+  if (!find_type(words[0])) {
+    std::vector<std::string> names;
+    for (const auto& t : kParamTypes) names.push_back(t.name);
+    std::string hint = closest_match(words[0], names);
+    fail(tok.loc(decl), "unknown parameter type \"{}\" in \"{}\"{}", words[0], text,
+         hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint));
+  }
+  Param p;
+  p.type = words[0];
+  p.name = words[1];
+  p.loc = tok.loc(decl);
+  return p;
+}
+
+}  // namespace
+
+Param read_parameter(Tokenizer& tok, const Token& decl) {
+  Param p = declare(tok, decl);
+  ValueReader reader(tok, p, *find_type(p.type));
+  Token v = tok.next();
+  switch (v.kind) {
+    case TokenKind::kWord:
+    case TokenKind::kString:
+      reader.add(v, nullptr);
+      break;
+    case TokenKind::kOpenBracket:
+      for (Token t = tok.next(); t.kind != TokenKind::kCloseBracket; t = tok.next()) {
+        if (t.kind == TokenKind::kEnd)
+          fail(tok.loc(v), "parameter \"{} {}\": '[' has no matching ']' before the end of the file", p.type, p.name);
+        if (t.kind == TokenKind::kOpenBracket)
+          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)",
+               p.type, p.name, v.line, v.column);
+        reader.add(t, &v);
+      }
+      break;
+    case TokenKind::kCloseBracket:
+      fail(tok.loc(v), "parameter \"{} {}\": unexpected ']' (no matching '[')", p.type, p.name);
+    case TokenKind::kEnd:
+      fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
+  }
+  reader.check_counts();
+  return p;
+}
+
+ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc) {
+  ParameterList list(directive_loc);
+  while (tok.peek().kind == TokenKind::kString) {
+    Token decl = tok.next();
+    list.add(read_parameter(tok, decl));
+  }
+  return list;
+}
+
+}  // namespace eyetrace

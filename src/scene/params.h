@@ -1,0 +1,78 @@
+// A directive's typed parameter list ("float fov" [45], "rgb reflectance" [.5 .5 .5], ...).
+// Every lookup marks the parameter used; check_unused() then reports leftovers as errors,
+// as pbrt-v4 does, so a misspelled parameter never passes silently.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/math.h"
+
+namespace eyetrace {
+
+struct Param {
+  std::string type;  // as written: float integer bool string point2 vector2 point3 vector3
+                     // normal rgb spectrum blackbody texture (point, vector, normal3, color too)
+  std::string name;
+  SourceLoc loc;
+  std::vector<double> numbers;       // numeric values (float, integer, points, rgb, spectrum pairs)
+  std::vector<std::string> strings;  // string, texture, named spectrum values
+  std::vector<bool> bools;
+  mutable bool used = false;
+  // Canonical type: "point" -> "point3", "vector" -> "vector3", "normal3" -> "normal", "color" -> "rgb".
+  std::string canonical_type() const;
+};
+
+class ParameterList {
+ public:
+  ParameterList() = default;
+  explicit ParameterList(SourceLoc directive_loc) : loc_(std::move(directive_loc)) {}
+
+  void add(Param p);  // a repeated name is an error at the second occurrence
+  const SourceLoc& loc() const { return loc_; }
+  const std::vector<Param>& params() const { return params_; }
+  bool has(const std::string& name) const { return find(name) != nullptr; }
+  const Param* find(const std::string& name) const;
+
+  // Single values. A parameter of the same name but another type is an error naming both.
+  float get_float(const std::string& name, float def) const;
+  int get_int(const std::string& name, int def) const;
+  bool get_bool(const std::string& name, bool def) const;
+  std::string get_string(const std::string& name, const std::string& def) const;
+  Vec3 get_point3(const std::string& name, const Vec3& def) const;
+  Vec3 get_vector3(const std::string& name, const Vec3& def) const;
+  // An "rgb", "spectrum" or "blackbody" parameter as linear RGB; nullopt if absent.
+  std::optional<RGB> get_rgb(const std::string& name) const;
+  // A "spectrum", "rgb" (its green value) or "float" parameter at one wavelength; def if absent.
+  float get_spectrum_at(const std::string& name, float lambda_nm, float def) const;
+  // Name of a "texture" parameter, or "" when absent.
+  std::string get_texture(const std::string& name) const;
+
+  // Arrays (empty if absent).
+  std::vector<float> get_floats(const std::string& name) const;
+  std::vector<int> get_ints(const std::string& name) const;
+  std::vector<std::string> get_strings(const std::string& name) const;
+  std::vector<Vec2> get_point2s(const std::string& name) const;
+  std::vector<Vec3> get_point3s(const std::string& name) const;
+  std::vector<Vec3> get_normals(const std::string& name) const;
+
+  // Checked lookups: values outside [lo, hi] or non-finite are errors naming the parameter.
+  float get_float_in(const std::string& name, float def, float lo, float hi) const;
+  int get_int_in(const std::string& name, int def, int lo, int hi) const;
+
+  // Errors at a parameter's location (or the directive's if the parameter is absent).
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const;
+  // Report every parameter never looked up: "unused parameter "flov" (did you mean "fov"?)".
+  void check_unused(const std::string& directive, const std::vector<std::string>& known = {}) const;
+  void mark_all_used() const;
+
+ private:
+  const Param* lookup(const std::string& name, const char* type, size_t min_values) const;
+  void note_query(const std::string& name) const;
+  SourceLoc loc_;
+  std::vector<Param> params_;
+  mutable std::vector<std::string> queried_;  // every name a plugin asked for: did-you-mean candidates
+};
+
+}  // namespace eyetrace

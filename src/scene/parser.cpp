@@ -1,0 +1,236 @@
+// Entry points of the pbrt-v4 parser: reads files whole (Include/Import textually, with
+// recursion and depth checks), runs the directive loop, and checks what must be closed at
+// the end. The directives themselves are in scene_parser.cpp.
+#include "scene/parser.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "scene/param_reader.h"
+#include "scene/scene_parser.h"
+
+namespace eyetrace {
+namespace parsing {
+
+namespace {
+
+std::optional<std::string> read_whole_file(const fs::path& path, std::string* error) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    *error = "it is a directory";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) {
+    *error = std::strerror(errno);
+    return std::nullopt;
+  }
+  // One read of the whole file: meshes with millions of numbers are the common large case.
+  std::streamoff size = in.tellg();
+  if (size < 0) {
+    *error = "cannot determine its size";
+    return std::nullopt;
+  }
+  std::string text(size_t(size), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), std::streamsize(text.size()))) {
+    *error = "read error";
+    return std::nullopt;
+  }
+  return text;
+}
+
+}  // namespace
+
+SceneParser::SceneParser(fs::path search_dir) {
+  desc_.search_dir = search_dir.string();
+  desc_.camera.name = "perspective";
+  // pbrt-v4 starts with one anonymous diffuse material so shapes before any Material have one.
+  desc_.materials.push_back(SceneEntity{"diffuse", ParameterList(SourceLoc{}), SourceLoc{}});
+}
+
+// ---------------------------------------------------------------------------------------
+// Files and the directive loop
+
+void SceneParser::parse_file(const fs::path& path, const SourceLoc* included_from) {
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(path, ec);
+  if (ec) canonical = fs::absolute(path);
+  for (size_t i = 0; i < files_.size(); ++i) {
+    if (files_[i].canonical != canonical.string()) continue;
+    std::string chain;
+    for (size_t j = i; j < files_.size(); ++j) chain += fs::path(files_[j].canonical).filename().string() + " -> ";
+    fail(*included_from, "recursive Include of \"{}\" ({}{})", path.string(), chain, canonical.filename().string());
+  }
+  if (files_.size() >= kMaxIncludeDepth)
+    fail(*included_from, "Include nesting is deeper than {} files", kMaxIncludeDepth);
+  std::string error;
+  std::optional<std::string> text = read_whole_file(path, &error);
+  if (!text) {
+    std::string message = fmt::format("cannot read scene file \"{}\": {}", path.string(), error);
+    if (included_from) throw_error(*included_from, message);
+    throw_error(message);
+  }
+  Tokenizer tok(std::move(*text), path.string());
+  files_.push_back(OpenFile{canonical.string(), path.parent_path()});
+  run(tok);
+  files_.pop_back();
+}
+
+void SceneParser::parse_text(std::string text, const std::string& filename) {
+  std::error_code ec;
+  fs::path as_file = fs::weakly_canonical(fs::path(desc_.search_dir) / filename, ec);
+  Tokenizer tok(std::move(text), filename);
+  files_.push_back(OpenFile{as_file.string(), desc_.search_dir});
+  run(tok);
+  files_.pop_back();
+}
+
+void SceneParser::run(Tokenizer& tok) {
+  for (Token t = tok.next(); t.kind != TokenKind::kEnd; t = tok.next()) {
+    SourceLoc loc = tok.loc(t);
+    if (t.kind != TokenKind::kWord)
+      fail(loc, "unexpected {} where a directive (Shape, AttributeBegin, ...) was expected", t.describe());
+    auto it = handlers().find(t.text);
+    if (it == handlers().end()) unknown_directive(t, loc);
+    (this->*(it->second))(tok, loc);
+  }
+}
+
+void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const {
+  double v;
+  if (parse_number(t.text, &v) != NumberStatus::kNotANumber)
+    fail(loc, "unexpected number {} where a directive was expected (a list of several values needs [ ])",
+         t.text);
+  fail(loc, "unknown directive \"{}\"{}", t.text, hint_suffix(std::string(t.text), keys_of(handlers())));
+}
+
+SceneDescription SceneParser::finish(const std::string& top_file) {
+  if (!blocks_.empty()) {
+    const OpenBlock& b = blocks_.back();
+    const char* closer = b.directive == "ObjectBegin" ? "ObjectEnd"
+                         : b.directive == "TransformBegin" ? "TransformEnd" : "AttributeEnd";
+    fail(b.loc, "{} has no matching {} before the end of the scene", b.directive, closer);
+  }
+  if (!in_world_) throw_error(SourceLoc{top_file, 0, 0}, "the scene ends before WorldBegin");
+  return std::move(desc_);
+}
+
+fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc,
+                                      const char* directive) const {
+  fs::path p(name);
+  std::vector<fs::path> candidates;
+  if (p.is_absolute()) {
+    candidates.push_back(p);
+  } else {
+    fs::path dir = files_.empty() ? fs::path() : files_.back().dir;
+    candidates.push_back((dir / p).lexically_normal());
+    fs::path in_search = (fs::path(desc_.search_dir) / p).lexically_normal();
+    std::error_code ec;
+    if (fs::absolute(candidates[0], ec).lexically_normal() != in_search) candidates.push_back(in_search);
+  }
+  std::string looked;
+  for (const auto& c : candidates) {
+    std::error_code ec;
+    if (fs::exists(c, ec)) return c;
+    looked += (looked.empty() ? "" : ", ") + fmt::format("\"{}\"", c.string());
+  }
+  fail(loc, "{} \"{}\": file not found (looked for {})", directive, name, looked);
+}
+
+void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
+  std::string name = read_name(tok, directive, "file name");
+  parse_file(resolve_include(name, loc, directive), &loc);
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading helpers
+
+std::string SceneParser::read_name(Tokenizer& tok, const char* directive, const char* what, SourceLoc* at) {
+  Token t = tok.next();
+  if (t.kind != TokenKind::kString)
+    fail(tok.loc(t), "{}: expected a quoted {}, got {}", directive, what, t.describe());
+  if (at) *at = tok.loc(t);
+  return t.string_value();
+}
+
+std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directive, size_t count) {
+  std::vector<float> v;
+  while (v.size() < count) {
+    Token t = tok.next();
+    double x = 0;
+    NumberStatus status = t.kind == TokenKind::kWord ? parse_number(t.text, &x) : NumberStatus::kNotANumber;
+    if (status == NumberStatus::kOk && std::abs(x) > 3.0e38) status = NumberStatus::kOutOfRange;
+    if (status == NumberStatus::kNotANumber)
+      fail(tok.loc(t), "{} takes {} numbers; got {} after {}", directive, count, t.describe(), v.size());
+    if (status == NumberStatus::kNotFinite) fail(tok.loc(t), "{}: {} is not a finite number", directive, t.describe());
+    if (status == NumberStatus::kOutOfRange) fail(tok.loc(t), "{}: value {} is out of range", directive, t.text);
+    v.push_back(float(x));
+  }
+  return v;
+}
+
+SceneEntity SceneParser::read_entity(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
+  SceneEntity e;
+  e.name = read_name(tok, directive, "type name");
+  e.params = read_parameter_list(tok, loc);
+  e.loc = loc;
+  return e;
+}
+
+}  // namespace parsing
+
+using parsing::SceneParser;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path absolute_dir(const std::string& dir) {
+  std::error_code ec;
+  fs::path p = dir.empty() ? fs::current_path(ec) : fs::absolute(dir, ec);
+  return p.lexically_normal();
+}
+
+}  // namespace
+
+SceneDescription parse_scene_file(const std::string& path) {
+  std::error_code ec;
+  fs::path abs = fs::absolute(path, ec);
+  SceneParser parser(abs.parent_path().lexically_normal());
+  parser.parse_file(path, nullptr);
+  return parser.finish(path);
+}
+
+SceneDescription parse_scene_string(std::string_view text, const std::string& filename,
+                                    const std::string& search_dir) {
+  SceneParser parser(absolute_dir(search_dir));
+  parser.parse_text(std::string(text), filename);
+  return parser.finish(filename);
+}
+
+SceneEntity parse_directive_text(std::string_view text, const std::string& directive,
+                                 const std::string& origin) {
+  Tokenizer tok(std::string(text), origin);
+  Token first = tok.peek();
+  SourceLoc loc = tok.loc(first);
+  // The keyword may be left out: `--camera '"thinlens" "float lensradius" 0.01'`.
+  if (first.kind == TokenKind::kWord) {
+    if (first.text != directive)
+      fail(loc, "expected a {} directive, got {}", directive, first.describe());
+    tok.next();
+  }
+  SceneEntity e;
+  Token name = tok.next();
+  if (name.kind != TokenKind::kString)
+    fail(tok.loc(name), "{}: expected a quoted type name, got {}", directive, name.describe());
+  e.name = name.string_value();
+  e.params = read_parameter_list(tok, loc);
+  e.loc = loc;
+  Token rest = tok.next();
+  if (rest.kind != TokenKind::kEnd)
+    fail(tok.loc(rest), "{}: unexpected {} after the parameters", directive, rest.describe());
+  return e;
+}
+
+}  // namespace eyetrace

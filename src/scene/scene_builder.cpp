@@ -1,0 +1,266 @@
+#include "scene/scene_builder.h"
+
+#include <set>
+
+#include "scene/registry.h"
+
+namespace eyetrace {
+
+namespace {
+
+struct FilmSettings {
+  IVec2 resolution{1280, 720};
+  PixelBounds bounds;
+  std::string filename = "pbrt.exr";
+  float scale = 1.f;
+};
+
+FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
+  const ParameterList& p = film.params;
+  if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
+    fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb", film.name);
+  if (film.name != "rgb") warn(film.loc, fmt::format("film \"{}\" is rendered as an \"rgb\" film", film.name));
+  FilmSettings f;
+  f.resolution = IVec2(p.get_int("xresolution", 1280), p.get_int("yresolution", 720));
+  if (o.resolution) f.resolution = *o.resolution;
+  const int kMaxSide = 1 << 15;
+  for (int i = 0; i < 2; ++i)
+    if (f.resolution[i] < 1 || f.resolution[i] > kMaxSide)
+      p.fail(i == 0 ? "xresolution" : "yresolution",
+             fmt::format("resolution {}x{} is outside 1..{} per side", f.resolution.x, f.resolution.y, kMaxSide));
+  Vec4 crop(0.f, 1.f, 0.f, 1.f);
+  std::vector<float> cw = p.get_floats("cropwindow");
+  if (!cw.empty()) {
+    if (cw.size() != 4) p.fail("cropwindow", "needs 4 values x0 x1 y0 y1");
+    crop = Vec4(cw[0], cw[1], cw[2], cw[3]);
+  }
+  if (o.crop) crop = *o.crop;
+  if (!(crop[0] >= 0 && crop[0] < crop[1] && crop[1] <= 1 && crop[2] >= 0 && crop[2] < crop[3] && crop[3] <= 1))
+    p.fail("cropwindow", "needs 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
+  f.bounds = crop_to_pixels(f.resolution, crop);
+  std::vector<int> pb = p.get_ints("pixelbounds");
+  if (!pb.empty()) {
+    if (pb.size() != 4 || pb[0] < 0 || pb[1] > f.resolution.x || pb[2] < 0 || pb[3] > f.resolution.y || pb[0] >= pb[1] || pb[2] >= pb[3])
+      p.fail("pixelbounds", "needs x0 < x1 <= xresolution and y0 < y1 <= yresolution");
+    if (!o.crop) f.bounds = PixelBounds{IVec2(pb[0], pb[2]), IVec2(pb[1], pb[3])};
+  }
+  if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
+  f.filename = p.get_string("filename", "pbrt.exr");
+  float iso = p.get_float("iso", 100.f), exposure = p.get_float("exposuretime", 1.f);
+  if (!(iso > 0.f) || !(exposure > 0.f)) p.fail("iso", "iso and exposuretime must be positive");
+  f.scale = iso / 100.f * exposure;
+  // Accepted for compatibility; an RGB film has nothing to do with them.
+  for (const char* ignored : {"savefp16", "maxcomponentvalue", "diagonal", "sensor", "whitebalance"})
+    if (const Param* q = p.find(ignored)) q->used = true;
+  p.check_unused("Film \"" + film.name + "\"");
+  return f;
+}
+
+class Builder {
+ public:
+  Builder(const SceneDescription& desc, RenderSetup& setup) : desc_(desc), setup_(setup) {}
+
+  void build_world() {
+    setup_.textures = std::make_unique<TextureStore>();
+    setup_.scene = std::make_unique<Scene>();
+    for (const TextureEntity& t : desc_.textures) build_texture(t);
+    for (const ShapeEntity& s : desc_.shapes) add_shape(s);
+    std::set<std::string> used;
+    for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
+    for (const auto& [name, def] : desc_.instances) {
+      // No ray can reach an object that is never instanced: building its shapes and BVH
+      // would only cost time and memory.
+      if (used.count(name)) build_instance(def);
+      else warn(def.loc, fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name));
+    }
+    for (const InstanceUse& u : desc_.instance_uses) {
+      if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
+      setup_.scene->add_instance(u.name, u.world_from_instance);
+    }
+    for (const TransformedEntity& l : desc_.lights) {
+      LightContext ctx{l.params, l.world_from_object, desc_.search_dir};
+      auto light = find_plugin(reg_.lights, "light", l.name, l.loc)(ctx);
+      l.params.check_unused("LightSource \"" + l.name + "\"");
+      light_sources_.emplace_back(light.get(), &l);
+      setup_.scene->add_light(std::move(light));
+    }
+    setup_.scene->commit();
+    check_light_power();
+  }
+
+ private:
+  void build_texture(const TextureEntity& t) {
+    TextureContext ctx{t.params, t.world_from_object, *setup_.textures, desc_.search_dir};
+    std::string what = fmt::format("Texture \"{}\" \"{}\" \"{}\"", t.texture_name, t.value_type, t.name);
+    if (t.value_type == "float") {
+      auto tex = find_plugin(reg_.float_textures, "float texture", t.name, t.loc)(ctx);
+      t.params.check_unused(what);
+      setup_.textures->add_float(t.texture_name, std::move(tex), t.loc);
+    } else {
+      auto tex = find_plugin(reg_.spectrum_textures, "spectrum texture", t.name, t.loc)(ctx);
+      t.params.check_unused(what);
+      setup_.textures->add_spectrum(t.texture_name, std::move(tex), t.loc);
+    }
+  }
+
+  // Materials are made on first use, so a scene pays only for the ones its shapes reference.
+  const Material* material(const MaterialRef& ref, const SourceLoc& loc) {
+    const SceneEntity* e = nullptr;
+    std::string key;
+    if (!ref.name.empty()) {
+      auto it = desc_.named_materials.find(ref.name);
+      if (it == desc_.named_materials.end()) fail(loc, "NamedMaterial \"{}\" is not defined", ref.name);
+      e = &it->second;
+      key = "named:" + ref.name;
+    } else if (ref.index >= 0 && size_t(ref.index) < desc_.materials.size()) {
+      e = &desc_.materials[ref.index];
+      key = fmt::format("index:{}", ref.index);
+    } else {
+      return nullptr;
+    }
+    auto it = materials_.find(key);
+    if (it != materials_.end()) return it->second;
+    MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir};
+    auto m = find_plugin(reg_.materials, "material", e->name, e->loc)(ctx);
+    e->params.check_unused("Material \"" + e->name + "\"");
+    const Material* raw = m ? setup_.scene->own(std::move(m)) : nullptr;
+    materials_[key] = raw;
+    return raw;
+  }
+
+  std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light) {
+    ShapeContext ctx{s.params, s.world_from_object, s.reverse_orientation, desc_.search_dir};
+    auto shapes = find_plugin(reg_.shapes, "shape", s.name, s.loc)(ctx);
+    s.params.check_unused("Shape \"" + s.name + "\"");
+    const Material* mat = material(s.material, s.loc);
+    std::vector<Primitive> prims;
+    for (auto& shape : shapes) {
+      Primitive prim{std::move(shape), mat, nullptr};
+      if (s.area_light >= 0) {
+        if (!allow_area_light) {
+          warn(s.loc, "area lights inside object instances are not supported (as in pbrt-v4); the shape does not emit");
+        } else {
+          const TransformedEntity& a = desc_.area_lights.at(s.area_light);
+          AreaLightContext actx{a.params, *prim.shape, s.reverse_orientation, *setup_.textures, desc_.search_dir};
+          auto light = find_plugin(reg_.area_lights, "area light", a.name, a.loc)(actx);
+          a.params.check_unused("AreaLightSource \"" + a.name + "\"");
+          prim.area_light = light.get();
+          light_sources_.emplace_back(light.get(), &a);
+          setup_.scene->add_light(std::move(light));
+        }
+      }
+      prims.push_back(std::move(prim));
+    }
+    return prims;
+  }
+
+  void add_shape(const ShapeEntity& s) {
+    for (auto& prim : make_primitives(s, true)) setup_.scene->add_primitive(std::move(prim));
+  }
+
+  void build_instance(const InstanceDefinition& def) {
+    std::vector<Primitive> prims;
+    for (const ShapeEntity& s : def.shapes)
+      for (auto& prim : make_primitives(s, false)) prims.push_back(std::move(prim));
+    setup_.scene->define_instance(def.name, std::move(prims));
+  }
+
+  // A light whose power overflows float would never be chosen by the light sampler, and its
+  // radiance would turn every sample it lights into a discarded one: refuse it instead.
+  // Runs after commit(): distant and infinite lights know their power once the scene's size is.
+  void check_light_power() const {
+    for (const auto& [light, e] : light_sources_) {
+      if (std::isfinite(light->power())) continue;
+      std::string culprit = "scale";
+      for (const char* name : {"scale", "power", "illuminance", "L", "I", "filename"})
+        if (e->params.has(name)) {
+          culprit = name;
+          break;
+        }
+      e->params.fail(culprit, "the light's power overflows the float range (its emission times \"scale\" times its "
+                              "size, or the scene's for a distant or infinite light, is above 3.4e38)");
+    }
+  }
+
+  const SceneDescription& desc_;
+  RenderSetup& setup_;
+  const Registry& reg_ = Registry::builtin();
+  std::map<std::string, const Material*> materials_;
+  std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
+};
+
+std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOverrides& o, IVec2 resolution) {
+  const Registry& reg = Registry::builtin();
+  const SceneEntity& cam = o.camera ? *o.camera : static_cast<const SceneEntity&>(desc.camera);
+  CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
+  auto camera = find_plugin(reg.cameras, "camera", cam.name, cam.loc)(ctx);
+  cam.params.check_unused("Camera \"" + cam.name + "\"");
+  return camera;
+}
+
+void check_memory(const FilmSettings& f, const RenderOverrides& o) {
+  // The film holds 4 doubles per pixel and the output image 3 floats.
+  uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12);
+  if (o.max_memory_bytes && bytes > o.max_memory_bytes)
+    throw_error(fmt::format("a {}x{} film needs about {:.1f} GiB, more than the limit of {:.1f} GiB (--max-memory)",
+                            f.bounds.width(), f.bounds.height(), bytes / 1073741824.0, o.max_memory_bytes / 1073741824.0));
+}
+
+// pbrt-v4 Options: "seed" seeds the sampler (unless --seed is given); the others change
+// things eyetrace does not have, and are named in a warning rather than dropped silently.
+std::optional<uint64_t> apply_options(const SceneDescription& desc) {
+  std::optional<uint64_t> seed;
+  for (const SceneEntity& o : desc.options) {
+    if (o.name == "seed") {
+      int v = o.params.get_int("seed", 0);
+      if (v < 0) o.params.fail("seed", "must not be negative");
+      seed = uint64_t(v);
+    } else {
+      o.params.mark_all_used();
+      warn(o.loc, fmt::format("Option \"{}\" is not supported by eyetrace; ignored", o.name));
+    }
+  }
+  if (desc.color_space != "srgb")
+    warn(SourceLoc{}, fmt::format("ColorSpace \"{}\": eyetrace renders in linear sRGB primaries; RGB values are used as given",
+                                  desc.color_space));
+  return seed;
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderOverrides& o) {
+  FilmSettings f = read_film(desc.film, o);
+  return make_camera(desc, o, f.resolution);
+}
+
+RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& o) {
+  const Registry& reg = Registry::builtin();
+  RenderSetup setup;
+  FilmSettings f = read_film(desc.film, o);
+  check_memory(f, o);
+  setup.output_filename = f.filename;
+  setup.camera = make_camera(desc, o, f.resolution);
+
+  const SceneEntity& s = desc.sampler;
+  std::optional<uint64_t> option_seed = apply_options(desc);
+  SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
+  setup.sampler = find_plugin(reg.samplers, "sampler", s.name, s.loc)(sctx);
+  s.params.check_unused("Sampler \"" + s.name + "\"");
+
+  const SceneEntity& pf = desc.filter;
+  auto filter = find_plugin(reg.filters, "pixel filter", pf.name, pf.loc)(pf.params);
+  pf.params.check_unused("PixelFilter \"" + pf.name + "\"");
+  setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale);
+
+  Builder(desc, setup).build_world();
+
+  const SceneEntity& in = desc.integrator;
+  IntegratorContext ictx{in.params, *setup.scene};
+  setup.integrator = find_plugin(reg.integrators, "integrator", in.name, in.loc)(ictx);
+  in.params.check_unused("Integrator \"" + in.name + "\"");
+  setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),
+                                  setup.film->filter().to_string(), setup.integrator->to_string());
+  return setup;
+}
+
+}  // namespace eyetrace

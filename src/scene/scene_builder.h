@@ -1,0 +1,44 @@
+// Turns a parsed SceneDescription (plus command-line overrides) into everything a render
+// needs, creating each plugin through the registry and reporting unused parameters.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/camera.h"
+#include "render/film.h"
+#include "render/integrator.h"
+#include "core/sampler.h"
+#include "render/scene.h"
+#include "scene/scene_description.h"
+#include "scene/texture_store.h"
+
+namespace eyetrace {
+
+struct RenderOverrides {
+  std::optional<SceneEntity> camera;      // --camera: replaces name and parameters, keeps the transform
+  std::optional<IVec2> resolution;        // --resolution
+  int spp = 0;                            // --spp
+  std::optional<uint64_t> seed;           // --seed
+  std::optional<Vec4> crop;               // --crop
+  uint64_t max_memory_bytes = 0;          // refuse scenes predicted to need more (0: no limit)
+};
+
+struct RenderSetup {
+  std::unique_ptr<TextureStore> textures;  // outlives materials that point into it
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<Camera> camera;
+  std::unique_ptr<Sampler> sampler;
+  std::unique_ptr<Film> film;
+  std::unique_ptr<Integrator> integrator;
+  std::string output_filename;  // the Film's "filename" (the command line may override it)
+  std::string description;      // one line per plugin, for --verbose and logs
+};
+
+RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& overrides);
+
+// Only the camera (for `eyetrace optics` and tests): the Camera directive of `desc` with overrides.
+std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderOverrides& overrides);
+
+}  // namespace eyetrace

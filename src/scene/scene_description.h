@@ -1,0 +1,82 @@
+// What the parser hands to the scene builder: every directive of a pbrt-v4 scene as a named
+// entity with its parameters and transform, before any plugin is created. Keeping this step
+// separate lets the command line override the camera or film without touching the file.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/params.h"
+#include "core/transform.h"
+
+namespace eyetrace {
+
+struct SceneEntity {
+  std::string name;  // plugin name: "perspective", "trianglemesh", "diffuse", ...
+  ParameterList params;
+  SourceLoc loc;
+};
+
+struct CameraEntity : SceneEntity {
+  Transform world_from_camera;
+};
+
+struct TransformedEntity : SceneEntity {
+  Transform world_from_object;
+  bool reverse_orientation = false;
+};
+
+// A material is referenced by index into SceneDescription::materials (anonymous Material
+// directives) or by name (MakeNamedMaterial). Exactly one of the two is set on a shape.
+struct MaterialRef {
+  int index = -1;
+  std::string name;
+};
+
+struct ShapeEntity : TransformedEntity {
+  MaterialRef material;
+  int area_light = -1;  // index into SceneDescription::area_lights, -1 if the shape emits nothing
+};
+
+struct TextureEntity : TransformedEntity {
+  std::string texture_name;  // the user's name for it
+  std::string value_type;    // "float" or "spectrum"
+};
+
+struct InstanceDefinition {
+  std::string name;
+  SourceLoc loc;
+  std::vector<ShapeEntity> shapes;  // world_from_object is relative to the instance frame
+};
+
+struct InstanceUse {
+  std::string name;
+  SourceLoc loc;
+  Transform world_from_instance;
+};
+
+struct SceneDescription {
+  bool has_camera = false;
+  CameraEntity camera;  // default "perspective" if the file has no Camera
+  SceneEntity film{"rgb", {}, {}};
+  SceneEntity sampler{"zsobol", {}, {}};
+  SceneEntity integrator{"volpath", {}, {}};
+  SceneEntity filter{"gaussian", {}, {}};
+  std::string color_space = "srgb";
+  std::vector<SceneEntity> options;  // Option directives, one parameter each
+
+  std::vector<SceneEntity> materials;                   // anonymous, by index
+  std::map<std::string, SceneEntity> named_materials;   // MakeNamedMaterial
+  std::vector<TextureEntity> textures;                  // in file order (later may use earlier)
+  std::vector<ShapeEntity> shapes;
+  std::vector<TransformedEntity> lights;
+  std::vector<TransformedEntity> area_lights;           // AreaLightSource, referenced by shapes
+  std::map<std::string, InstanceDefinition> instances;
+  std::vector<InstanceUse> instance_uses;
+
+  // Relative file names (textures, PLY meshes, lens files) resolve against this directory,
+  // the directory of the top-level scene file, as in pbrt-v4.
+  std::string search_dir;
+};
+
+}  // namespace eyetrace

@@ -1,0 +1,147 @@
+// The pbrt-v4 scene parser's state machine, shared by parser.cpp (files, Include, the
+// directive loop) and scene_parser.cpp (one handler per directive). Internal to the parser:
+// everything else uses core/parser.h.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene_description.h"
+#include "scene/tokenizer.h"
+
+namespace eyetrace::parsing {
+
+namespace fs = std::filesystem;
+
+inline constexpr size_t kMaxIncludeDepth = 64;
+
+// pbrt keeps two transforms so that ActiveTransform can animate between them; eyetrace has
+// no motion blur, but keeping both lets it warn exactly when a file relies on it.
+using TransformPair = std::array<Transform, 2>;
+
+struct GraphicsState {
+  TransformPair ctm;
+  std::array<bool, 2> active{true, true};
+  bool reverse_orientation = false;
+  MaterialRef material{0, ""};  // index 0 is the implicit default material
+  int area_light = -1;
+  std::vector<Param> shape_attributes, light_attributes, material_attributes, texture_attributes;
+};
+
+// One open AttributeBegin, TransformBegin or ObjectBegin.
+struct OpenBlock {
+  std::string directive;
+  SourceLoc loc;
+  GraphicsState saved;
+};
+
+struct OpenFile {
+  std::string canonical;  // for recursion checks
+  fs::path dir;           // Include paths resolve here first
+};
+
+inline std::string hint_suffix(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string m = closest_match(word, candidates);
+  return m.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", m);
+}
+
+template <typename Map>
+std::vector<std::string> keys_of(const Map& m) {
+  std::vector<std::string> keys;
+  for (const auto& kv : m) keys.emplace_back(kv.first);
+  return keys;
+}
+
+class SceneParser {
+ public:
+  explicit SceneParser(fs::path search_dir);
+  void parse_file(const fs::path& path, const SourceLoc* included_from);
+  void parse_text(std::string text, const std::string& filename);
+  SceneDescription finish(const std::string& top_file);
+
+ private:
+  using Handler = void (SceneParser::*)(Tokenizer&, const SourceLoc&);
+  static const std::map<std::string, Handler, std::less<>>& handlers();
+
+  void run(Tokenizer& tok);
+  [[noreturn]] void unknown_directive(const Token& t, const SourceLoc& loc) const;
+
+  // Reading helpers.
+  std::string read_name(Tokenizer& tok, const char* directive, const char* what, SourceLoc* at = nullptr);
+  std::vector<float> read_numbers(Tokenizer& tok, const char* directive, size_t count);
+  SceneEntity read_entity(Tokenizer& tok, const SourceLoc& loc, const char* directive);
+  static ParameterList with_attributes(ParameterList list, const std::vector<Param>& attributes);
+
+  // Block and transform state.
+  void require_world(const SourceLoc& loc, const char* directive) const;
+  void require_options(const SourceLoc& loc, const char* directive) const;
+  void note_option(const SourceLoc& loc, const char* directive);
+  void apply(const SourceLoc& loc, const char* directive, const Transform& t, bool replace = false);
+  Transform current_transform(const SourceLoc& loc, const char* directive) const;
+  void push_block(const SourceLoc& loc, const char* directive);
+  void pop_block(const SourceLoc& loc, const char* directive, const char* opener);
+  fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const;
+
+  // Directives.
+  void include(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Include"); }
+  void import(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Import"); }
+  void include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive);
+  void attribute_begin(Tokenizer&, const SourceLoc& loc);
+  void attribute_end(Tokenizer&, const SourceLoc& loc);
+  void transform_begin(Tokenizer&, const SourceLoc& loc);
+  void transform_end(Tokenizer&, const SourceLoc& loc);
+  void attribute(Tokenizer& tok, const SourceLoc& loc);
+  void translate(Tokenizer& tok, const SourceLoc& loc);
+  void rotate(Tokenizer& tok, const SourceLoc& loc);
+  void scale(Tokenizer& tok, const SourceLoc& loc);
+  void look_at(Tokenizer& tok, const SourceLoc& loc);
+  void transform(Tokenizer& tok, const SourceLoc& loc) { matrix_directive(tok, loc, "Transform", true); }
+  void concat_transform(Tokenizer& tok, const SourceLoc& loc) { matrix_directive(tok, loc, "ConcatTransform", false); }
+  void matrix_directive(Tokenizer& tok, const SourceLoc& loc, const char* directive, bool replace);
+  void identity(Tokenizer&, const SourceLoc& loc) { apply(loc, "Identity", Transform(), true); }
+  void coordinate_system(Tokenizer& tok, const SourceLoc& loc);
+  void coord_sys_transform(Tokenizer& tok, const SourceLoc& loc);
+  void reverse_orientation(Tokenizer&, const SourceLoc& loc);
+  void active_transform(Tokenizer& tok, const SourceLoc& loc);
+  void transform_times(Tokenizer& tok, const SourceLoc& loc);
+  void camera(Tokenizer& tok, const SourceLoc& loc);
+  void film(Tokenizer& tok, const SourceLoc& loc) { option_entity(tok, loc, "Film", desc_.film); }
+  void sampler(Tokenizer& tok, const SourceLoc& loc) { option_entity(tok, loc, "Sampler", desc_.sampler); }
+  void integrator(Tokenizer& tok, const SourceLoc& loc) { option_entity(tok, loc, "Integrator", desc_.integrator); }
+  void pixel_filter(Tokenizer& tok, const SourceLoc& loc) { option_entity(tok, loc, "PixelFilter", desc_.filter); }
+  void option_entity(Tokenizer& tok, const SourceLoc& loc, const char* directive, SceneEntity& out);
+  void accelerator(Tokenizer& tok, const SourceLoc& loc);
+  void color_space(Tokenizer& tok, const SourceLoc& loc);
+  void option(Tokenizer& tok, const SourceLoc& loc);
+  void world_begin(Tokenizer&, const SourceLoc& loc);
+  void world_end(Tokenizer&, const SourceLoc& loc);
+  void light_source(Tokenizer& tok, const SourceLoc& loc);
+  void area_light_source(Tokenizer& tok, const SourceLoc& loc);
+  void material(Tokenizer& tok, const SourceLoc& loc);
+  void make_named_material(Tokenizer& tok, const SourceLoc& loc);
+  void named_material(Tokenizer& tok, const SourceLoc& loc);
+  void texture(Tokenizer& tok, const SourceLoc& loc);
+  void shape(Tokenizer& tok, const SourceLoc& loc);
+  void object_begin(Tokenizer& tok, const SourceLoc& loc);
+  void object_end(Tokenizer&, const SourceLoc& loc);
+  void object_instance(Tokenizer& tok, const SourceLoc& loc);
+  void make_named_medium(Tokenizer& tok, const SourceLoc& loc);
+  void medium_interface(Tokenizer& tok, const SourceLoc& loc);
+
+  SceneDescription desc_;
+  GraphicsState state_;
+  std::vector<OpenBlock> blocks_;
+  std::vector<OpenFile> files_;
+  std::map<std::string, TransformPair> coordinate_systems_;
+  std::map<std::string, SourceLoc> options_seen_;
+  std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;
+  std::map<std::string, SourceLoc> named_material_locs_;
+  std::optional<std::string> current_object_;
+  bool in_world_ = false;
+  bool warned_transform_begin_ = false;
+};
+
+}  // namespace eyetrace::parsing

@@ -1,0 +1,85 @@
+// Spectrum-valued scene parameters ("spectrum" constants, [lambda value] pairs and named
+// spectra, "blackbody" temperatures) checked and converted through core/spectrum.h.
+#include "scene/spectrum_param.h"
+
+#include <vector>
+
+#include "core/spectrum.h"
+
+namespace eyetrace {
+
+namespace {
+
+struct Pairs {
+  std::vector<float> lambda, value;
+};
+
+[[noreturn]] void unknown_name(const Param& p, const std::string& name) {
+  if (name.find('.') != std::string::npos || name.find('/') != std::string::npos)
+    fail(p.loc, "parameter \"{}\": spectrum files are not supported: {}", p.name, name);
+  std::vector<std::string> names = named_spectrum_names();
+  std::string list, hint = closest_match(name, names);
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  fail(p.loc, "parameter \"{}\": unknown named spectrum \"{}\"{}; known spectra: {}", p.name, name,
+       hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint), list);
+}
+
+const NamedSpectrum& named_of(const Param& p) {
+  if (p.strings.size() != 1) fail(p.loc, "parameter \"{}\" takes one spectrum name", p.name);
+  const NamedSpectrum* n = find_named_spectrum(p.strings[0]);
+  if (!n) unknown_name(p, p.strings[0]);
+  return *n;
+}
+
+// [lambda value ...] pairs, checked: increasing positive wavelengths.
+Pairs pairs_of(const Param& p) {
+  const auto& v = p.numbers;
+  if (v.size() < 2 || v.size() % 2 != 0)
+    fail(p.loc, "parameter \"{}\": a spectrum is one value or (wavelength, value) pairs; got {} values", p.name, v.size());
+  std::vector<float> lambda, value;
+  for (size_t i = 0; i < v.size(); i += 2) {
+    if (v[i] <= 0.0 || (!lambda.empty() && float(v[i]) <= lambda.back()))
+      fail(p.loc, "parameter \"{}\": wavelengths must be positive and increasing (got {} nm)", p.name, v[i]);
+    lambda.push_back(float(v[i]));
+    value.push_back(float(v[i + 1]));
+  }
+  return {lambda, value};
+}
+
+}  // namespace
+
+RGB spectrum_param_to_rgb(const Param& p) {
+  std::string type = p.canonical_type();
+  if (type == "blackbody") {
+    if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\": blackbody takes one temperature in kelvin", p.name);
+    // Below 100 K the visible tail spans more than float range; such a body is black anyway.
+    if (!(p.numbers[0] >= 100.0 && p.numbers[0] <= 1e7))
+      fail(p.loc, "parameter \"{}\": blackbody temperature {} K is outside [100, 1e7] K", p.name, p.numbers[0]);
+    return blackbody_to_rgb(float(p.numbers[0]));
+  }
+  if (type != "spectrum") fail(p.loc, "parameter \"{}\" of type \"{}\" is not a spectrum", p.name, p.type);
+  if (!p.strings.empty()) return named_spectrum_to_rgb(named_of(p));
+  if (p.numbers.size() == 1) return RGB(float(p.numbers[0]));
+  Pairs pairs = pairs_of(p);
+  return reflectance_spectrum_to_rgb(sample_spectrum(pairs.lambda, pairs.value));
+}
+
+float spectrum_param_at(const Param& p, float lambda_nm) {
+  std::string type = p.canonical_type();
+  if (type == "float") {
+    if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\" takes one value, got {}", p.name, p.numbers.size());
+    return float(p.numbers[0]);
+  }
+  if (type == "rgb") {
+    if (p.numbers.size() != 3) fail(p.loc, "parameter \"{}\" takes 3 values, got {}", p.name, p.numbers.size());
+    return float(p.numbers[1]);
+  }
+  if (type != "spectrum")
+    fail(p.loc, "parameter \"{}\" has type \"{}\" but must be \"float\" or \"spectrum\"", p.name, p.type);
+  if (!p.strings.empty()) return evaluate_named_spectrum(named_of(p), lambda_nm);
+  if (p.numbers.size() == 1) return float(p.numbers[0]);
+  Pairs pairs = pairs_of(p);
+  return interpolate_spectrum(pairs.lambda, pairs.value, lambda_nm);
+}
+
+}  // namespace eyetrace

@@ -1,0 +1,51 @@
+// Named textures of a scene, and the lookup that lets a material parameter be either a
+// constant ("rgb reflectance" [.5 .5 .5]) or a texture ("texture reflectance" "wood").
+// Constants become ConstantTextures owned by the store. Image textures share one
+// OpenImageIO TextureSystem, created only when a scene has an image texture.
+#pragma once
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/params.h"
+#include "core/texture.h"
+
+
+namespace eyetrace {
+
+class TextureStore {
+ public:
+  TextureStore();
+  ~TextureStore();
+  TextureStore(const TextureStore&) = delete;
+
+  void add_float(const std::string& name, std::unique_ptr<FloatTexture> tex, const SourceLoc& loc);
+  void add_spectrum(const std::string& name, std::unique_ptr<SpectrumTexture> tex, const SourceLoc& loc);
+  const FloatTexture* named_float(const std::string& name) const;      // null if unknown
+  const SpectrumTexture* named_spectrum(const std::string& name) const;
+
+  // A "float NAME" constant or "texture NAME" reference; `def` when absent.
+  const FloatTexture* float_param(const ParameterList& params, const std::string& name, float def);
+  // Like float_param but null when absent.
+  const FloatTexture* float_param_or_null(const ParameterList& params, const std::string& name);
+  // An "rgb"/"spectrum"/"blackbody" constant or "texture NAME" reference; `def` when absent.
+  const SpectrumTexture* spectrum_param(const ParameterList& params, const std::string& name, const RGB& def);
+  const SpectrumTexture* spectrum_param_or_null(const ParameterList& params, const std::string& name);
+
+  // Opaque handle to the shared OpenImageIO TextureSystem (created on first call).
+  void* texture_system();
+  // Keeps `tex` alive as long as the store (for textures made on the fly).
+  const FloatTexture* keep(std::unique_ptr<FloatTexture> tex);
+  const SpectrumTexture* keep(std::unique_ptr<SpectrumTexture> tex);
+
+ private:
+  std::map<std::string, const FloatTexture*> floats_;
+  std::map<std::string, const SpectrumTexture*> spectra_;
+  std::vector<std::unique_ptr<FloatTexture>> float_store_;
+  std::vector<std::unique_ptr<SpectrumTexture>> spectrum_store_;
+  void* texture_system_ = nullptr;
+};
+
+}  // namespace eyetrace
