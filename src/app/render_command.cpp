@@ -89,7 +89,8 @@ void resume_from(const std::string& path, uint64_t fingerprint, RenderSetup& set
                             path, s.resolution.x, s.resolution.y, f.resolution().x, f.resolution().y));
   if (s.fingerprint != fingerprint)
     throw_error(fmt::format("--resume: render state \"{}\" was made for another scene or other options (the scene "
-                            "file, an included file, --seed or --camera differ); render without --resume to start over",
+                            "file, an included file, a mesh, image or lens file it reads, --seed or --camera differ); render without "
+                            "--resume to start over",
                             path));
   setup.film->restore(s.accumulators, s.nonfinite_samples);
   tiles = std::move(s.tiles);
@@ -151,7 +152,7 @@ int run_render(const RenderArgs& a) {
   RenderSetup setup = build_render_setup(desc, o);
   std::string output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(output);
-  const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup));
+  const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup), setup.files_read);
   const int spp = setup.sampler->samples_per_pixel();
   TileProgress tiles = TileProgress::start(setup.film->bounds());
   if (a.resume) resume_from(state_path(output), fingerprint, setup, tiles);

@@ -9,6 +9,7 @@
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -109,8 +110,7 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& par
   const double focus_m = get_double(params, "focusdistance", kDefaultFocusDistance);
   if (!(focus_m > 0.0 && std::isfinite(focus_m)))
     params.fail("focusdistance", fmt::format("{} must be positive", focus_m));
-  std::filesystem::path path(file);
-  if (path.is_relative() && !search_dir.empty()) path = std::filesystem::path(search_dir) / path;
+  std::filesystem::path path(resolve_scene_file(search_dir, file));
 
   optics::Prescription p;
   try {

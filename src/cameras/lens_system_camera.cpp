@@ -211,16 +211,6 @@ void LensSystemCamera::generate_rays(const CameraSample* samples, std::optional<
   }
 }
 
-Ray LensSystemCamera::camera_ray_from_exit(const optics::Ray& exit) const {
-  // The origin lies on the cornea, a few mm from the camera origin: converted once to float
-  // (relative error 2^-24 of a value ~1e-3 scene units). Nothing in the scene sits on the cornea,
-  // so no extra offset is needed for Embree; the direction is renormalised in float.
-  const double k = settings_.scene_units_per_mm;
-  const Vec3 o(float(-exit.origin.x * k), float(exit.origin.y * k), float(-exit.origin.z * k));
-  const Vec3 d = glm::normalize(Vec3(float(-exit.direction.x), float(exit.direction.y), float(-exit.direction.z)));
-  return Ray{o, d, kInfinity, 0.f};
-}
-
 std::string LensSystemCamera::to_string() const {
   const std::string field =
       settings_.film_half_mm > 0.0

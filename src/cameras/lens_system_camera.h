@@ -57,8 +57,6 @@ class LensSystemCamera : public Camera {
   };
   // Where a raster position lands on the retina; nullopt outside the traced field.
   std::optional<RetinaPoint> retina_point(Vec2 p_film) const;
-  // Exit ray (system frame) -> camera-space ray (scene units), as generate_ray converts it.
-  Ray camera_ray_from_exit(const optics::Ray& exit) const;
   const optics::Prescription& prescription() const { return prescription_; }
   const optics::CompiledSystem& system() const { return system_; }
   const RetinaSurface& retina() const { return retina_; }

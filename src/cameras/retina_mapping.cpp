@@ -82,13 +82,6 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
   }
 }
 
-double FieldAngleTable::angle_for_arc(double a) const {
-  if (empty() || a < 0.0 || a > max_arc_mm()) return -1.0;
-  const size_t i = interval_of(arcs_, a);
-  const double t = (a - arcs_[i]) / (arcs_[i + 1] - arcs_[i]);
-  return angles_[i] + t * (angles_[i + 1] - angles_[i]);
-}
-
 std::optional<double> FieldAngleTable::chief_q_for_arc(double a) const {
   if (empty() || a < 0.0 || a > max_arc_mm()) return std::nullopt;
   const size_t i = interval_of(arcs_, a);

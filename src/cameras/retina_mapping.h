@@ -47,8 +47,6 @@ class FieldAngleTable {
     const double t = x - static_cast<double>(i);
     return inverse_[i] + t * (inverse_[i + 1] - inverse_[i]);
   }
-  // Chief-ray field angle at arc a (linear between nodes); negative beyond the table.
-  double angle_for_arc(double a) const;
   // q (meridian coordinate on the sampling plane) of the chief ray at arc a (linear between
   // nodes): a starting guess for the pupil sampler; nullopt beyond the table.
   std::optional<double> chief_q_for_arc(double a) const;

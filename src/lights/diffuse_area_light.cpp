@@ -1,6 +1,7 @@
 #include "lights/diffuse_area_light.h"
 
 #include "lights/light_params.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -71,7 +72,7 @@ std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   RGB mean_emission = L.value_or(RGB(1.f));
   if (!filename.empty()) {
     if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
-    std::string path = resolve_path(ctx.search_dir, filename);
+    std::string path = resolve_scene_file(ctx.search_dir, filename);
     std::string error;
     image = read_rgb_image(path, &error);
     if (!image) params.fail("filename", fmt::format("cannot read emission image \"{}\": {}", path, error));

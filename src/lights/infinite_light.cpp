@@ -2,6 +2,7 @@
 
 #include "core/sampling.h"
 #include "lights/light_params.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 namespace {
@@ -121,7 +122,7 @@ std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
     return std::make_unique<UniformInfiniteLight>(Lc * scale);
   }
   if (L) params.fail("filename", "an infinite light takes \"L\" or \"filename\", not both");
-  EnvironmentMap map = read_environment_map(params, resolve_path(ctx.search_dir, filename));
+  EnvironmentMap map = read_environment_map(params, resolve_scene_file(ctx.search_dir, filename));
   scale *= photometric_factor(E, map.up_illuminance());
   return std::make_unique<ImageInfiniteLight>(std::move(map), ctx.world_from_light, scale);
 }

@@ -35,9 +35,5 @@ float photometric_factor(std::optional<float> target, float emitted_luminance) {
   return std::isfinite(f) ? f : 1.f;
 }
 
-std::string resolve_path(const std::string& search_dir, const std::string& filename) {
-  if (filename.empty() || filename.front() == '/' || search_dir.empty()) return filename;
-  return search_dir.back() == '/' ? search_dir + filename : search_dir + "/" + filename;
-}
 
 }  // namespace eyetrace

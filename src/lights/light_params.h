@@ -28,7 +28,4 @@ float photometric_factor(std::optional<float> target, float emitted_luminance);
 // averages Phi over the sampled wavelengths; a blue light still gets shadow rays).
 inline float channel_mean(const RGB& c) { return (c.r + c.g + c.b) / 3.f; }
 
-// `filename` as given when absolute, else relative to the scene file's folder.
-std::string resolve_path(const std::string& search_dir, const std::string& filename);
-
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 
 #include "scene/texture_store.h"
 #include "textures/imagemap_texture.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -11,8 +12,7 @@ const SpectrumTexture* read_normal_map(const MaterialContext& ctx) {
   const Param* p = ctx.params.find("normalmap");
   std::string file = ctx.params.get_string("normalmap", "");
   if (!p) return nullptr;
-  std::filesystem::path path(file);
-  if (path.is_relative() && !ctx.search_dir.empty()) path = std::filesystem::path(ctx.search_dir) / path;
+  std::filesystem::path path(resolve_scene_file(ctx.search_dir, file));
   if (!std::filesystem::is_regular_file(path))
     ctx.params.fail("normalmap", fmt::format("image file \"{}\" not found", path.string()));
   // Reuse the imagemap texture with the settings pbrt-v4 reads normal maps with.

@@ -44,10 +44,6 @@ RayMatrix system_matrix(const Prescription& p, int first, int last) {
     return m;
 }
 
-double group_power_diopters(const Prescription& p, int first, int last) {
-    return -system_matrix(p, first, last).C * 1000.0;
-}
-
 double refraction_diopters(const Prescription& p) {
     const int last = last_refracting(p);
     const RayMatrix m = system_matrix(p, 0, last);

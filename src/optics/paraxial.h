@@ -17,9 +17,6 @@ struct RayMatrix {
 // refracting at first..last and transferring between them. Image surfaces do not refract.
 RayMatrix system_matrix(const Prescription& p, int first, int last);
 
-// Equivalent power in dioptres of surfaces first..last (e.g. the cornea, or the lens in situ).
-double group_power_diopters(const Prescription& p, int first, int last);
-
 struct Pupil {
     double position_mm = 0.0;    // from the first vertex
     double diameter_mm = 0.0;

@@ -120,6 +120,14 @@ class Fingerprint {
     add_pod(v.size());
     for (const T& e : v) add(e);
   }
+  // The file's bytes, read in blocks (meshes can be large).
+  void add_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw_error(fmt::format("cannot read \"{}\" to fingerprint the scene", path));
+    std::vector<char> block(1 << 20);
+    while (in.read(block.data(), std::streamsize(block.size())) || in.gcount() > 0)
+      h_ = fnv1a(std::string_view(block.data(), size_t(in.gcount())), h_);
+  }
   uint64_t value() const { return h_; }
 
  private:
@@ -136,7 +144,8 @@ uint64_t fnv1a(std::string_view bytes, uint64_t h) {
   return h;
 }
 
-uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options) {
+uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options,
+                           const std::vector<std::string>& files_read) {
   Fingerprint f;
   f.add(options);
   f.add_pod(d.has_camera);
@@ -168,6 +177,11 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
     f.add(u.world_from_instance);
   }
   f.add(d.search_dir);
+  f.add_pod(files_read.size());
+  for (const std::string& path : files_read) {
+    f.add(path);
+    f.add_file(path);
+  }
   return f.value();
 }
 

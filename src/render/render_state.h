@@ -36,7 +36,10 @@ RenderState read_render_state(const std::string& path);
 // FNV-1a, 64 bits: a fingerprint, not a cryptographic hash.
 uint64_t fnv1a(std::string_view bytes, uint64_t h = 0xcbf29ce484222325ull);
 // Every directive, parameter value (exactly, as parsed) and transform of the scene, plus
-// `options` (the command-line settings that change the image), hashed.
-uint64_t scene_fingerprint(const SceneDescription& desc, const std::string& options);
+// `options` (the command-line settings that change the image) and the content of every file in
+// `files_read` (meshes, images, lens files: a changed texture must not resume into an old
+// image), hashed. An unreadable file is an error naming it.
+uint64_t scene_fingerprint(const SceneDescription& desc, const std::string& options,
+                           const std::vector<std::string>& files_read);
 
 }  // namespace eyetrace

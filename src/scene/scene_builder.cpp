@@ -3,6 +3,7 @@
 #include <set>
 
 #include "scene/registry.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -236,6 +237,7 @@ std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderO
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& o) {
   const Registry& reg = Registry::builtin();
   RenderSetup setup;
+  SceneFileLog files;
   FilmSettings f = read_film(desc.film, o);
   check_memory(f, o);
   setup.output_filename = f.filename;
@@ -260,6 +262,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   in.params.check_unused("Integrator \"" + in.name + "\"");
   setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),
                                   setup.film->filter().to_string(), setup.integrator->to_string());
+  setup.files_read = files.files();
   return setup;
 }
 

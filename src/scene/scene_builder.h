@@ -34,6 +34,7 @@ struct RenderSetup {
   std::unique_ptr<Integrator> integrator;
   std::string output_filename;  // the Film's "filename" (the command line may override it)
   std::string description;      // one line per plugin, for --verbose and logs
+  std::vector<std::string> files_read;  // every file the plugins read (scene/scene_files.h), sorted
 };
 
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& overrides);

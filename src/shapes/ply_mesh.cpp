@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "shapes/ply_reader.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -39,8 +40,7 @@ std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ct
   const ParameterList& params = ctx.params;
   std::string filename = params.get_string("filename", "");
   if (filename.empty()) params.fail("filename", "a PLY file name is required");
-  std::filesystem::path path(filename);
-  if (path.is_relative() && !ctx.search_dir.empty()) path = std::filesystem::path(ctx.search_dir) / path;
+  std::filesystem::path path(resolve_scene_file(ctx.search_dir, filename));
 
   for (const char* name : {"displacement", "displacement.edgelength", "edgelength"}) {
     const Param* p = params.find(name);

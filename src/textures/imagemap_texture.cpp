@@ -8,6 +8,7 @@
 #include "render/image_io.h"
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
+#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -77,12 +78,6 @@ TextureOpt::Wrap read_wrap(const ParameterList& p) {
   p.fail("wrap", fmt::format("unknown wrap mode \"{}\"; eyetrace supports repeat, black, clamp", wrap));
 }
 
-std::string resolve(const std::string& name, const std::string& dir) {
-  std::filesystem::path path(name);
-  if (path.is_relative() && !dir.empty()) path = std::filesystem::path(dir) / path;
-  return path.string();
-}
-
 void read_encoding(const ParameterList& p, const std::string& path, const OIIO::ImageSpec& spec, ImageLookup* l) {
   bool eight_bit = spec.format.basetype == OIIO::TypeDesc::UINT8;
   std::string ext = std::filesystem::path(path).extension().string();
@@ -110,7 +105,7 @@ ImageLookup open_image(const TextureContext& ctx) {
   const ParameterList& p = ctx.params;
   std::string name = p.get_string("filename", "");
   if (name.empty()) p.fail("filename", "an imagemap texture needs a \"filename\"");
-  std::string path = resolve(name, ctx.search_dir);
+  std::string path = resolve_scene_file(ctx.search_dir, name);
 
   ImageLookup l;
   l.ts = static_cast<TextureSystem*>(ctx.textures.texture_system());

@@ -1,4 +1,4 @@
-// PLY meshes through assimp: a small ASCII PLY written by the test is read back and traced;
+// PLY meshes through the strict reader: a small ASCII PLY written by the test is read back and traced;
 // quads are triangulated; unreadable, missing and compressed files are errors naming
 // "filename" and the path.
 #include "shapes/ply_mesh.h"
