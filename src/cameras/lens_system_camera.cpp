@@ -13,7 +13,6 @@ namespace eyetrace {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 // Closest a retina point may come to the sampling plane (the directions degenerate there).
 constexpr double kMinPlaneGapMm = 0.5;
 

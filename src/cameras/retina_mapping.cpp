@@ -11,7 +11,6 @@ namespace eyetrace {
 
 namespace {
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 // Node spacing along the retina. Linear interpolation between nodes then errs by
 // theta'' da^2 / 8, about 1e-4 degrees for the eyes.
 constexpr double kNodeStepMm = 0.05;
@@ -64,7 +63,7 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
     if (!r.ok()) break;
     // A retina point on +x images a field point on -x (the eye inverts): the angle of the
     // leaving ray from the -z axis, positive towards -x.
-    const double angle = std::atan2(-r.ray.direction.x, -r.ray.direction.z) * kDegrees;
+    const double angle = std::atan2(-r.ray.direction.x, -r.ray.direction.z) * kDegreesPerRadianD;
     if (!(angle > angles_.back())) break;
     arcs_.push_back(a);
     angles_.push_back(angle);

@@ -11,6 +11,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/constants.h"
+
 namespace eyetrace {
 
 struct RetinaSurface {
@@ -20,7 +22,7 @@ struct RetinaSurface {
   // Largest arc length on the surface the optics library models: a sphere's sequential sheet
   // is the hemisphere on the vertex side, so the retina ends at its equator.
   double max_arc_mm() const {
-    return curvature == 0.0 ? 1e300 : 0.5 * 3.14159265358979323846 / std::abs(curvature);
+    return curvature == 0.0 ? 1e300 : 0.5 * kPiD / std::abs(curvature);
   }
   // (height from the axis, z) of the point at arc length a from the vertex along the meridian.
   glm::dvec2 point(double a) const {

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/constants.h"
+
 namespace eyetrace {
 
 using Vec2 = glm::vec2;
@@ -19,12 +21,6 @@ using Mat4 = glm::mat4;
 // CameraSample::wavelength_u without changing interfaces.
 using RGB = glm::vec3;
 
-inline constexpr float kPi = 3.14159265358979323846f;
-inline constexpr float kInvPi = 0.31830988618379067154f;
-inline constexpr float kInv2Pi = 0.15915494309189533577f;
-inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
-// Largest float strictly below 1, so that samples stay in [0, 1).
-inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
 inline float radians(float deg) { return deg * (kPi / 180.f); }
 inline float luminance(const RGB& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }

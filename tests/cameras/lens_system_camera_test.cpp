@@ -19,7 +19,6 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 std::unique_ptr<LensSystemCamera> eye_camera(const std::string& params, IVec2 res = IVec2(256, 256)) {
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");

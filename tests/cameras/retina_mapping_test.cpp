@@ -14,7 +14,7 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kRadiansPerDegreeD;
 
 std::unique_ptr<LensSystemCamera> camera(const std::string& params, int res) {
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");

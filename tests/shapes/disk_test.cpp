@@ -12,7 +12,6 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats,
                                  const Transform& t = Transform(), bool reverse = false) {

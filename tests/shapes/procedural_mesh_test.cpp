@@ -9,7 +9,6 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 double mesh_area(const ProceduralMesh& m) {
   double area = 0.0;

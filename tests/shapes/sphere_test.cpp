@@ -12,7 +12,6 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) {
   ParameterList pl(SourceLoc{"sphere.pbrt", 5, 1});
