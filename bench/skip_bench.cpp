@@ -50,7 +50,7 @@ NaiveRays naive_rays(const LensSystemCamera& cam, size_t n) {
   while (out.rays.size() < n) {
     auto rp = cam.retina_point(Vec2(float(kResolution.x * u(rng)), float(kResolution.y * u(rng))));
     if (!rp) continue;
-    const double r = radius * std::sqrt(u(rng)), phi = kTwoPiD * u(rng);
+    const double r = radius * std::sqrt(u(rng)), phi = kTwoPiDouble * u(rng);
     const glm::dvec3 target(r * std::cos(phi), r * std::sin(phi), z);
     out.rays.push_back({rp->position, target - rp->position});
   }

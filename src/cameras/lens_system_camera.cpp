@@ -114,7 +114,7 @@ void LensSystemCamera::compute_normalisation() {
     (trace_towards_plane(system_, vertex, mid, 0.0, z_plane_).ok() ? lo : hi) = mid;
   }
   const double radius = 0.5 * (lo + hi), length = retina_.vertex_z_mm - z_plane_;
-  normalisation_ = (radius * radius + length * length) / (kPiD * radius * radius);
+  normalisation_ = (radius * radius + length * length) / (kPiDouble * radius * radius);
   // Bound: cos terms <= 1 and cos(theta_plane) / d^2 <= 1 / L^2 with L the retina point's
   // distance from the plane, smallest at the far end of an interval.
   const int n = 1024;

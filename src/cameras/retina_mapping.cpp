@@ -63,7 +63,7 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
     if (!r.ok()) break;
     // A retina point on +x images a field point on -x (the eye inverts): the angle of the
     // leaving ray from the -z axis, positive towards -x.
-    const double angle = std::atan2(-r.ray.direction.x, -r.ray.direction.z) * kDegreesPerRadianD;
+    const double angle = std::atan2(-r.ray.direction.x, -r.ray.direction.z) * kDegreesPerRadian;
     if (!(angle > angles_.back())) break;
     arcs_.push_back(a);
     angles_.push_back(angle);

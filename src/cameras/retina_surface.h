@@ -22,7 +22,7 @@ struct RetinaSurface {
   // Largest arc length on the surface the optics library models: a sphere's sequential sheet
   // is the hemisphere on the vertex side, so the retina ends at its equator.
   double max_arc_mm() const {
-    return curvature == 0.0 ? 1e300 : 0.5 * kPiD / std::abs(curvature);
+    return curvature == 0.0 ? 1e300 : 0.5 * kPiDouble / std::abs(curvature);
   }
   // (height from the axis, z) of the point at arc length a from the vertex along the meridian.
   glm::dvec2 point(double a) const {

@@ -7,10 +7,10 @@
 
 namespace eyetrace {
 
-inline constexpr double kPiD = std::numbers::pi;
-inline constexpr double kTwoPiD = 2.0 * std::numbers::pi;
-inline constexpr double kRadiansPerDegreeD = std::numbers::pi / 180.0;
-inline constexpr double kDegreesPerRadianD = 180.0 / std::numbers::pi;
+inline constexpr double kPiDouble = std::numbers::pi;
+inline constexpr double kTwoPiDouble = 2.0 * std::numbers::pi;
+inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+inline constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
 inline constexpr float kPi = std::numbers::pi_v<float>;
 inline constexpr float kInvPi = std::numbers::inv_pi_v<float>;

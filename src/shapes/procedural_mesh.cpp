@@ -13,7 +13,7 @@ ProceduralMesh make_uv_sphere_mesh(int rings, int segments, float radius) {
     m.positions.push_back(Vec3(n * double(radius)));
     m.normals.push_back(Vec3(n));
   };
-  const double pi = kPiD;
+  const double pi = kPiDouble;
   vertex(0.0, 0.0);  // north pole: index 0
   for (int r = 1; r < rings; ++r)
     for (int s = 0; s < segments; ++s) vertex(pi * r / rings, 2.0 * pi * s / segments);

@@ -54,7 +54,7 @@ Estimate mean_weight(const Camera& cam, Vec2 p_film, int n, uint32_t seed) {
 // Raster position at visual field angle theta (degrees) along screen direction (cos, sin) of
 // an "angle"-mapped camera with a square image of res pixels and the given fov.
 Vec2 pixel_at_field(double theta, double azimuth_deg, double fov, int res) {
-  const double s = theta / (0.5 * fov), phi = azimuth_deg * kPiD / 180.0;
+  const double s = theta / (0.5 * fov), phi = azimuth_deg * kPiDouble / 180.0;
   return Vec2(float(0.5 * res * (1.0 + s * std::cos(phi))), float(0.5 * res * (1.0 - s * std::sin(phi))));
 }
 
@@ -64,7 +64,7 @@ Vec2 pixel_at_field(double theta, double azimuth_deg, double fov, int res) {
 // with the camera's pupil sampler or weights.
 double integrate_irradiance(const LensSystemCamera& cam, const LensSystemCamera::RetinaPoint& rp, int n) {
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.0, 0.0, cam.pupil().z_plane()) - rp.position);
-  const double beta = 35.0 * kPiD / 180.0, cos_beta = std::cos(beta);
+  const double beta = 35.0 * kPiDouble / 180.0, cos_beta = std::cos(beta);
   glm::dvec3 t1 = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 1.0, 0.0)));
   if (!std::isfinite(t1.x)) t1 = glm::dvec3(1.0, 0.0, 0.0);
   const glm::dvec3 t2 = glm::cross(axis, t1);
@@ -74,13 +74,13 @@ double integrate_irradiance(const LensSystemCamera& cam, const LensSystemCamera:
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const double cos_t = 1.0 - (i + u(rng)) / n * (1.0 - cos_beta);
-      const double sin_t = std::sqrt(1.0 - cos_t * cos_t), phi = 2.0 * kPiD * (j + u(rng)) / n;
+      const double sin_t = std::sqrt(1.0 - cos_t * cos_t), phi = 2.0 * kPiDouble * (j + u(rng)) / n;
       const glm::dvec3 d = cos_t * axis + sin_t * (std::cos(phi) * t1 + std::sin(phi) * t2);
       const double cos_r = glm::dot(d, rp.normal);
       if (cos_r <= 0.0) continue;
       if (cam.system().trace_range({rp.position, d}, cam.system().image_index() - 1, 0).ok()) sum += cos_r;
     }
-  return 2.0 * kPiD * (1.0 - cos_beta) * sum / (double(n) * n);
+  return 2.0 * kPiDouble * (1.0 - cos_beta) * sum / (double(n) * n);
 }
 
 // Depth (camera z) at which the rays of a bundle come closest together (smallest RMS radius),

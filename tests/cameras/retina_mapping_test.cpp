@@ -14,7 +14,7 @@
 namespace eyetrace {
 namespace {
 
-constexpr double kDeg = kRadiansPerDegreeD;
+constexpr double kDeg = kRadiansPerDegree;
 
 std::unique_ptr<LensSystemCamera> camera(const std::string& params, int res) {
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");

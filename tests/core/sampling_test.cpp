@@ -17,7 +17,7 @@ constexpr int kSamples = 1'000'000;
 // Family-wise significance 1e-3 over the warp tests of this file (Bonferroni).
 constexpr int kWarpTests = 10;
 constexpr double kSignificance = 1e-3 / kWarpTests;
-constexpr double kTwoPi = kTwoPiD;
+constexpr double kTwoPi = kTwoPiDouble;
 
 // Uniform points from a generator independent of the renderer: 24-bit floats in [0, 1).
 class UniformSource {

@@ -66,10 +66,10 @@ TEST(Disk, HitPointNormalAndUV) {
   expect_near(si->p, Vec3(0.3f, 0.4f, 1), 1e-6f);
   expect_near(si->n, Vec3(0, 0, 1), 1e-6f);
   // u = phi / 2pi, v = (radius - r_hit) / (radius - innerradius) = 0.5.
-  EXPECT_NEAR(si->uv.x, float(std::atan2(0.4, 0.3) / (2 * kPiD)), 1e-6f);
+  EXPECT_NEAR(si->uv.x, float(std::atan2(0.4, 0.3) / (2 * kPiDouble)), 1e-6f);
   EXPECT_NEAR(si->uv.y, 0.5f, 1e-6f);
   // pbrt: dp/du = phimax (-y, x, 0), dp/dv = (x, y, 0) (ri - r) / r_hit.
-  expect_near(si->dpdu, Vec3(float(-2 * kPiD * 0.4), float(2 * kPiD * 0.3), 0), 1e-5f);
+  expect_near(si->dpdu, Vec3(float(-2 * kPiDouble * 0.4), float(2 * kPiDouble * 0.3), 0), 1e-5f);
   expect_near(si->dpdv, Vec3(-0.6f, -0.8f, 0), 1e-6f);
 }
 
@@ -111,11 +111,11 @@ TEST(Disk, ReverseOrientationAndMirror) {
 
 TEST(Disk, AreaExactUnderAffineTransforms) {
   // Annulus wedge: phimax/2 (r^2 - ri^2) = (pi/2)/2 (4 - 1) = 3pi/4.
-  EXPECT_NEAR(make_disk({{"radius", 2}, {"innerradius", 1}, {"phimax", 90}})->area(), float(0.75 * kPiD), 1e-5f);
+  EXPECT_NEAR(make_disk({{"radius", 2}, {"innerradius", 1}, {"phimax", 90}})->area(), float(0.75 * kPiDouble), 1e-5f);
   // Scaling x by 2 and y by 3 scales every plane area by 6; z scale leaves it alone.
-  EXPECT_NEAR(make_disk({}, scale(Vec3(2, 3, 5)))->area(), float(6 * kPiD), 1e-4f);
+  EXPECT_NEAR(make_disk({}, scale(Vec3(2, 3, 5)))->area(), float(6 * kPiDouble), 1e-4f);
   // The plane x = const after a rotation: an ellipse with semi-axes 1 and 4.
-  EXPECT_NEAR(make_disk({}, scale(Vec3(1, 4, 1)) * rotate(90.f, Vec3(0, 1, 0)))->area(), float(4 * kPiD), 1e-4f);
+  EXPECT_NEAR(make_disk({}, scale(Vec3(1, 4, 1)) * rotate(90.f, Vec3(0, 1, 0)))->area(), float(4 * kPiDouble), 1e-4f);
 }
 
 TEST(Disk, AreaSamplingUniformOverEqualAreaCells) {
@@ -124,7 +124,7 @@ TEST(Disk, AreaSamplingUniformOverEqualAreaCells) {
   // in-plane scale keeps uniformity (affine maps keep area ratios within a plane).
   Transform t = translate(Vec3(0, 0, 2)) * scale(Vec3(3, 1.5f, 1));
   auto disk = make_disk({{"radius", 1}, {"innerradius", 0.5}, {"phimax", 300}}, t);
-  float area = float(0.5 * (300.0 / 180.0 * kPiD) * 0.75 * 4.5);
+  float area = float(0.5 * (300.0 / 180.0 * kPiDouble) * 0.75 * 4.5);
   EXPECT_NEAR(disk->area(), area, 1e-4f);
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> U(0.f, 1.f);
@@ -137,11 +137,11 @@ TEST(Disk, AreaSamplingUniformOverEqualAreaCells) {
     Vec3 local = t.inverse().point(s.p);
     float r2 = local.x * local.x + local.y * local.y;
     double phi = std::atan2(local.y, local.x);
-    if (phi < 0) phi += 2 * kPiD;
+    if (phi < 0) phi += 2 * kPiDouble;
     ASSERT_GE(r2, 0.25f - 1e-5f);
     ASSERT_LE(r2, 1.f + 1e-5f);
     int ring = std::clamp(int((r2 - 0.25f) / 0.15f), 0, 4);
-    int sector = std::clamp(int(phi / (50.0 / 180.0 * kPiD)), 0, 5);
+    int sector = std::clamp(int(phi / (50.0 / 180.0 * kPiDouble)), 0, 5);
     ++counts[ring * 6 + sector];
   }
   double chi2 = 0.0, e = n / 30.0;

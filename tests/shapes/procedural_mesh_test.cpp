@@ -42,7 +42,7 @@ TEST(ProceduralMesh, UVSphereWindsOutward) {
 TEST(ProceduralMesh, UVSphereAreaConvergesToSphere) {
   // Inscribed polyhedra: area below 4 pi r^2, error falling as the mesh refines (about
   // quadratically in the spacing).
-  double exact = 4 * kPiD * 9.0;  // r = 3
+  double exact = 4 * kPiDouble * 9.0;  // r = 3
   double prev_err = 1e30;
   for (int k : {8, 16, 32, 64, 128}) {
     double err = exact - mesh_area(make_uv_sphere_mesh(k, 2 * k, 3.f));

@@ -86,10 +86,10 @@ TEST(Sphere, OffAxisHitPointNormalAndUV) {
   expect_near(si->n, Vec3(0.6f, 0, -0.8f), 1e-6f);
   double theta = std::acos(-0.8);
   EXPECT_NEAR(si->uv.x, 0.f, 1e-6f);  // phi = 0
-  EXPECT_NEAR(si->uv.y, float(1.0 - theta / kPiD), 1e-6f);
+  EXPECT_NEAR(si->uv.y, float(1.0 - theta / kPiDouble), 1e-6f);
   // dp/du = phimax (-y, x, 0) = (0, 2 pi 0.6, 0); dp/dv = -pi (z cos phi, z sin phi, -r sin theta).
-  expect_near(si->dpdu, Vec3(0, float(2 * kPiD * 0.6), 0), 1e-5f);
-  expect_near(si->dpdv, Vec3(float(-kPiD * -0.8), 0, float(kPiD * 0.6)), 1e-5f);
+  expect_near(si->dpdu, Vec3(0, float(2 * kPiDouble * 0.6), 0), 1e-5f);
+  expect_near(si->dpdv, Vec3(float(-kPiDouble * -0.8), 0, float(kPiDouble * 0.6)), 1e-5f);
   EXPECT_GT(glm::dot(glm::cross(si->dpdu, si->dpdv), si->n), 0.f);
 }
 
@@ -101,7 +101,7 @@ TEST(Sphere, TransformedSphere) {
   EXPECT_NEAR(si->t, 10.f, 1e-5f);
   expect_near(si->p, Vec3(1, 2, 0), 1e-5f);
   expect_near(si->n, Vec3(0, 0, -1), 1e-6f);
-  EXPECT_NEAR(s.shape->area(), float(4 * kPiD * 9), 1e-3f);
+  EXPECT_NEAR(s.shape->area(), float(4 * kPiDouble * 9), 1e-3f);
   Bounds3 b = s.shape->bounds();
   EXPECT_NEAR(b.lo.x, -2.f, 1e-5f);
   EXPECT_NEAR(b.hi.z, 6.f, 1e-5f);
@@ -186,7 +186,7 @@ TEST(Sphere, PartialSphereUV) {
   EXPECT_NEAR(si->uv.x, 0.5f, 1e-6f);
   EXPECT_NEAR(si->uv.y, 0.5f, 1e-6f);
   // Area phimax r (zmax - zmin) = pi * 1 * 1.
-  EXPECT_NEAR(s.shape->area(), float(kPiD), 1e-5f);
+  EXPECT_NEAR(s.shape->area(), float(kPiDouble), 1e-5f);
 }
 
 TEST(Sphere, ReverseOrientationFlipsNormal) {
@@ -224,14 +224,14 @@ TEST(Sphere, AreaSamplingUniformOverEqualAreaZones) {
   // of equal probability; 39 dof, 0.1% critical value 72.05 (fixed seed).
   Transform t = translate(Vec3(3, -2, 1)) * rotate(30.f, Vec3(1, 1, 0)) * scale(Vec3(2, 2, 2));
   auto sphere = make_sphere({{"radius", 0.5}}, t);
-  EXPECT_NEAR(sphere->area(), float(4 * kPiD), 1e-4f);  // world radius 1
+  EXPECT_NEAR(sphere->area(), float(4 * kPiDouble), 1e-4f);  // world radius 1
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> U(0.f, 1.f);
   const int n = 200000;
   std::vector<int> counts(40, 0);
   for (int i = 0; i < n; ++i) {
     ShapeSample s = sphere->sample_area(Vec2(std::min(U(rng), kOneMinusEpsilon), std::min(U(rng), kOneMinusEpsilon)));
-    ASSERT_FLOAT_EQ(s.pdf_area, float(1.0 / (4 * kPiD)));
+    ASSERT_FLOAT_EQ(s.pdf_area, float(1.0 / (4 * kPiDouble)));
     Vec3 local = t.inverse().point(s.p) * 2.f;  // unit sphere coordinates
     ASSERT_NEAR(glm::length(local), 1.f, 1e-5f);
     ASSERT_NEAR(glm::dot(s.n, glm::normalize(s.p - Vec3(3, -2, 1))), 1.f, 1e-5f);
@@ -261,7 +261,7 @@ TEST(Sphere, PartialSphereSamplesStayOnThePart) {
   double chi2 = 0.0, e = n / 3.0;
   for (int c : counts) chi2 += (c - e) * (c - e) / e;
   EXPECT_LT(chi2, 13.82);  // 2 dof, alpha 0.001
-  EXPECT_NEAR(sphere->area(), float(0.5 * kPiD * 0.9), 1e-5f);
+  EXPECT_NEAR(sphere->area(), float(0.5 * kPiDouble * 0.9), 1e-5f);
 }
 
 }  // namespace
