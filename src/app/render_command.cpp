@@ -14,6 +14,7 @@
 #include "scene/parser.h"
 #include "render/progress.h"
 #include "render/render_state.h"
+#include "scene/scene_fingerprint.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {

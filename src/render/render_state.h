@@ -1,5 +1,5 @@
 // A render's resumable state, saved next to the output image as "<output>.state": the film's
-// exact double accumulators, the samples each tile holds, and a fingerprint of everything
+// exact double accumulators, the samples each tile holds, and the fingerprint (scene/scene_fingerprint.h) of everything
 // that decides the image, so `eyetrace render --resume` continues a stopped render to the
 // same bits an uninterrupted one gives, and refuses a state made for another scene.
 #pragma once
@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "render/film.h"
-#include "scene/scene_description.h"
 #include "render/tile_progress.h"
 
 namespace eyetrace {
@@ -32,14 +31,5 @@ inline std::string state_path(const std::string& output) { return output + ".sta
 void write_render_state(const std::string& path, const RenderState& state);
 // Throws SceneError naming the file when it is missing, truncated, corrupt or another version.
 RenderState read_render_state(const std::string& path);
-
-// FNV-1a, 64 bits: a fingerprint, not a cryptographic hash.
-uint64_t fnv1a(std::string_view bytes, uint64_t h = 0xcbf29ce484222325ull);
-// Every directive, parameter value (exactly, as parsed) and transform of the scene, plus
-// `options` (the command-line settings that change the image) and the content of every file in
-// `files_read` (meshes, images, lens files: a changed texture must not resume into an old
-// image), hashed. An unreadable file is an error naming it.
-uint64_t scene_fingerprint(const SceneDescription& desc, const std::string& options,
-                           const std::vector<std::string>& files_read);
 
 }  // namespace eyetrace

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "render/render_state.h"
+#include "scene/scene_fingerprint.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
