@@ -1,9 +1,9 @@
 # The layering rules of src/, checked on every test run (ctest -R layering):
 #   src/optics  includes only optics/ (the optics library has no renderer inside);
 #   src/core    includes only core/   (math, rays, spectra and the plugin interfaces);
-#   src/render     includes only core/ and render/ (the render loop knows no scene text);
-#   src/scene      includes only core/, scene/ and render/: no plugin folder, so adding a
-#   plugin never touches them (the plugins are registered in src/builtin_plugins.cpp).
+#   src/render  includes only core/ and render/ (the render loop knows no scene text);
+#   src/scene   includes only core/, scene/ and render/: no plugin folder, so adding a
+#               plugin never touches them (the plugins are registered in src/builtin_plugins.cpp).
 # Run: cmake -DSRC=<source dir>/src -P check_layers.cmake
 cmake_policy(SET CMP0057 NEW)
 set(allowed_optics "optics")
