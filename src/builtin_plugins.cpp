@@ -1,6 +1,7 @@
 // The one registration list: every built-in plugin, one line each.
 #include "cameras/lens_system_camera.h"
 #include "cameras/perspective_camera.h"
+#include "optics/eye_models.h"
 #include "scene/registry.h"
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
@@ -40,10 +41,7 @@ void register_builtin_plugins(Registry& r) {
   r.cameras["pinhole"] = create_pinhole_camera;
   r.cameras["thinlens"] = create_thinlens_camera;
   r.cameras["eye"] = create_eye_camera;
-  r.cameras["navarro"] = create_named_eye_camera("navarro");
-  r.cameras["gullstrand"] = create_named_eye_camera("gullstrand");
-  r.cameras["legrand"] = create_named_eye_camera("legrand");
-  r.cameras["kooijman"] = create_named_eye_camera("kooijman");
+  for (const std::string& model : optics::eye_model_names()) r.cameras[model] = create_named_eye_camera(model);
   r.cameras["realistic"] = create_realistic_camera;
 
   r.samplers["independent"] = create_independent_sampler;

@@ -159,15 +159,16 @@ LensSystemCamera::Settings realistic_view_settings(const ParameterList& params, 
 
 optics::Prescription prescription_from_camera_params(const std::string& camera_name, const ParameterList& params,
                                                      const std::string& search_dir) {
-  static const std::vector<std::string> lens_cameras = {"eye", "navarro", "gullstrand", "legrand", "kooijman",
-                                                        "realistic"};
   if (camera_name == "realistic") return realistic_prescription_from_params(params, search_dir);
-  if (std::find(lens_cameras.begin(), lens_cameras.end(), camera_name) != lens_cameras.end())
+  std::vector<std::string> lens_cameras = optics::eye_model_names();
+  if (camera_name == "eye" || std::find(lens_cameras.begin(), lens_cameras.end(), camera_name) != lens_cameras.end())
     return eye_prescription_from_params(camera_name, params);
+  lens_cameras.insert(lens_cameras.begin(), {"eye", "realistic"});
+  std::string list;
+  for (const std::string& n : lens_cameras) list += (list.empty() ? "\"" : ", \"") + n + "\"";
   const std::string hint = closest_match(camera_name, lens_cameras);
-  throw_error(params.loc(), fmt::format("camera \"{}\" has no lens prescription{}; use \"eye\", \"navarro\", "
-                                        "\"gullstrand\", \"legrand\", \"kooijman\" or \"realistic\"",
-                                        camera_name, hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint)));
+  throw_error(params.loc(), fmt::format("camera \"{}\" has no lens prescription{}; use one of {}", camera_name,
+                                        hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint), list));
 }
 
 }  // namespace eyetrace

@@ -1,7 +1,7 @@
 // The lens-system camera: rays leave a point of the retina (or film), pass the crystalline lens,
 // iris and cornea of a schematic eye (or the elements of a pbrt lens file) by an exact
-// double-precision sequential trace, and enter the scene. The eye presets ("eye", "navarro",
-// "gullstrand", "legrand", "kooijman") and pbrt-v4's "realistic" are this one class with
+// double-precision sequential trace, and enter the scene. Every eye model (Camera "eye" "string
+// model" M, or Camera M for each model name) and pbrt-v4's "realistic" are this one class with
 // different prescriptions; docs/eye-camera.md describes every parameter.
 //
 // Frames: the system frame of the optics library (mm, z = 0 at the corneal vertex, +z towards

@@ -1,12 +1,15 @@
 // Schematic eye presets: EyeOptions -> a validated Prescription (cornea first, iris stop at the
-// anterior lens vertex, retina last). The prescriptions are data (data/eyes/*.json, embedded at
-// build time); accommodation and refractive error are code. See docs/eye-models.md.
+// anterior lens vertex, retina last). Each model is one data file (data/eyes/<model>.json,
+// embedded at build time, or registered at run time with register_eye_model_file) naming its
+// accommodation law; refractive error, pupil, retina and wavelength are code. See
+// docs/eye-models.md.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "optics/eye_model.h"
 #include "optics/prescription.h"
 
 namespace eyetrace::optics {
@@ -29,12 +32,19 @@ struct EyeOptions {
     double wavelength_nm = 0.0;  // 0 = the model's reference wavelength
 };
 
-// Sorted preset names: arizona, escudero-sanz, gullstrand, kooijman, legrand, navarro.
+// Sorted model names (the embedded ones: arizona, escudero-sanz, gullstrand, kooijman, legrand,
+// navarro; and any registered since).
 std::vector<std::string> eye_model_names();
 // Accepted variants of a model ("" is always accepted). Throws for an unknown model.
 std::vector<std::string> eye_model_variants(const std::string& model);
 // [0, max] accommodation range of a model/variant in dioptres. Throws for unknown names.
 double max_accommodation_diopters(const std::string& model, const std::string& variant = "");
+
+// Adds a model from a data file (or its text) for the rest of the process: it is then usable
+// by name like the embedded ones. Throws OpticsError naming the file and field when the file is
+// invalid or its model and variant already exist.
+const EyeModel& register_eye_model_file(const std::string& path);
+const EyeModel& register_eye_model_text(const std::string& text, const std::string& origin);
 
 // Throws OpticsError naming the option ("model", "variant", "accommodation", "pupildiameter",
 // "refractiveerror", "retinaradius", "wavelength") when an option is invalid.

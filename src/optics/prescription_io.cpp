@@ -102,7 +102,7 @@ json write_dispersion(const Dispersion& d) {
 Prescription prescription_from_json(const json& j, const std::string& origin) {
     check_keys(j, {"format", "format_version", "model", "variant", "title", "source", "data_source",
                    "status", "units", "sign_convention", "conic_convention", "reference_wavelength_nm",
-                   "object_index", "media", "surfaces", "notes"},
+                   "object_index", "media", "surfaces", "notes", "accommodation"},
                origin);
     if (text(j, "format", origin) != "eyetrace-prescription")
         throw OpticsError(fmt::format("{}: 'format' must be \"eyetrace-prescription\"", origin));

@@ -12,6 +12,7 @@
 //                     "role": "refract" }, ... ],
 //     "notes": [ "..." ] }
 //
+// An eye model file adds "accommodation" (read by eye_model.h; ignored here).
 // radius_mm null = flat; semi_diameter_mm null or 0 = unlimited; role refract | stop | image.
 // Dispersion laws: "none", "navarro-herzberger", "cornu" (n_inf, k_nm, lambda0_nm),
 // "abbe-linear" (nd, vd). Unknown keys are errors, so a misspelt field is never ignored.
