@@ -22,7 +22,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("optics")) return optics();
   } catch (const eyetrace::SceneError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
+    // One line per diagnostic, compiler style, then how many when there are several.
+    for (const eyetrace::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+    if (e.diagnostics().size() > 1) std::fprintf(stderr, "%zu errors\n", e.diagnostics().size());
     return 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory\n");

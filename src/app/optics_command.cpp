@@ -26,6 +26,7 @@ struct OpticsArgs {
   std::string fields = "0,10,20,30,40";
   std::string object_distance;  // metres; empty = infinity
   std::string plot;
+  bool strict = false;
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -83,6 +84,7 @@ void write_spot_plot(const std::string& path, const optics::Prescription& p, con
 }
 
 int run_optics(const OpticsArgs& a) {
+  set_warnings_fatal(a.strict);
   const optics::Prescription p = camera_prescription(a.camera);
   optics::ReportOptions o;
   o.fields_deg = parse_fields(a.fields);
@@ -110,6 +112,7 @@ CommandRunner add_optics_command(CLI::App& app) {
                 "Camera directive as for render's --camera, e.g. 'Camera \"navarro\" \"float accommodation\" 2' "
                 "(default: 'Camera \"navarro\"')");
   c->add_flag("--json", args->json, "Print the report as JSON");
+  c->add_flag("--strict", args->strict, "Treat warnings about the camera (e.g. a clamped aperture) as errors");
   c->add_option("--fields", args->fields, "Field angles for real-ray spots, degrees (default 0,10,20,30,40)");
   c->add_option("--object-distance", args->object_distance,
                 "Distance of the spot sources in metres from the entrance pupil (default: infinity)");

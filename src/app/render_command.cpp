@@ -31,6 +31,7 @@ struct RenderArgs {
   std::string crop;
   std::string camera;
   bool quiet = false;
+  bool strict = false;
   std::string stats;
   double max_memory_gib = 0;
   double checkpoint = -1;  // seconds between checkpoints; 0: after every pass; < 0: none
@@ -43,7 +44,7 @@ IVec2 parse_resolution(const std::string& s) {
   char x = 0, extra = 0;
   if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
       w > 32768 || h > 32768)
-    throw_error(fmt::format("--resolution \"{}\": expected WxH with 1 <= W, H <= 32768", s));
+    throw_parameter_error({}, "--resolution", fmt::format("\"{}\": expected WxH with 1 <= W, H <= 32768", s));
   return IVec2(w, h);
 }
 
@@ -51,9 +52,9 @@ Vec4 parse_crop(const std::string& s) {
   float v[4];
   char extra = 0;
   if (std::sscanf(s.c_str(), "%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &extra) != 4)
-    throw_error(fmt::format("--crop \"{}\": expected four fractions x0,x1,y0,y1", s));
+    throw_parameter_error({}, "--crop", fmt::format("\"{}\": expected four fractions x0,x1,y0,y1", s));
   if (!(v[0] >= 0 && v[0] < v[1] && v[1] <= 1 && v[2] >= 0 && v[2] < v[3] && v[3] <= 1))
-    throw_error(fmt::format("--crop \"{}\": needs 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1", s));
+    throw_parameter_error({}, "--crop", fmt::format("\"{}\": needs 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1", s));
   return Vec4(v[0], v[1], v[2], v[3]);
 }
 
@@ -66,7 +67,7 @@ void check_output_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& c : ext) c = char(std::tolower(c));
   if (ext != ".exr" && ext != ".png")
-    throw_error(fmt::format("output \"{}\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", path));
+    throw_parameter_error({}, "--output", fmt::format("\"{}\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", path));
 }
 
 // Everything besides the scene description that changes the image, for the state fingerprint.
@@ -140,6 +141,7 @@ void write_stats(const RenderArgs& a, const nlohmann::json& j) {
 
 int run_render(const RenderArgs& a) {
   set_warnings_enabled(!a.quiet);
+  set_warnings_fatal(a.strict);
   SceneDescription desc = parse_scene_file(a.scene);
   RenderOverrides o;
   if (!a.camera.empty()) o.camera = parse_directive_text(a.camera, "Camera", "--camera");
@@ -230,17 +232,15 @@ int run_render(const RenderArgs& a) {
 }
 
 // CLI11 validators, so that a malformed value is a command-line error (exit status 2). CLI11
-// puts the option's name in front of the message, so it is taken off ours.
-CLI::Validator validator(std::function<void(const std::string&)> check, const std::string& option, const std::string& what) {
+// puts the option's name in front of the message, so the validator returns the diagnostic's
+// message alone.
+CLI::Validator validator(std::function<void(const std::string&)> check, const std::string& what) {
   return CLI::Validator(
-      [check, option](std::string& value) -> std::string {
+      [check](std::string& value) -> std::string {
         try {
           check(value);
         } catch (const SceneError& e) {
-          std::string m = e.what();
-          for (const std::string& prefix : {std::string("error: "), option + " "})
-            if (m.rfind(prefix, 0) == 0) m = m.substr(prefix.size());
-          return m;
+          return e.first().message;
         }
         return "";
       },
@@ -264,17 +264,18 @@ CommandRunner add_render_command(CLI::App& app) {
   c->footer(kRenderFooter);
   c->add_option("scene", args->scene, "Scene file (pbrt-v4 text format)")->required();
   c->add_option("-o,--output", args->output, "Output image: .exr (linear float) or .png (sRGB 8-bit); default: the Film's filename")
-      ->check(validator(check_output_extension, "--output", "PATH"));
+      ->check(validator(check_output_extension, "PATH"));
   c->add_option("--spp", args->spp, "Samples per pixel (overrides the Sampler's pixelsamples)")->check(CLI::Range(1, 1 << 24));
   c->add_option("--resolution", args->resolution, "Image size WxH (overrides the Film's xresolution/yresolution)")
-      ->check(validator(parse_resolution, "--resolution", "WxH"));
+      ->check(validator(parse_resolution, "WxH"));
   c->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   c->add_option("--seed", args->seed, "Sampler seed; the same seed gives the same image for any thread count")->check(CLI::NonNegativeNumber);
   c->add_option("--crop", args->crop, "Render only x0,x1,y0,y1 (fractions of the image, as pbrt's cropwindow)")
-      ->check(validator(parse_crop, "--crop", "X0,X1,Y0,Y1"));
+      ->check(validator(parse_crop, "X0,X1,Y0,Y1"));
   c->add_option("--camera", args->camera,
                 "Replace the scene's camera with a Camera directive, e.g. 'Camera \"navarro\" \"float accommodation\" 2'");
   c->add_flag("-q,--quiet", args->quiet, "No progress line, summary or warnings");
+  c->add_flag("--strict", args->strict, "Treat warnings (unsupported but ignorable input) as errors: nothing is rendered");
   c->add_option("--stats", args->stats, "Write render statistics as JSON to this file");
   c->add_option("--max-memory", args->max_memory_gib, "Refuse renders predicted to need more GiB (default: 3/4 of RAM)");
   c->add_option("--checkpoint", args->checkpoint,

@@ -23,16 +23,6 @@ double get_double(const ParameterList& params, const std::string& name, double d
   return p && !p->numbers.empty() ? p->numbers[0] : def;
 }
 
-// make_eye names the offending option in its message ("eye option 'pupildiameter': ..."); the
-// option names are the camera's parameter names.
-std::string option_of(const std::string& message) {
-  const std::string key = "eye option '";
-  const size_t at = message.find(key);
-  if (at == std::string::npos) return "model";
-  const size_t end = message.find('\'', at + key.size());
-  return message.substr(at + key.size(), end - at - key.size());
-}
-
 bool has_curved_retina(const optics::EyeOptions& o) {
   optics::EyeOptions relaxed = o;
   relaxed.accommodation_D = 0.0;
@@ -77,11 +67,9 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
     read_retina(params, o);
     return optics::make_eye(o);
   } catch (const optics::OpticsError& e) {
-    // "eye option 'pupildiameter': 20 mm is outside..." -> parameter "pupildiameter": 20 mm ...
-    const std::string option = option_of(e.what()), prefix = "eye option '" + option + "': ";
-    std::string message = e.what();
-    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-    params.fail(option, message);
+    // The eye options are named as the camera's parameters; an error naming none (an invalid
+    // system) belongs to the model.
+    params.fail(e.option().empty() ? "model" : e.option(), e.message());
   }
 }
 

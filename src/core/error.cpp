@@ -14,23 +14,76 @@ std::string SourceLoc::to_string() const {
   return fmt::format("{}:{}:{}", f, line, column);
 }
 
-void throw_error(const SourceLoc& loc, const std::string& message) {
-  throw SceneError(fmt::format("{}: error: {}", loc.to_string(), message));
+std::string Diagnostic::to_string() const {
+  const char* kind = severity == Severity::Error ? "error" : "warning";
+  // A command-line option has no place in a file: its name leads the message instead.
+  if (!loc.known() && !parameter.empty() && parameter[0] == '-')
+    return fmt::format("{}: {} {}", kind, parameter, message);
+  if (!loc.known()) return fmt::format("{}: {}", kind, message);
+  return fmt::format("{}: {}: {}", loc.to_string(), kind, message);
 }
 
-void throw_error(const std::string& message) { throw SceneError("error: " + message); }
+bool Diagnostic::operator==(const Diagnostic& o) const {
+  return loc.file == o.loc.file && loc.line == o.loc.line && loc.column == o.loc.column &&
+         parameter == o.parameter && severity == o.severity && message == o.message;
+}
+
+void DiagnosticList::add(const Diagnostic& d) {
+  for (const Diagnostic& k : kept_)
+    if (k == d) return;
+  if (kept_.size() < kMaxErrors) kept_.push_back(d);
+  else ++suppressed_;
+}
+
+void DiagnosticList::add_all(const std::vector<Diagnostic>& ds) {
+  for (const Diagnostic& d : ds) add(d);
+}
+
+void DiagnosticList::throw_if_any() const {
+  if (kept_.empty()) return;
+  std::vector<Diagnostic> all = kept_;
+  if (suppressed_ > 0)
+    all.push_back(Diagnostic{{}, "", Severity::Error,
+                             fmt::format("{} more error{} not shown (at most {} are listed)", suppressed_,
+                                         suppressed_ == 1 ? "" : "s", kMaxErrors)});
+  throw SceneError(std::move(all));
+}
+
+namespace {
+std::string join_lines(const std::vector<Diagnostic>& ds) {
+  std::string text;
+  for (const Diagnostic& d : ds) text += (text.empty() ? "" : "\n") + d.to_string();
+  return text;
+}
+}  // namespace
+
+SceneError::SceneError(Diagnostic d) : SceneError(std::vector<Diagnostic>{std::move(d)}) {}
+SceneError::SceneError(std::vector<Diagnostic> ds) : std::runtime_error(join_lines(ds)), diagnostics_(std::move(ds)) {}
+
+void throw_error(const SourceLoc& loc, const std::string& message) {
+  throw SceneError(Diagnostic{loc, "", Severity::Error, message});
+}
+
+void throw_error(const std::string& message) { throw SceneError(Diagnostic{{}, "", Severity::Error, message}); }
+
+void throw_parameter_error(const SourceLoc& loc, const std::string& parameter, const std::string& message) {
+  throw SceneError(Diagnostic{loc, parameter, Severity::Error, message});
+}
 
 namespace {
 std::atomic<bool> g_warnings_enabled{true};
+std::atomic<bool> g_warnings_fatal{false};
 std::atomic<int> g_warning_count{0};
 std::mutex g_warn_mutex;
 }  // namespace
 
 void set_warnings_enabled(bool enabled) { g_warnings_enabled = enabled; }
+void set_warnings_fatal(bool fatal) { g_warnings_fatal = fatal; }
 int warning_count() { return g_warning_count; }
 
 void warn(const SourceLoc& loc, const std::string& message) {
-  std::string text = fmt::format("{}: warning: {}", loc.to_string(), message);
+  if (g_warnings_fatal) throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
+  std::string text = Diagnostic{loc, "", Severity::Warning, message}.to_string();
   std::lock_guard<std::mutex> lock(g_warn_mutex);
   static std::set<std::string> seen;
   if (!seen.insert(text).second) return;

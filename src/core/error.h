@@ -1,31 +1,40 @@
-// Errors and warnings that point at the scene file, like a compiler: file:line:col.
+// Errors and warnings that point at the scene file, like a compiler: file:line:col. Both are
+// Diagnostic values (core/diagnostic.h); an error travels as a SceneError holding them.
 #pragma once
 #include <fmt/core.h>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/diagnostic.h"
+
 namespace eyetrace {
 
-struct SourceLoc {
-  std::string file;  // empty for text given on the command line
-  int line = 0;
-  int column = 0;
-  std::string to_string() const;  // "scene.pbrt:12:5" (or "<camera>:1:3")
-};
-
-// Every user-facing failure (bad scene, bad option, unreadable file) is a SceneError whose
-// message is complete ("scene.pbrt:12:5: error: ..."); main() prints it and exits non-zero.
+// Every user-facing failure (bad scene, bad option, unreadable file) is a SceneError holding
+// one or more error diagnostics; what() is their text, one per line ("scene.pbrt:12:5: error:
+// ..."); main() prints it and exits non-zero.
 class SceneError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit SceneError(Diagnostic d);
+  explicit SceneError(std::vector<Diagnostic> ds);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  // The first (often the only) diagnostic.
+  const Diagnostic& first() const { return diagnostics_.front(); }
+
+ private:
+  std::vector<Diagnostic> diagnostics_;
 };
 
 [[noreturn]] void throw_error(const SourceLoc& loc, const std::string& message);
 [[noreturn]] void throw_error(const std::string& message);
+// An error about one scene parameter or command-line option: `parameter` is kept as a field.
+[[noreturn]] void throw_parameter_error(const SourceLoc& loc, const std::string& parameter,
+                                        const std::string& message);
 // Warnings go to stderr (once per distinct text) unless warnings are silenced by --quiet.
+// With strict warnings (--strict) a warning is thrown as an error instead.
 void warn(const SourceLoc& loc, const std::string& message);
 void set_warnings_enabled(bool enabled);
+void set_warnings_fatal(bool fatal);
 int warning_count();
 
 template <typename... Args>

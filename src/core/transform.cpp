@@ -53,12 +53,12 @@ Transform rotate(float degrees, const Vec3& axis) {
 
 Transform look_at(const Vec3& eye, const Vec3& look, const Vec3& up) {
   Vec3 dir = look - eye;
-  if (glm::length(dir) == 0.f) throw std::domain_error("LookAt: eye and look points coincide");
+  if (glm::length(dir) == 0.f) throw std::domain_error("eye and look points coincide");
   dir = glm::normalize(dir);
   Vec3 upn = glm::normalize(up);
   Vec3 right = glm::cross(upn, dir);
   if (glm::length(right) == 0.f)
-    throw std::domain_error("LookAt: up vector and viewing direction are parallel");
+    throw std::domain_error("up vector and viewing direction are parallel");
   right = glm::normalize(right);
   Vec3 new_up = glm::cross(dir, right);
   Mat4 world_from_camera(Vec4(right, 0.f), Vec4(new_up, 0.f), Vec4(dir, 0.f), Vec4(eye, 1.f));

@@ -22,7 +22,7 @@ namespace eyetrace::optics {
 namespace {
 
 [[noreturn]] void bad_option(const char* option, const std::string& message) {
-    throw OpticsError(fmt::format("eye option '{}': {}", option, message));
+    throw OpticsError(option, message);
 }
 
 std::string join(const std::vector<std::string>& names) {

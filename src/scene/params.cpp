@@ -28,7 +28,7 @@ const Param* ParameterList::find(const std::string& name) const {
 
 void ParameterList::fail(const std::string& name, const std::string& message) const {
   const Param* p = find(name);
-  throw_error(p ? p->loc : loc_, fmt::format("parameter \"{}\": {}", name, message));
+  throw_parameter_error(p ? p->loc : loc_, name, fmt::format("parameter \"{}\": {}", name, message));
 }
 
 void ParameterList::note_query(const std::string& name) const {
@@ -205,15 +205,19 @@ int ParameterList::get_int_in(const std::string& name, int def, int lo, int hi) 
   return v;
 }
 
+// Every unused parameter is reported, not only the first.
 void ParameterList::check_unused(const std::string& directive, const std::vector<std::string>& known) const {
+  std::vector<Diagnostic> unused;
   for (const auto& p : params_) {
     if (p.used) continue;
     std::vector<std::string> names = known;
     names.insert(names.end(), queried_.begin(), queried_.end());
     std::string hint = closest_match(p.name, names);
-    eyetrace::fail(p.loc, "{}: unused parameter \"{} {}\"{}", directive, p.type, p.name,
-                   hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint));
+    unused.push_back(Diagnostic{p.loc, p.name, Severity::Error,
+                                fmt::format("{}: unused parameter \"{} {}\"{}", directive, p.type, p.name,
+                                            hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint))});
   }
+  if (!unused.empty()) throw SceneError(std::move(unused));
 }
 
 void ParameterList::mark_all_used() const {

@@ -87,15 +87,52 @@ void SceneParser::parse_text(std::string text, const std::string& filename) {
   files_.pop_back();
 }
 
+// A directive that fails is recorded and the parse goes on at the next directive keyword, so
+// one run reports every independent mistake (up to DiagnosticList::kMaxErrors).
 void SceneParser::run(Tokenizer& tok) {
-  for (Token t = tok.next(); t.kind != TokenKind::kEnd; t = tok.next()) {
-    SourceLoc loc = tok.loc(t);
-    if (t.kind != TokenKind::kWord)
-      fail(loc, "unexpected {} where a directive (Shape, AttributeBegin, ...) was expected", t.describe());
-    auto it = handlers().find(t.text);
-    if (it == handlers().end()) unknown_directive(t, loc);
-    (this->*(it->second))(tok, loc);
+  for (;;) {
+    try {
+      Token t = tok.next();
+      if (t.kind == TokenKind::kEnd) return;
+      SourceLoc loc = tok.loc(t);
+      if (t.kind != TokenKind::kWord)
+        fail(loc, "unexpected {} where a directive (Shape, AttributeBegin, ...) was expected", t.describe());
+      auto it = handlers().find(t.text);
+      if (it == handlers().end()) unknown_directive(t, loc);
+      (this->*(it->second))(tok, loc);
+    } catch (const SceneError& e) {
+      errors_.add_all(e.diagnostics());
+      if (tok.took_end()) {  // the failed directive ran to the end of the text
+        cut_short_ = true;
+        return;
+      }
+      if (!skip_to_directive(tok)) return;
+    }
   }
+}
+
+// A bare word that is neither a number nor a bool can only be a directive (perhaps a
+// misspelt one, which then gets its own error).
+static bool starts_directive(const Token& t) {
+  double v;
+  return t.kind == TokenKind::kWord && t.text != "true" && t.text != "false" &&
+         parse_number(t.text, &v) == NumberStatus::kNotANumber;
+}
+
+// Skips what is left of a failed directive (its parameters, values, brackets) up to the next
+// directive keyword. False at the end of the text, or when the text cannot be read on (an
+// unterminated string: the parse is then cut short, since what follows would only produce
+// errors that are not the author's).
+bool SceneParser::skip_to_directive(Tokenizer& tok) {
+  try {
+    for (Token t = tok.peek(); t.kind != TokenKind::kEnd; t = tok.peek()) {
+      if (starts_directive(t)) return true;
+      tok.next();
+    }
+  } catch (const SceneError&) {
+    cut_short_ = true;
+  }
+  return false;
 }
 
 void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const {
@@ -107,13 +144,19 @@ void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const 
 }
 
 SceneDescription SceneParser::finish(const std::string& top_file) {
+  // A text cut short by an error has not really ended: its open blocks and missing WorldBegin
+  // follow from that error and are not reported again.
+  if (cut_short_) errors_.throw_if_any();
   if (!blocks_.empty()) {
     const OpenBlock& b = blocks_.back();
     const char* closer = b.directive == "ObjectBegin" ? "ObjectEnd"
                          : b.directive == "TransformBegin" ? "TransformEnd" : "AttributeEnd";
-    fail(b.loc, "{} has no matching {} before the end of the scene", b.directive, closer);
+    errors_.add(Diagnostic{b.loc, "", Severity::Error,
+                           fmt::format("{} has no matching {} before the end of the scene", b.directive, closer)});
   }
-  if (!in_world_) throw_error(SourceLoc{top_file, 0, 0}, "the scene ends before WorldBegin");
+  if (!in_world_)
+    errors_.add(Diagnostic{SourceLoc{top_file, 0, 0}, "", Severity::Error, "the scene ends before WorldBegin"});
+  errors_.throw_if_any();
   return std::move(desc_);
 }
 
@@ -158,7 +201,9 @@ std::string SceneParser::read_name(Tokenizer& tok, const char* directive, const 
 std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directive, size_t count) {
   std::vector<float> v;
   while (v.size() < count) {
-    Token t = tok.next();
+    // Peeked, not taken, until it is a number: a directive that follows too few numbers is
+    // left for the parse to go on with.
+    Token t = tok.peek();
     double x = 0;
     NumberStatus status = t.kind == TokenKind::kWord ? parse_number(t.text, &x) : NumberStatus::kNotANumber;
     if (status == NumberStatus::kOk && std::abs(x) > 3.0e38) status = NumberStatus::kOutOfRange;
@@ -166,6 +211,7 @@ std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directi
       fail(tok.loc(t), "{} takes {} numbers; got {} after {}", directive, count, t.describe(), v.size());
     if (status == NumberStatus::kNotFinite) fail(tok.loc(t), "{}: {} is not a finite number", directive, t.describe());
     if (status == NumberStatus::kOutOfRange) fail(tok.loc(t), "{}: value {} is out of range", directive, t.text);
+    tok.next();
     v.push_back(float(x));
   }
   return v;

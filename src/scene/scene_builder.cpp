@@ -61,35 +61,52 @@ class Builder {
  public:
   Builder(const SceneDescription& desc, RenderSetup& setup) : desc_(desc), setup_(setup) {}
 
+  // Every texture, shape, instance and light is tried and its errors collected; textures
+  // first, and a failed texture stops the build there, since the materials naming it would
+  // only repeat the error.
   void build_world() {
     setup_.textures = std::make_unique<TextureStore>();
     setup_.scene = std::make_unique<Scene>();
-    for (const TextureEntity& t : desc_.textures) build_texture(t);
-    for (const ShapeEntity& s : desc_.shapes) add_shape(s);
+    for (const TextureEntity& t : desc_.textures) attempt([&] { build_texture(t); });
+    errors_.throw_if_any();
+    for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
     std::set<std::string> used;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
     for (const auto& [name, def] : desc_.instances) {
       // No ray can reach an object that is never instanced: building its shapes and BVH
       // would only cost time and memory.
-      if (used.count(name)) build_instance(def);
-      else warn(def.loc, fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name));
+      if (used.count(name)) attempt([&] { build_instance(def); });
+      else attempt([&] { warn(def.loc, fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name)); });
     }
-    for (const InstanceUse& u : desc_.instance_uses) {
-      if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
-      setup_.scene->add_instance(u.name, u.world_from_instance);
-    }
-    for (const TransformedEntity& l : desc_.lights) {
-      LightContext ctx{l.params, l.world_from_object, desc_.search_dir};
-      auto light = find_plugin(reg_.lights, "light", l.name, l.loc)(ctx);
-      l.params.check_unused("LightSource \"" + l.name + "\"");
-      light_sources_.emplace_back(light.get(), &l);
-      setup_.scene->add_light(std::move(light));
-    }
+    for (const InstanceUse& u : desc_.instance_uses)
+      attempt([&] {
+        if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
+        setup_.scene->add_instance(u.name, u.world_from_instance);
+      });
+    for (const TransformedEntity& l : desc_.lights) attempt([&] { add_light(l); });
+    errors_.throw_if_any();
     setup_.scene->commit();
     check_light_power();
   }
 
  private:
+  template <typename F>
+  void attempt(F&& f) {
+    try {
+      f();
+    } catch (const SceneError& e) {
+      errors_.add_all(e.diagnostics());
+    }
+  }
+
+  void add_light(const TransformedEntity& l) {
+    LightContext ctx{l.params, l.world_from_object, desc_.search_dir};
+    auto light = find_plugin(reg_.lights, "light", l.name, l.loc)(ctx);
+    l.params.check_unused("LightSource \"" + l.name + "\"");
+    light_sources_.emplace_back(light.get(), &l);
+    setup_.scene->add_light(std::move(light));
+  }
+
   void build_texture(const TextureEntity& t) {
     TextureContext ctx{t.params, t.world_from_object, *setup_.textures, desc_.search_dir};
     std::string what = fmt::format("Texture \"{}\" \"{}\" \"{}\"", t.texture_name, t.value_type, t.name);
@@ -188,6 +205,7 @@ class Builder {
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
+  DiagnosticList errors_;
 };
 
 std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOverrides& o, IVec2 resolution) {
@@ -234,32 +252,48 @@ std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderO
   return make_camera(desc, o, f.resolution);
 }
 
+// Each plugin is tried and its errors collected, so a scene with several mistakes reports them
+// all; only the film comes first alone, since every other part depends on its size.
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& o) {
   const Registry& reg = Registry::builtin();
   RenderSetup setup;
   SceneFileLog files;
+  DiagnosticList errors;
+  auto attempt = [&errors](auto&& f) {
+    try {
+      f();
+      return true;
+    } catch (const SceneError& e) {
+      errors.add_all(e.diagnostics());
+      return false;
+    }
+  };
   FilmSettings f = read_film(desc.film, o);
   check_memory(f, o);
   setup.output_filename = f.filename;
-  setup.camera = make_camera(desc, o, f.resolution);
-
-  const SceneEntity& s = desc.sampler;
-  std::optional<uint64_t> option_seed = apply_options(desc);
-  SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
-  setup.sampler = find_plugin(reg.samplers, "sampler", s.name, s.loc)(sctx);
-  s.params.check_unused("Sampler \"" + s.name + "\"");
-
-  const SceneEntity& pf = desc.filter;
-  auto filter = find_plugin(reg.filters, "pixel filter", pf.name, pf.loc)(pf.params);
-  pf.params.check_unused("PixelFilter \"" + pf.name + "\"");
-  setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale);
-
-  Builder(desc, setup).build_world();
-
-  const SceneEntity& in = desc.integrator;
-  IntegratorContext ictx{in.params, *setup.scene};
-  setup.integrator = find_plugin(reg.integrators, "integrator", in.name, in.loc)(ictx);
-  in.params.check_unused("Integrator \"" + in.name + "\"");
+  attempt([&] { setup.camera = make_camera(desc, o, f.resolution); });
+  attempt([&] {
+    const SceneEntity& s = desc.sampler;
+    std::optional<uint64_t> option_seed = apply_options(desc);
+    SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
+    setup.sampler = find_plugin(reg.samplers, "sampler", s.name, s.loc)(sctx);
+    s.params.check_unused("Sampler \"" + s.name + "\"");
+  });
+  attempt([&] {
+    const SceneEntity& pf = desc.filter;
+    auto filter = find_plugin(reg.filters, "pixel filter", pf.name, pf.loc)(pf.params);
+    pf.params.check_unused("PixelFilter \"" + pf.name + "\"");
+    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale);
+  });
+  // The integrator looks at the built scene's lights: it is made only when the scene was.
+  if (attempt([&] { Builder(desc, setup).build_world(); }))
+    attempt([&] {
+      const SceneEntity& in = desc.integrator;
+      IntegratorContext ictx{in.params, *setup.scene};
+      setup.integrator = find_plugin(reg.integrators, "integrator", in.name, in.loc)(ictx);
+      in.params.check_unused("Integrator \"" + in.name + "\"");
+    });
+  errors.throw_if_any();
   setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),
                                   setup.film->filter().to_string(), setup.integrator->to_string());
   setup.files_read = files.files();

@@ -225,8 +225,7 @@ void SceneParser::look_at(Tokenizer& tok, const SourceLoc& loc) {
   try {
     t = eyetrace::look_at(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), Vec3(v[6], v[7], v[8]));
   } catch (const std::domain_error& e) {
-    std::string why = e.what();
-    fail(loc, "{}", why.rfind("LookAt", 0) == 0 ? why : "LookAt: " + why);
+    fail(loc, "LookAt: {}", e.what());
   }
   apply(loc, "LookAt", t);
 }

@@ -67,6 +67,7 @@ class SceneParser {
   static const std::map<std::string, Handler, std::less<>>& handlers();
 
   void run(Tokenizer& tok);
+  bool skip_to_directive(Tokenizer& tok);
   [[noreturn]] void unknown_directive(const Token& t, const SourceLoc& loc) const;
 
   // Reading helpers.
@@ -140,6 +141,8 @@ class SceneParser {
   std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;
   std::map<std::string, SourceLoc> named_material_locs_;
   std::optional<std::string> current_object_;
+  DiagnosticList errors_;  // every failed directive, reported together by finish()
+  bool cut_short_ = false;  // an error ended the parse before the end of the text
   bool in_world_ = false;
   bool warned_transform_begin_ = false;
 };

@@ -71,11 +71,6 @@ Tokenizer::Tokenizer(std::string text, std::string filename)
   if (byte(0) == 0xef && byte(1) == 0xbb && byte(2) == 0xbf) pos_ = line_start_ = 3;  // UTF-8 BOM
 }
 
-SourceLoc Tokenizer::end_loc() const {
-  // Only called once scanning reached the end, so line_ and line_start_ describe the last line.
-  return SourceLoc{filename_, line_, column_of(text_.size())};
-}
-
 void Tokenizer::fail_at(size_t pos, const std::string& message) const {
   throw_error(SourceLoc{filename_, line_, column_of(pos)}, message);
 }
@@ -86,12 +81,10 @@ const Token& Tokenizer::peek() {
 }
 
 Token Tokenizer::next() {
-  if (peeked_) {
-    Token t = *peeked_;
-    peeked_.reset();
-    return t;
-  }
-  return scan();
+  Token t = peeked_ ? *peeked_ : scan();
+  peeked_.reset();
+  if (t.kind == TokenKind::kEnd) took_end_ = true;
+  return t;
 }
 
 Token Tokenizer::scan() {

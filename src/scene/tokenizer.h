@@ -34,10 +34,11 @@ class Tokenizer {
 
   Token next();
   const Token& peek();
+  // True once next() has handed out the end of the text: a reader that asked for more than
+  // the text holds (an unclosed '[' or a value missing at the end) has run into it.
+  bool took_end() const { return took_end_; }
   const std::string& filename() const { return filename_; }
   SourceLoc loc(const Token& t) const { return SourceLoc{filename_, t.line, t.column}; }
-  // The position just past the last character, for "end of file" messages.
-  SourceLoc end_loc() const;
 
  private:
   Token scan();
@@ -51,6 +52,7 @@ class Tokenizer {
   size_t line_start_ = 0;
   int line_ = 1;
   std::optional<Token> peeked_;
+  bool took_end_ = false;
 };
 
 enum class NumberStatus { kOk, kNotANumber, kNotFinite, kOutOfRange };

@@ -635,7 +635,7 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
       {base + " --crop 0.5,0.2,0,1", "--crop: \"0.5,0.2,0,1\": needs 0 <= x0 < x1 <= 1", 2},
       {base + " --checkpoint -1", "--checkpoint: Value -1 not in range", 2},
       {"render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("out.bmp")),
-       "--output: output \"" + dir.file("out.bmp") + "\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", 2},
+       "--output: \"" + dir.file("out.bmp") + "\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", 2},
       {"render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("blocker/out.png")), "blocker/out.png", 1},
   };
   std::vector<std::string> args;

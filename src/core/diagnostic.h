@@ -1,0 +1,52 @@
+// Diagnostics as values: one type carries every error and warning from the tokenizer, parser,
+// parameter checks and plugin factories to the command line, with its place in the scene
+// (file, line, column), the parameter it concerns, its severity and its message. Code that
+// needs a diagnostic's parameter or message reads the field, never the formatted text.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace eyetrace {
+
+struct SourceLoc {
+  std::string file;  // empty for text given on the command line
+  int line = 0;
+  int column = 0;
+  std::string to_string() const;  // "scene.pbrt:12:5" (or "<text>:1:3")
+  bool known() const { return !file.empty() || line > 0; }
+};
+
+enum class Severity { Error, Warning };
+
+struct Diagnostic {
+  SourceLoc loc;
+  std::string parameter;  // the scene parameter or command-line option it concerns, if any
+  Severity severity = Severity::Error;
+  std::string message;
+  // "scene.pbrt:12:5: error: message"; without a place "error: message", or
+  // "error: --option message" for a command-line option.
+  std::string to_string() const;
+  bool operator==(const Diagnostic& o) const;
+};
+
+// The errors of one run, collected so that a scene with several mistakes reports them all:
+// each stage records what fails and carries on where later errors still mean something.
+// Identical diagnostics are kept once. Beyond kMaxErrors they are counted, not kept.
+class DiagnosticList {
+ public:
+  static constexpr size_t kMaxErrors = 20;
+  void add(const Diagnostic& d);
+  void add_all(const std::vector<Diagnostic>& ds);
+  bool empty() const { return kept_.empty(); }
+  const std::vector<Diagnostic>& kept() const { return kept_; }
+  size_t suppressed() const { return suppressed_; }
+  // Throws one SceneError holding every kept error (and a note of how many more there were).
+  void throw_if_any() const;
+
+ private:
+  std::vector<Diagnostic> kept_;
+  size_t suppressed_ = 0;
+};
+
+}  // namespace eyetrace
