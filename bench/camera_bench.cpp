@@ -87,14 +87,14 @@ void run_batched(benchmark::State& state, const Camera& cam) {
 
 void BM_Pinhole(benchmark::State& state) {
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 60.f;
+  s.fov_deg = 60.f;
   run(state, PerspectiveCamera(Transform(), kResolution, s));
 }
 BENCHMARK(BM_Pinhole);
 
 void BM_ThinLens(benchmark::State& state) {
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 60.f;
+  s.fov_deg = 60.f;
   s.lens_radius = 0.0025f;
   s.focal_distance = 2.f;
   run(state, PerspectiveCamera(Transform(), kResolution, s));
@@ -114,7 +114,7 @@ BENCHMARK(BM_NavarroBatched);
 
 void BM_PinholeBatched(benchmark::State& state) {
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 60.f;
+  s.fov_deg = 60.f;
   run_batched(state, PerspectiveCamera(Transform(), kResolution, s));
 }
 BENCHMARK(BM_PinholeBatched);

@@ -57,7 +57,7 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
   o.model = camera_name == "eye" ? params.get_string("model", "navarro") : camera_name;
   o.variant = params.get_string("variant", "");
   o.accommodation_D = get_double(params, "accommodation", 0.0);
-  o.pupil_diameter_mm = get_double(params, "pupildiameter", kDefaultPupilDiameterMm);
+  o.pupil_diameter_mm = get_double(params, "pupildiameter", kDefaultPupilDiameter_mm);
   o.refractive_error_D = get_double(params, "refractiveerror", 0.0);
   o.wavelength_nm = get_double(params, "wavelength", 0.0);
   if (params.has("wavelength") && o.wavelength_nm == 0.0)
@@ -76,7 +76,7 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
 LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, const ParameterList& params) {
   LensSystemCamera::Settings s;
   s.name = camera_name;
-  s.fov_deg = get_double(params, "fov", kDefaultEyeFovDeg);
+  s.fov_deg = get_double(params, "fov", kDefaultEyeFov_deg);
   if (!(s.fov_deg > 0.0 && s.fov_deg < 180.0))
     params.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_deg));
   const std::string mapping = params.get_string("mapping", "angle");
@@ -92,7 +92,7 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
 optics::Prescription realistic_prescription_from_params(const ParameterList& params, const std::string& search_dir) {
   const std::string file = params.get_string("lensfile", "");
   if (file.empty()) params.fail("lensfile", "the realistic camera needs a lens file (\"string lensfile\")");
-  const double aperture = get_double(params, "aperturediameter", kDefaultApertureDiameterMm);
+  const double aperture = get_double(params, "aperturediameter", kDefaultApertureDiameter_mm);
   if (!(aperture > 0.0 && std::isfinite(aperture)))
     params.fail("aperturediameter", fmt::format("{} mm must be positive", aperture));
   const double focus_m = get_double(params, "focusdistance", kDefaultFocusDistance);
@@ -136,7 +136,7 @@ LensSystemCamera::Settings realistic_view_settings(const ParameterList& params, 
   LensSystemCamera::Settings s;
   s.name = "realistic";
   s.mapping = FieldMapping::Flat;
-  const double diagonal = get_double(params, "filmdiagonal", kDefaultFilmDiagonalMm);
+  const double diagonal = get_double(params, "filmdiagonal", kDefaultFilmDiagonal_mm);
   if (!(diagonal > 0.0 && std::isfinite(diagonal)))
     params.fail("filmdiagonal", fmt::format("{} mm must be positive", diagonal));
   const double pixels = std::sqrt(double(resolution.x) * resolution.x + double(resolution.y) * resolution.y);

@@ -13,11 +13,11 @@
 namespace eyetrace {
 
 // Defaults (documented in docs/eye-camera.md).
-inline constexpr double kDefaultPupilDiameterMm = 4.0;
-inline constexpr double kDefaultEyeFovDeg = 60.0;
-inline constexpr double kDefaultApertureDiameterMm = 1.0;  // pbrt-v4 "realistic"
+inline constexpr double kDefaultPupilDiameter_mm = 4.0;
+inline constexpr double kDefaultEyeFov_deg = 60.0;
+inline constexpr double kDefaultApertureDiameter_mm = 1.0;  // pbrt-v4 "realistic"
 inline constexpr double kDefaultFocusDistance = 10.0;      // pbrt-v4 "realistic", scene units (m)
-inline constexpr double kDefaultFilmDiagonalMm = 35.0;     // pbrt-v4 Film "diagonal"
+inline constexpr double kDefaultFilmDiagonal_mm = 35.0;     // pbrt-v4 Film "diagonal"
 
 // The eye of camera `camera_name` ("eye" reads "string model"; "navarro" etc. are the model).
 optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params);

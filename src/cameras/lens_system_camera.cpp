@@ -14,7 +14,7 @@ namespace eyetrace {
 namespace {
 
 // Closest a retina point may come to the sampling plane (the directions degenerate there).
-constexpr double kMinPlaneGapMm = 0.5;
+constexpr double kMinPlaneGap_mm = 0.5;
 
 // Largest clear semi-diameter of the system: the width of the meridian scans.
 double largest_semi_diameter(const optics::Prescription& p) {
@@ -43,13 +43,13 @@ RetinaSurface retina_of(const optics::Prescription& p, const optics::CompiledSys
   return {system.vertex_z(system.image_index()), image.profile.is_flat() ? 0.0 : image.profile.curvature};
 }
 
-// Largest retina arc whose point stays kMinPlaneGapMm behind the sampling plane.
+// Largest retina arc whose point stays kMinPlaneGap_mm behind the sampling plane.
 double arc_limit(const RetinaSurface& retina, double z_plane) {
   double limit = std::fmin(retina.max_arc_mm(), 200.0);
   if (retina.curvature < 0.0) {
     for (int i = 1; i <= 4096; ++i) {
       const double a = limit * i / 4096;
-      if (retina.point(a).y - z_plane < kMinPlaneGapMm) return limit * (i - 1) / 4096;
+      if (retina.point(a).y - z_plane < kMinPlaneGap_mm) return limit * (i - 1) / 4096;
     }
   }
   return limit;
@@ -72,10 +72,10 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   const double corner = std::sqrt(double(w[1]) * w[1] + double(w[3]) * w[3]);  // screen radius of a corner
   retina_ = retina_of(prescription_, system_);
   z_plane_ = system_.vertex_z(system_.image_index() - 1);
-  if (retina_.vertex_z_mm - z_plane_ < kMinPlaneGapMm)
+  if (retina_.vertex_z_mm - z_plane_ < kMinPlaneGap_mm)
     throw optics::OpticsError(fmt::format("the image surface is only {:.4g} mm behind the last surface; the "
                                           "camera needs at least {} mm", retina_.vertex_z_mm - z_plane_,
-                                          kMinPlaneGapMm));
+                                          kMinPlaneGap_mm));
   const double max_arc = arc_limit(retina_, z_plane_);
 
   if (settings_.film_half_mm > 0.0) {

@@ -11,7 +11,7 @@ Vec4 default_screen_window(IVec2 res, float frame) {
 
 PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s)
     : world_from_camera_(world_from_camera), resolution_(resolution), s_(s),
-      tan_half_fov_(std::tan(radians(s.fov_degrees) / 2.f)) {
+      tan_half_fov_(std::tan(radians(s.fov_deg) / 2.f)) {
   if (s_.screen_window == Vec4(0.f)) s_.screen_window = default_screen_window(resolution);
 }
 
@@ -39,15 +39,15 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs)
 }
 
 std::string PerspectiveCamera::to_string() const {
-  return fmt::format("perspective camera: fov {} deg, lens radius {}, focal distance {}", s_.fov_degrees,
+  return fmt::format("perspective camera: fov {} deg, lens radius {}, focal distance {}", s_.fov_deg,
                      s_.lens_radius, s_.focal_distance);
 }
 
 static PerspectiveCamera::Settings read_settings(const CameraContext& ctx) {
   const ParameterList& p = ctx.params;
   PerspectiveCamera::Settings s;
-  s.fov_degrees = p.get_float("fov", 90.f);
-  if (!(s.fov_degrees > 0.f && s.fov_degrees < 180.f)) p.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_degrees));
+  s.fov_deg = p.get_float("fov", 90.f);
+  if (!(s.fov_deg > 0.f && s.fov_deg < 180.f)) p.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_deg));
   s.lens_radius = p.get_float("lensradius", 0.f);
   if (s.lens_radius < 0.f) p.fail("lensradius", "must not be negative");
   s.focal_distance = p.get_float("focaldistance", 1e6f);

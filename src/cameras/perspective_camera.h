@@ -11,7 +11,7 @@ namespace eyetrace {
 class PerspectiveCamera : public Camera {
  public:
   struct Settings {
-    float fov_degrees = 90.f;       // of the shorter image axis, as pbrt
+    float fov_deg = 90.f;       // of the shorter image axis, as pbrt
     Vec4 screen_window{0.f};        // x0 x1 y0 y1; zero means "from the aspect ratio"
     float lens_radius = 0.f;        // scene units
     float focal_distance = 1e6f;    // scene units, along the camera's z axis

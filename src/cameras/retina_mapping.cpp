@@ -13,12 +13,12 @@ namespace {
 
 // Node spacing along the retina. Linear interpolation between nodes then errs by
 // theta'' da^2 / 8, about 1e-4 degrees for the eyes.
-constexpr double kNodeStepMm = 0.05;
+constexpr double kNodeStep_mm = 0.05;
 // Uniform angle samples of the inverse table per degree.
 constexpr double kInverseSamplesPerDegree = 32.0;
 // Closest approach of a retina point to the sampling plane that still gives well-conditioned
 // directions.
-constexpr double kMinPlaneGapMm = 0.5;
+constexpr double kMinPlaneGap_mm = 0.5;
 
 // Index of the node interval containing x in a sorted vector (clamped).
 size_t interval_of(const std::vector<double>& xs, double x) {
@@ -53,9 +53,9 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
   angles_ = {0.0};
   chief_q_ = {0.0};
   const double arc_limit = std::fmin(max_arc_mm, retina.max_arc_mm());
-  for (double a = kNodeStepMm; a <= arc_limit && angles_.back() < angle_limit_deg; a += kNodeStepMm) {
+  for (double a = kNodeStep_mm; a <= arc_limit && angles_.back() < angle_limit_deg; a += kNodeStep_mm) {
     const glm::dvec2 p = retina.point(a);
-    if (p.y - z_plane < kMinPlaneGapMm) break;
+    if (p.y - z_plane < kMinPlaneGap_mm) break;
     const glm::dvec3 from(p.x, 0.0, p.y);
     const std::optional<double> q = aim_chief_ray(system, from, z_plane, chief_q_.back());
     if (!q) break;

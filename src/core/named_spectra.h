@@ -9,9 +9,9 @@
 namespace eyetrace {
 
 enum class NamedSpectrumKind {
-  kMetal,       // conductor eta or k: projected to RGB like a reflectance
-  kGlass,       // dielectric index: used at 550 nm only (the renderer is not dispersive)
-  kIlluminant,  // emission: normalised to luminance 1
+  Metal,       // conductor eta or k: projected to RGB like a reflectance
+  Glass,       // dielectric index: used at 550 nm only (the renderer is not dispersive)
+  Illuminant,  // emission: normalised to luminance 1
 };
 
 struct NamedSpectrum {

@@ -46,9 +46,9 @@ float interpolate_spectrum(std::span<const float> lambda, std::span<const float>
 
 RGB named_spectrum_to_rgb(const NamedSpectrum& n) {
   switch (n.kind) {
-    case NamedSpectrumKind::kGlass: return RGB(evaluate_named_spectrum(n, 550.f));
-    case NamedSpectrumKind::kMetal: return reflectance_spectrum_to_rgb(sample_named(n));
-    case NamedSpectrumKind::kIlluminant: return emission_spectrum_to_rgb(sample_named(n));
+    case NamedSpectrumKind::Glass: return RGB(evaluate_named_spectrum(n, 550.f));
+    case NamedSpectrumKind::Metal: return reflectance_spectrum_to_rgb(sample_named(n));
+    case NamedSpectrumKind::Illuminant: return emission_spectrum_to_rgb(sample_named(n));
   }
   return RGB(0.f);
 }

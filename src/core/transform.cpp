@@ -65,13 +65,13 @@ Transform look_at(const Vec3& eye, const Vec3& look, const Vec3& up) {
   return Transform(glm::inverse(world_from_camera), world_from_camera);
 }
 
-Transform perspective(float fov_degrees, float n, float f) {
+Transform perspective(float fov_deg, float n, float f) {
   Mat4 persp(1.f);
   persp[2][2] = f / (f - n);
   persp[3][2] = -f * n / (f - n);
   persp[2][3] = 1.f;
   persp[3][3] = 0.f;
-  float inv_tan = 1.f / std::tan(radians(fov_degrees) / 2.f);
+  float inv_tan = 1.f / std::tan(radians(fov_deg) / 2.f);
   return scale(Vec3(inv_tan, inv_tan, 1.f)) * Transform(persp);
 }
 

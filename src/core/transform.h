@@ -38,6 +38,6 @@ Transform rotate(float degrees, const Vec3& axis);
 // camera-from-world transform (left-handed camera space: +x right, +y up, +z forward).
 Transform look_at(const Vec3& eye, const Vec3& look, const Vec3& up);
 // pbrt's perspective projection (camera space to a screen space whose z maps [n, f] to [0, 1]).
-Transform perspective(float fov_degrees, float n, float f);
+Transform perspective(float fov_deg, float n, float f);
 
 }  // namespace eyetrace

@@ -17,21 +17,21 @@ EnvironmentMap::EnvironmentMap(RGBImage image, SphereMapping mapping)
 }
 
 Vec2 EnvironmentMap::to_square(const Vec3& w) const {
-  return mapping_ == SphereMapping::kEqualArea ? equal_area_sphere_to_square(w) : latlong_sphere_to_square(w);
+  return mapping_ == SphereMapping::EqualArea ? equal_area_sphere_to_square(w) : latlong_sphere_to_square(w);
 }
 
 Vec3 EnvironmentMap::to_sphere(Vec2 uv) const {
-  return mapping_ == SphereMapping::kEqualArea ? equal_area_square_to_sphere(uv) : latlong_square_to_sphere(uv);
+  return mapping_ == SphereMapping::EqualArea ? equal_area_square_to_sphere(uv) : latlong_square_to_sphere(uv);
 }
 
 float EnvironmentMap::sphere_per_square(const Vec3& w) const {
-  if (mapping_ == SphereMapping::kEqualArea) return 4.f * kPi;
+  if (mapping_ == SphereMapping::EqualArea) return 4.f * kPi;
   return 2.f * kPi * kPi * safe_sqrt(1.f - w.z * w.z);
 }
 
 float EnvironmentMap::pixel_solid_angle(int y) const {
   float n = float(image_.width) * float(image_.height);
-  if (mapping_ == SphereMapping::kEqualArea) return 4.f * kPi / n;
+  if (mapping_ == SphereMapping::EqualArea) return 4.f * kPi / n;
   float theta0 = kPi * float(y) / float(image_.height), theta1 = kPi * float(y + 1) / float(image_.height);
   return (2.f * kPi / float(image_.width)) * (std::cos(theta0) - std::cos(theta1));
 }
@@ -76,7 +76,7 @@ RGB EnvironmentMap::mean_radiance() const {
 float EnvironmentMap::up_illuminance() const {
   double E = 0.0;
   for (int y = 0; y < image_.height; ++y) {
-    if (mapping_ == SphereMapping::kLatLong) {
+    if (mapping_ == SphereMapping::LatLong) {
       float theta0 = kPi * float(y) / float(image_.height);
       float theta1 = std::min(kPi * float(y + 1) / float(image_.height), kPi / 2.f);
       if (theta0 >= kPi / 2.f) break;

@@ -11,7 +11,7 @@
 
 namespace eyetrace {
 
-enum class SphereMapping { kEqualArea, kLatLong };
+enum class SphereMapping { EqualArea, LatLong };
 
 class EnvironmentMap {
  public:

@@ -93,9 +93,9 @@ EnvironmentMap read_environment_map(const ParameterList& params, const std::stri
          fmt::format("parameter \"filename\": \"{}\" has {} non-finite value(s), read as 0", path, non_finite));
   SphereMapping mapping;
   if (image->width == image->height) {
-    mapping = SphereMapping::kEqualArea;
+    mapping = SphereMapping::EqualArea;
   } else if (image->width == 2 * image->height) {
-    mapping = SphereMapping::kLatLong;
+    mapping = SphereMapping::LatLong;
   } else {
     params.fail("filename", fmt::format("environment image \"{}\" is {}x{}: it must be square (pbrt-v4's "
                                         "equal-area map) or 2:1 (latitude-longitude)",

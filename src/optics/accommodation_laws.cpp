@@ -91,11 +91,11 @@ double atchison_smith_range(const EyeModel&) { return kAtchisonSmithMaxA; }
 // a fit). Refraction is monotonic in f, so bisection is safe.
 Prescription interpolate_produced(const EyeModel& m, double A) {
     if (A == 0.0) return m.relaxed;
-    const double target = refraction_diopters(m.relaxed) - A;
+    const double target = refraction_D(m.relaxed) - A;
     double lo = 0.0, hi = 1.0;
     for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (refraction_diopters(interpolate(m.relaxed, *m.accommodated, mid)) > target ? lo : hi) = mid;
+        (refraction_D(interpolate(m.relaxed, *m.accommodated, mid)) > target ? lo : hi) = mid;
     }
     const double f = 0.5 * (lo + hi);
     Prescription p = interpolate(m.relaxed, *m.accommodated, f);
@@ -105,7 +105,7 @@ Prescription interpolate_produced(const EyeModel& m, double A) {
     return p;
 }
 double produced_range(const EyeModel& m) {
-    return refraction_diopters(m.relaxed) - refraction_diopters(*m.accommodated);
+    return refraction_D(m.relaxed) - refraction_D(*m.accommodated);
 }
 
 // --- arizona --------------------------------------------------------------------------------

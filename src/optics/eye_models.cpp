@@ -106,7 +106,7 @@ std::vector<std::string> eye_model_variants(const std::string& model) {
     return variants;
 }
 
-double max_accommodation_diopters(const std::string& model, const std::string& variant) {
+double max_accommodation_D(const std::string& model, const std::string& variant) {
     return model_of(model, variant).max_accommodation_D;
 }
 
@@ -145,9 +145,9 @@ Prescription make_eye(const EyeOptions& o) {
     if (o.retina_radius_mm && *o.retina_radius_mm > 0.0)
         bad_option("retinaradius", fmt::format("{} mm must be negative (centre of curvature in "
                                                "front of the retina) or 0 for flat", *o.retina_radius_mm));
-    if (o.wavelength_nm != 0.0 && (o.wavelength_nm < kMinWavelengthNm || o.wavelength_nm > kMaxWavelengthNm))
+    if (o.wavelength_nm != 0.0 && (o.wavelength_nm < kMinWavelength_nm || o.wavelength_nm > kMaxWavelength_nm))
         bad_option("wavelength", fmt::format("{} nm is outside [{}, {}] nm (0 = the model's reference)",
-                                             o.wavelength_nm, kMinWavelengthNm, kMaxWavelengthNm));
+                                             o.wavelength_nm, kMinWavelength_nm, kMaxWavelength_nm));
 
     Prescription p = accommodated(model, o.accommodation_D);
     p.variant = o.variant;

@@ -38,7 +38,7 @@ std::vector<std::string> eye_model_names();
 // Accepted variants of a model ("" is always accepted). Throws for an unknown model.
 std::vector<std::string> eye_model_variants(const std::string& model);
 // [0, max] accommodation range of a model/variant in dioptres. Throws for unknown names.
-double max_accommodation_diopters(const std::string& model, const std::string& variant = "");
+double max_accommodation_D(const std::string& model, const std::string& variant = "");
 
 // Adds a model from a data file (or its text) for the rest of the process: it is then usable
 // by name like the embedded ones. Throws OpticsError naming the file and field when the file is

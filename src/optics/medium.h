@@ -52,7 +52,7 @@ double navarro_herzberger_index(const std::array<double, 4>& indices, double lam
 
 // Wavelength range over which the dispersion laws are used (the Herzberger fit's reference
 // wavelengths span 365-1014 nm).
-inline constexpr double kMinWavelengthNm = 360.0;
-inline constexpr double kMaxWavelengthNm = 1020.0;
+inline constexpr double kMinWavelength_nm = 360.0;
+inline constexpr double kMaxWavelength_nm = 1020.0;
 
 }  // namespace eyetrace::optics

@@ -26,9 +26,9 @@ double navarro_lens_index_shift(double D, NavarroLensIndexLaw law) {
 }
 
 Prescription navarro_accommodate(const Prescription& base, double D, NavarroLensIndexLaw law) {
-    if (!(D >= 0.0 && D <= kNavarroMaxD))
+    if (!(D >= 0.0 && D <= kNavarroMax_D))
         throw OpticsError(fmt::format("accommodation: {} D is outside the Navarro model's range [0, {}] D",
-                                      D, kNavarroMaxD));
+                                      D, kNavarroMax_D));
     Prescription p = base;
     const int cornea_back = find_surface(p, "cornea posterior");
     const int pupil = find_surface(p, "pupil");
@@ -57,7 +57,7 @@ Prescription navarro_accommodate(const Prescription& base, double D, NavarroLens
     if (!found) throw OpticsError(fmt::format("navarro accommodation: prescription '{}' has no medium 'lens'", p.name));
     for (Surface& s : p.surfaces)
         if (s.medium == "lens") s.index_after = p.find_medium("lens")->index_at(p.wavelength_nm);
-    if (D > kNavarroMaxPublishedD)
+    if (D > kNavarroMaxPublished_D)
         p.notes.push_back(fmt::format("accommodation D = {} is beyond the 0-10 D range Navarro et al. "
                                       "fitted: extrapolated", D));
     return p;

@@ -13,8 +13,8 @@ enum class NavarroLensIndexLaw {
     Wu2011Printed,  // n_l = n_l0 + 9e-5 ln(D + 1)      (Wu et al. 2011 Eq. 1 as printed)
 };
 
-inline constexpr double kNavarroMaxPublishedD = 10.0;  // range of the 1985 fit
-inline constexpr double kNavarroMaxD = 15.0;           // accepted, as an extrapolation
+inline constexpr double kNavarroMaxPublished_D = 10.0;  // range of the 1985 fit
+inline constexpr double kNavarroMax_D = 15.0;           // accepted, as an extrapolation
 
 // Applies, with ln = natural log (eye-models.md 5b):
 //   R_a = 10.2 - 1.75 ln(D+1)        Q_a = -3.1316 - 0.34 ln(D+1)

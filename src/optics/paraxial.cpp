@@ -44,7 +44,7 @@ RayMatrix system_matrix(const Prescription& p, int first, int last) {
     return m;
 }
 
-double refraction_diopters(const Prescription& p) {
+double refraction_D(const Prescription& p) {
     const int last = last_refracting(p);
     const RayMatrix m = system_matrix(p, 0, last);
     const double n_img = p.surfaces[last].index_after;
@@ -92,7 +92,7 @@ ParaxialData paraxial_analysis(const Prescription& p) {
     ParaxialData out;
     const double n = p.object_index;
     const double n_img = p.surfaces[last].index_after;
-    out.power_diopters = power * 1000.0;
+    out.power_D = power * 1000.0;
     out.object_index = n;
     out.image_index = n_img;
     out.back_focal_distance_mm = m.A * n_img / power;
@@ -124,10 +124,10 @@ ParaxialData paraxial_analysis(const Prescription& p) {
         out.exit_pupil.magnification = 1.0 / m2.D;
         out.exit_pupil.diameter_mm = stop_diameter / std::abs(m2.D);
     }
-    out.refraction_diopters = refraction_diopters(p);
+    out.refraction_D = refraction_D(p);
     out.axial_length_mm = z.back() - z[0];
-    out.far_point_m = out.refraction_diopters == 0.0 ? std::numeric_limits<double>::infinity()
-                                                     : -1.0 / out.refraction_diopters;
+    out.far_point_m = out.refraction_D == 0.0 ? std::numeric_limits<double>::infinity()
+                                                     : -1.0 / out.refraction_D;
     return out;
 }
 

@@ -24,7 +24,7 @@ struct Pupil {
 };
 
 struct ParaxialData {
-    double power_diopters = 0.0;  // equivalent power (object space air for an eye)
+    double power_D = 0.0;  // equivalent power (object space air for an eye)
     double object_index = 1.0;
     double image_index = 1.0;
     // Cardinal points, positions from the first vertex.
@@ -40,7 +40,7 @@ struct ParaxialData {
     double front_focal_distance_mm = 0.0;  // first vertex -> F (negative)
     Pupil entrance_pupil;  // image of the stop in object space
     Pupil exit_pupil;      // image of the stop in image space
-    double refraction_diopters = 0.0;  // object vergence at the first vertex imaged on the image
+    double refraction_D = 0.0;  // object vergence at the first vertex imaged on the image
     double axial_length_mm = 0.0;      // first vertex -> image vertex
     double far_point_m = 0.0;          // -1 / refraction (+inf when emmetropic)
 };
@@ -51,7 +51,7 @@ ParaxialData paraxial_analysis(const Prescription& p);
 // Object vergence (D) at the first vertex that is focused on the image surface: 0 emmetropic,
 // negative myopic (far point at -1/V m in front), positive hyperopic; minus the near-point
 // vergence for an accommodated eye.
-double refraction_diopters(const Prescription& p);
+double refraction_D(const Prescription& p);
 
 // Distance from the first vertex to where the image surface must be for the system to have the
 // given refraction (object vergence in D; 0 = focus at infinity). Throws when that image is

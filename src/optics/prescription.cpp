@@ -72,7 +72,7 @@ double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile&
 namespace {
 
 constexpr double kMaxIndex = 10.0;
-constexpr double kMaxThicknessMm = 1e6;  // 1 km
+constexpr double kMaxThickness_mm = 1e6;  // 1 km
 
 std::string label(const Prescription& p, size_t i) {
     return fmt::format("surface {} '{}'", i, p.surfaces[i].name);
@@ -100,9 +100,9 @@ void validate_surface(const Prescription& p, size_t i) {
     if (s.thickness_mm < 0.0)
         throw OpticsError(fmt::format("{}: thickness {} mm is negative", label(p, i), s.thickness_mm));
     // Beyond this, squared distances in the ray-conic intersection lose every significant digit.
-    if (s.thickness_mm > kMaxThicknessMm)
+    if (s.thickness_mm > kMaxThickness_mm)
         throw OpticsError(fmt::format("{}: thickness {} mm is more than {} mm", label(p, i),
-                                      s.thickness_mm, kMaxThicknessMm));
+                                      s.thickness_mm, kMaxThickness_mm));
     if (s.index_after < 1.0)
         throw OpticsError(fmt::format("{}: index {} of medium '{}' is below 1", label(p, i),
                                       s.index_after, s.medium));
@@ -179,9 +179,9 @@ void validate(const Prescription& p) {
 }
 
 Prescription at_wavelength(const Prescription& p, double lambda_nm) {
-    if (!std::isfinite(lambda_nm) || lambda_nm < kMinWavelengthNm || lambda_nm > kMaxWavelengthNm)
+    if (!std::isfinite(lambda_nm) || lambda_nm < kMinWavelength_nm || lambda_nm > kMaxWavelength_nm)
         throw OpticsError(fmt::format("wavelength {} nm is outside [{}, {}] nm", lambda_nm,
-                                      kMinWavelengthNm, kMaxWavelengthNm));
+                                      kMinWavelength_nm, kMaxWavelength_nm));
     Prescription out = p;
     out.wavelength_nm = lambda_nm;
     for (size_t i = 0; i < out.surfaces.size(); ++i) {

@@ -33,12 +33,12 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
     r["wavelength_nm"] = p.wavelength_nm;
     r["reference_wavelength_nm"] = p.reference_wavelength_nm;
     r["notes"] = p.notes;
-    r["power_diopters"] = round6(d.power_diopters);
-    r["refraction_diopters"] = round6(d.refraction_diopters);
+    r["power_diopters"] = round6(d.power_D);
+    r["refraction_diopters"] = round6(d.refraction_D);
     // Below 0.005 D (a fiftieth of the clinical 0.25 D step) the eye counts as emmetropic: the
     // relaxed Navarro eye's -1e-5 D, the rounding of its published axial length, would otherwise
     // print a far point 98 km away. refraction_diopters keeps the exact value.
-    r["far_point_m"] = std::abs(d.refraction_diopters) < kEmmetropiaDiopters ? json(nullptr) : json(round6(d.far_point_m));
+    r["far_point_m"] = std::abs(d.refraction_D) < kEmmetropia_D ? json(nullptr) : json(round6(d.far_point_m));
     r["axial_length_mm"] = round6(d.axial_length_mm);
     r["retina_radius_mm"] = retina.profile.is_flat() ? json(nullptr) : json(round6(1.0 / retina.profile.curvature));
     r["retina_conic"] = retina.profile.conic;

@@ -22,10 +22,10 @@ struct ReportOptions {
 };
 
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
-inline constexpr double kEmmetropiaDiopters = 0.005;
+inline constexpr double kEmmetropia_D = 0.005;
 
 // Keys: model, variant, source, wavelength_nm, notes, power_diopters, refraction_diopters,
-// far_point_m (null when emmetropic: |refraction| < kEmmetropiaDiopters), axial_length_mm, retina_radius_mm (null for flat),
+// far_point_m (null when emmetropic: |refraction| < kEmmetropia_D), axial_length_mm, retina_radius_mm (null for flat),
 // retina_conic, focal_points_mm [F, F'], principal_points_mm [H, H'], nodal_points_mm [N, N'],
 // focal_lengths_mm [front, back], back_focal_distance_mm, stop_diameter_mm,
 // entrance_pupil / exit_pupil {position_mm, diameter_mm, magnification},

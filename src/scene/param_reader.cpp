@@ -6,7 +6,7 @@ namespace eyetrace {
 
 namespace {
 
-enum class ValueKind { kNumbers, kIntegers, kBools, kStrings, kSpectrum };
+enum class ValueKind { Numbers, Integers, Bools, Strings, Spectrum };
 
 struct ParamType {
   const char* name;
@@ -16,15 +16,15 @@ struct ParamType {
 
 // pbrt-v4's parameter types, plus the pbrt-v3 spellings it still reads.
 constexpr ParamType kParamTypes[] = {
-    {"float", ValueKind::kNumbers, 1},     {"integer", ValueKind::kIntegers, 1},
-    {"bool", ValueKind::kBools, 1},        {"string", ValueKind::kStrings, 1},
-    {"texture", ValueKind::kStrings, 1},   {"point2", ValueKind::kNumbers, 2},
-    {"vector2", ValueKind::kNumbers, 2},   {"point3", ValueKind::kNumbers, 3},
-    {"vector3", ValueKind::kNumbers, 3},   {"normal", ValueKind::kNumbers, 3},
-    {"normal3", ValueKind::kNumbers, 3},   {"point", ValueKind::kNumbers, 3},
-    {"vector", ValueKind::kNumbers, 3},    {"rgb", ValueKind::kNumbers, 3},
-    {"color", ValueKind::kNumbers, 3},     {"spectrum", ValueKind::kSpectrum, 1},
-    {"blackbody", ValueKind::kNumbers, 1},
+    {"float", ValueKind::Numbers, 1},     {"integer", ValueKind::Integers, 1},
+    {"bool", ValueKind::Bools, 1},        {"string", ValueKind::Strings, 1},
+    {"texture", ValueKind::Strings, 1},   {"point2", ValueKind::Numbers, 2},
+    {"vector2", ValueKind::Numbers, 2},   {"point3", ValueKind::Numbers, 3},
+    {"vector3", ValueKind::Numbers, 3},   {"normal", ValueKind::Numbers, 3},
+    {"normal3", ValueKind::Numbers, 3},   {"point", ValueKind::Numbers, 3},
+    {"vector", ValueKind::Numbers, 3},    {"rgb", ValueKind::Numbers, 3},
+    {"color", ValueKind::Numbers, 3},     {"spectrum", ValueKind::Spectrum, 1},
+    {"blackbody", ValueKind::Numbers, 1},
 };
 
 const ParamType* find_type(const std::string& name) {
@@ -52,15 +52,15 @@ class ValueReader {
 
   // `open` is the '[' the value sits in, if any (for the missing-']' hint).
   void add(const Token& t, const Token* open) {
-    if (t.kind == TokenKind::kString) return add_string(t);
+    if (t.kind == TokenKind::String) return add_string(t);
     if (t.text == "true" || t.text == "false") {
-      if (type_.kind != ValueKind::kBools) fail(t, fmt::format("expected {}, got {}", expected(), t.text));
+      if (type_.kind != ValueKind::Bools) fail(t, fmt::format("expected {}, got {}", expected(), t.text));
       p_.bools.push_back(t.text == "true");
       return;
     }
-    if (type_.kind == ValueKind::kBools || type_.kind == ValueKind::kStrings)
+    if (type_.kind == ValueKind::Bools || type_.kind == ValueKind::Strings)
       fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
-    if (type_.kind == ValueKind::kSpectrum && !p_.strings.empty())
+    if (type_.kind == ValueKind::Spectrum && !p_.strings.empty())
       fail(t, "cannot mix numbers and a spectrum name");
     p_.numbers.push_back(number(t, open));
   }
@@ -72,7 +72,7 @@ class ValueReader {
     if (type_.tuple > 1 && nums % type_.tuple != 0)
       eyetrace::fail(p_.loc, "parameter \"{}\" needs a multiple of {} values, got {}", declaration(),
                      type_.tuple, nums);
-    if (type_.kind != ValueKind::kSpectrum) return;
+    if (type_.kind != ValueKind::Spectrum) return;
     if (nums > 1 && nums % 2 != 0)
       eyetrace::fail(p_.loc,
                      "parameter \"{}\" needs one constant value or (wavelength, value) pairs, got {} values",
@@ -87,11 +87,11 @@ class ValueReader {
 
   const char* expected() const {
     switch (type_.kind) {
-      case ValueKind::kBools: return "true or false";
-      case ValueKind::kStrings: return "a quoted string";
-      case ValueKind::kIntegers: return "an integer";
-      case ValueKind::kSpectrum: return "numbers or a quoted spectrum name";
-      case ValueKind::kNumbers: break;
+      case ValueKind::Bools: return "true or false";
+      case ValueKind::Strings: return "a quoted string";
+      case ValueKind::Integers: return "an integer";
+      case ValueKind::Spectrum: return "numbers or a quoted spectrum name";
+      case ValueKind::Numbers: break;
     }
     return "a number";
   }
@@ -103,14 +103,14 @@ class ValueReader {
   void add_string(const Token& t) {
     std::string s = t.string_value();
     switch (type_.kind) {
-      case ValueKind::kBools:
+      case ValueKind::Bools:
         if (s != "true" && s != "false") fail(t, fmt::format("expected true or false, got {}", t.describe()));
         p_.bools.push_back(s == "true");
         return;
-      case ValueKind::kSpectrum:
+      case ValueKind::Spectrum:
         if (!p_.numbers.empty()) fail(t, "cannot mix numbers and a spectrum name");
         [[fallthrough]];
-      case ValueKind::kStrings:
+      case ValueKind::Strings:
         p_.strings.push_back(std::move(s));
         return;
       default:
@@ -121,16 +121,16 @@ class ValueReader {
   double number(const Token& t, const Token* open) const {
     double v = 0;
     switch (parse_number(t.text, &v)) {
-      case NumberStatus::kOk: break;
-      case NumberStatus::kNotANumber: {
+      case NumberStatus::Ok: break;
+      case NumberStatus::NotANumber: {
         std::string hint;
         if (open) hint = fmt::format(" (is the ']' for the '[' at {}:{} missing?)", open->line, open->column);
         fail(t, fmt::format("expected {}, got {}{}", expected(), t.describe(), hint));
       }
-      case NumberStatus::kNotFinite: fail(t, fmt::format("{} is not a finite number", t.describe()));
-      case NumberStatus::kOutOfRange: fail(t, fmt::format("value {} is out of range", t.text));
+      case NumberStatus::NotFinite: fail(t, fmt::format("{} is not a finite number", t.describe()));
+      case NumberStatus::OutOfRange: fail(t, fmt::format("value {} is out of range", t.text));
     }
-    if (type_.kind == ValueKind::kIntegers && (v != std::floor(v) || std::abs(v) > 2147483647.0))
+    if (type_.kind == ValueKind::Integers && (v != std::floor(v) || std::abs(v) > 2147483647.0))
       fail(t, fmt::format("value {} is not a 32-bit integer", t.text));
     return v;
   }
@@ -166,23 +166,23 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
   ValueReader reader(tok, p, *find_type(p.type));
   Token v = tok.next();
   switch (v.kind) {
-    case TokenKind::kWord:
-    case TokenKind::kString:
+    case TokenKind::Word:
+    case TokenKind::String:
       reader.add(v, nullptr);
       break;
-    case TokenKind::kOpenBracket:
-      for (Token t = tok.next(); t.kind != TokenKind::kCloseBracket; t = tok.next()) {
-        if (t.kind == TokenKind::kEnd)
+    case TokenKind::OpenBracket:
+      for (Token t = tok.next(); t.kind != TokenKind::CloseBracket; t = tok.next()) {
+        if (t.kind == TokenKind::End)
           fail(tok.loc(v), "parameter \"{} {}\": '[' has no matching ']' before the end of the file", p.type, p.name);
-        if (t.kind == TokenKind::kOpenBracket)
+        if (t.kind == TokenKind::OpenBracket)
           fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)",
                p.type, p.name, v.line, v.column);
         reader.add(t, &v);
       }
       break;
-    case TokenKind::kCloseBracket:
+    case TokenKind::CloseBracket:
       fail(tok.loc(v), "parameter \"{} {}\": unexpected ']' (no matching '[')", p.type, p.name);
-    case TokenKind::kEnd:
+    case TokenKind::End:
       fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
   }
   reader.check_counts();
@@ -191,7 +191,7 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
 
 ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc) {
   ParameterList list(directive_loc);
-  while (tok.peek().kind == TokenKind::kString) {
+  while (tok.peek().kind == TokenKind::String) {
     Token decl = tok.next();
     list.add(read_parameter(tok, decl));
   }

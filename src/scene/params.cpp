@@ -164,11 +164,6 @@ std::vector<int> ParameterList::get_ints(const std::string& name) const {
   return out;
 }
 
-std::vector<std::string> ParameterList::get_strings(const std::string& name) const {
-  const Param* p = lookup(name, "string", 0);
-  return p ? p->strings : std::vector<std::string>{};
-}
-
 template <int N, typename V>
 static std::vector<V> tuples(const Param* p) {
   std::vector<V> out;

@@ -52,7 +52,6 @@ class ParameterList {
   // Arrays (empty if absent).
   std::vector<float> get_floats(const std::string& name) const;
   std::vector<int> get_ints(const std::string& name) const;
-  std::vector<std::string> get_strings(const std::string& name) const;
   std::vector<Vec2> get_point2s(const std::string& name) const;
   std::vector<Vec3> get_point3s(const std::string& name) const;
   std::vector<Vec3> get_normals(const std::string& name) const;

@@ -93,9 +93,9 @@ void SceneParser::run(Tokenizer& tok) {
   for (;;) {
     try {
       Token t = tok.next();
-      if (t.kind == TokenKind::kEnd) return;
+      if (t.kind == TokenKind::End) return;
       SourceLoc loc = tok.loc(t);
-      if (t.kind != TokenKind::kWord)
+      if (t.kind != TokenKind::Word)
         fail(loc, "unexpected {} where a directive (Shape, AttributeBegin, ...) was expected", t.describe());
       auto it = handlers().find(t.text);
       if (it == handlers().end()) unknown_directive(t, loc);
@@ -115,8 +115,8 @@ void SceneParser::run(Tokenizer& tok) {
 // misspelt one, which then gets its own error).
 static bool starts_directive(const Token& t) {
   double v;
-  return t.kind == TokenKind::kWord && t.text != "true" && t.text != "false" &&
-         parse_number(t.text, &v) == NumberStatus::kNotANumber;
+  return t.kind == TokenKind::Word && t.text != "true" && t.text != "false" &&
+         parse_number(t.text, &v) == NumberStatus::NotANumber;
 }
 
 // Skips what is left of a failed directive (its parameters, values, brackets) up to the next
@@ -125,7 +125,7 @@ static bool starts_directive(const Token& t) {
 // errors that are not the author's).
 bool SceneParser::skip_to_directive(Tokenizer& tok) {
   try {
-    for (Token t = tok.peek(); t.kind != TokenKind::kEnd; t = tok.peek()) {
+    for (Token t = tok.peek(); t.kind != TokenKind::End; t = tok.peek()) {
       if (starts_directive(t)) return true;
       tok.next();
     }
@@ -137,7 +137,7 @@ bool SceneParser::skip_to_directive(Tokenizer& tok) {
 
 void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const {
   double v;
-  if (parse_number(t.text, &v) != NumberStatus::kNotANumber)
+  if (parse_number(t.text, &v) != NumberStatus::NotANumber)
     fail(loc, "unexpected number {} where a directive was expected (a list of several values needs [ ])",
          t.text);
   fail(loc, "unknown directive \"{}\"{}", t.text, hint_suffix(std::string(t.text), keys_of(handlers())));
@@ -192,7 +192,7 @@ void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char*
 
 std::string SceneParser::read_name(Tokenizer& tok, const char* directive, const char* what, SourceLoc* at) {
   Token t = tok.next();
-  if (t.kind != TokenKind::kString)
+  if (t.kind != TokenKind::String)
     fail(tok.loc(t), "{}: expected a quoted {}, got {}", directive, what, t.describe());
   if (at) *at = tok.loc(t);
   return t.string_value();
@@ -205,12 +205,12 @@ std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directi
     // left for the parse to go on with.
     Token t = tok.peek();
     double x = 0;
-    NumberStatus status = t.kind == TokenKind::kWord ? parse_number(t.text, &x) : NumberStatus::kNotANumber;
-    if (status == NumberStatus::kOk && std::abs(x) > 3.0e38) status = NumberStatus::kOutOfRange;
-    if (status == NumberStatus::kNotANumber)
+    NumberStatus status = t.kind == TokenKind::Word ? parse_number(t.text, &x) : NumberStatus::NotANumber;
+    if (status == NumberStatus::Ok && std::abs(x) > 3.0e38) status = NumberStatus::OutOfRange;
+    if (status == NumberStatus::NotANumber)
       fail(tok.loc(t), "{} takes {} numbers; got {} after {}", directive, count, t.describe(), v.size());
-    if (status == NumberStatus::kNotFinite) fail(tok.loc(t), "{}: {} is not a finite number", directive, t.describe());
-    if (status == NumberStatus::kOutOfRange) fail(tok.loc(t), "{}: value {} is out of range", directive, t.text);
+    if (status == NumberStatus::NotFinite) fail(tok.loc(t), "{}: {} is not a finite number", directive, t.describe());
+    if (status == NumberStatus::OutOfRange) fail(tok.loc(t), "{}: value {} is out of range", directive, t.text);
     tok.next();
     v.push_back(float(x));
   }
@@ -261,20 +261,20 @@ SceneEntity parse_directive_text(std::string_view text, const std::string& direc
   Token first = tok.peek();
   SourceLoc loc = tok.loc(first);
   // The keyword may be left out: `--camera '"thinlens" "float lensradius" 0.01'`.
-  if (first.kind == TokenKind::kWord) {
+  if (first.kind == TokenKind::Word) {
     if (first.text != directive)
       fail(loc, "expected a {} directive, got {}", directive, first.describe());
     tok.next();
   }
   SceneEntity e;
   Token name = tok.next();
-  if (name.kind != TokenKind::kString)
+  if (name.kind != TokenKind::String)
     fail(tok.loc(name), "{}: expected a quoted type name, got {}", directive, name.describe());
   e.name = name.string_value();
   e.params = read_parameter_list(tok, loc);
   e.loc = loc;
   Token rest = tok.next();
-  if (rest.kind != TokenKind::kEnd)
+  if (rest.kind != TokenKind::End)
     fail(tok.loc(rest), "{}: unexpected {} after the parameters", directive, rest.describe());
   return e;
 }

@@ -232,12 +232,12 @@ void SceneParser::look_at(Tokenizer& tok, const SourceLoc& loc) {
 
 void SceneParser::matrix_directive(Tokenizer& tok, const SourceLoc& loc, const char* directive, bool replace) {
   // pbrt-v4 requires the brackets; pbrt-v3 files sometimes omit them, which is unambiguous.
-  bool bracketed = tok.peek().kind == TokenKind::kOpenBracket;
+  bool bracketed = tok.peek().kind == TokenKind::OpenBracket;
   if (bracketed) tok.next();
   std::vector<float> v = read_numbers(tok, directive, 16);
   if (bracketed) {
     Token close = tok.next();
-    if (close.kind != TokenKind::kCloseBracket)
+    if (close.kind != TokenKind::CloseBracket)
       fail(tok.loc(close), "{}: expected ']' after 16 numbers, got {}", directive, close.describe());
   }
   // pbrt reads the 16 values row-major and transposes; glm's column-major read is the same.
@@ -270,9 +270,9 @@ void SceneParser::reverse_orientation(Tokenizer&, const SourceLoc& loc) {
 
 void SceneParser::active_transform(Tokenizer& tok, const SourceLoc&) {
   Token t = tok.next();
-  if (t.kind == TokenKind::kWord && t.text == "StartTime") state_.active = {true, false};
-  else if (t.kind == TokenKind::kWord && t.text == "EndTime") state_.active = {false, true};
-  else if (t.kind == TokenKind::kWord && t.text == "All") state_.active = {true, true};
+  if (t.kind == TokenKind::Word && t.text == "StartTime") state_.active = {true, false};
+  else if (t.kind == TokenKind::Word && t.text == "EndTime") state_.active = {false, true};
+  else if (t.kind == TokenKind::Word && t.text == "All") state_.active = {true, true};
   else fail(tok.loc(t), "ActiveTransform: expected StartTime, EndTime or All, got {}", t.describe());
 }
 
@@ -322,7 +322,7 @@ void SceneParser::color_space(Tokenizer& tok, const SourceLoc& loc) {
 
 void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
   Token decl = tok.next();
-  if (decl.kind != TokenKind::kString)
+  if (decl.kind != TokenKind::String)
     fail(tok.loc(decl), "Option: expected a quoted \"type name\", got {}", decl.describe());
   Param p = read_parameter(tok, decl);
   SceneEntity e{p.name, ParameterList(loc), loc};
@@ -481,7 +481,7 @@ void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::medium_interface(Tokenizer& tok, const SourceLoc& loc) {
   std::string inside = read_name(tok, "MediumInterface", "medium name");
   std::string outside = inside;
-  if (tok.peek().kind == TokenKind::kString) outside = tok.next().string_value();
+  if (tok.peek().kind == TokenKind::String) outside = tok.next().string_value();
   if (!inside.empty() || !outside.empty())
     warn(loc, fmt::format("participating media are not supported; MediumInterface \"{}\" \"{}\" ignored",
                           inside, outside));

@@ -54,11 +54,11 @@ std::string Token::string_value() const {
 
 std::string Token::describe() const {
   switch (kind) {
-    case TokenKind::kWord: return fmt::format("\"{}\"", excerpt(text));
-    case TokenKind::kString: return fmt::format("string \"{}\"", excerpt(text));
-    case TokenKind::kOpenBracket: return "'['";
-    case TokenKind::kCloseBracket: return "']'";
-    case TokenKind::kEnd: break;
+    case TokenKind::Word: return fmt::format("\"{}\"", excerpt(text));
+    case TokenKind::String: return fmt::format("string \"{}\"", excerpt(text));
+    case TokenKind::OpenBracket: return "'['";
+    case TokenKind::CloseBracket: return "']'";
+    case TokenKind::End: break;
   }
   return "end of file";
 }
@@ -83,7 +83,7 @@ const Token& Tokenizer::peek() {
 Token Tokenizer::next() {
   Token t = peeked_ ? *peeked_ : scan();
   peeked_.reset();
-  if (t.kind == TokenKind::kEnd) took_end_ = true;
+  if (t.kind == TokenKind::End) took_end_ = true;
   return t;
 }
 
@@ -109,14 +109,14 @@ Token Tokenizer::scan() {
     if (c == '"') return scan_string(line_, column);
     if (c == '[' || c == ']') {
       ++pos_;
-      TokenKind kind = c == '[' ? TokenKind::kOpenBracket : TokenKind::kCloseBracket;
+      TokenKind kind = c == '[' ? TokenKind::OpenBracket : TokenKind::CloseBracket;
       return Token{kind, std::string_view(text_).substr(pos_ - 1, 1), line_, column};
     }
     size_t start = pos_;
     while (pos_ < n && !ends_word(text_[pos_])) ++pos_;
-    return Token{TokenKind::kWord, std::string_view(text_).substr(start, pos_ - start), line_, column};
+    return Token{TokenKind::Word, std::string_view(text_).substr(start, pos_ - start), line_, column};
   }
-  return Token{TokenKind::kEnd, {}, line_, column_of(n)};
+  return Token{TokenKind::End, {}, line_, column_of(n)};
 }
 
 Token Tokenizer::scan_string(int line, int column) {
@@ -145,7 +145,7 @@ Token Tokenizer::scan_string(int line, int column) {
     }
     ++pos_;
   }
-  Token t{TokenKind::kString, std::string_view(text_).substr(start, pos_ - start), line, column, escapes};
+  Token t{TokenKind::String, std::string_view(text_).substr(start, pos_ - start), line, column, escapes};
   ++pos_;  // closing quote
   return t;
 }
@@ -156,23 +156,23 @@ NumberStatus parse_number(std::string_view text, double* value) {
   // std::from_chars rejects a leading '+', which pbrt files do use.
   if (begin != end && *begin == '+') {
     ++begin;
-    if (begin != end && (*begin == '+' || *begin == '-')) return NumberStatus::kNotANumber;
+    if (begin != end && (*begin == '+' || *begin == '-')) return NumberStatus::NotANumber;
   }
-  if (begin == end) return NumberStatus::kNotANumber;
+  if (begin == end) return NumberStatus::NotANumber;
   double v = 0;
   auto [ptr, ec] = std::from_chars(begin, end, v, std::chars_format::general);
-  if (ec == std::errc::invalid_argument || ptr != end) return NumberStatus::kNotANumber;
+  if (ec == std::errc::invalid_argument || ptr != end) return NumberStatus::NotANumber;
   if (ec == std::errc::result_out_of_range) {
     // from_chars reports underflow and overflow alike; strtod tells them apart.
     std::string copy(begin, end);
     double d = std::strtod(copy.c_str(), nullptr);
-    if (std::isinf(d)) return NumberStatus::kOutOfRange;
+    if (std::isinf(d)) return NumberStatus::OutOfRange;
     *value = d;
-    return NumberStatus::kOk;
+    return NumberStatus::Ok;
   }
-  if (!std::isfinite(v)) return NumberStatus::kNotFinite;
+  if (!std::isfinite(v)) return NumberStatus::NotFinite;
   *value = v;
-  return NumberStatus::kOk;
+  return NumberStatus::Ok;
 }
 
 }  // namespace eyetrace

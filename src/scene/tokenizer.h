@@ -11,10 +11,10 @@
 
 namespace eyetrace {
 
-enum class TokenKind { kWord, kString, kOpenBracket, kCloseBracket, kEnd };
+enum class TokenKind { Word, String, OpenBracket, CloseBracket, End };
 
 struct Token {
-  TokenKind kind = TokenKind::kEnd;
+  TokenKind kind = TokenKind::End;
   std::string_view text;  // a word as written; a string's contents between the quotes, raw
   int line = 0;
   int column = 0;
@@ -55,7 +55,7 @@ class Tokenizer {
   bool took_end_ = false;
 };
 
-enum class NumberStatus { kOk, kNotANumber, kNotFinite, kOutOfRange };
+enum class NumberStatus { Ok, NotANumber, NotFinite, OutOfRange };
 
 // Parses a whole token as a decimal floating-point number ("1", "-.5", "+2e3"). "nan" and
 // "inf" are kNotFinite; magnitudes beyond double range are kOutOfRange; underflow gives 0.

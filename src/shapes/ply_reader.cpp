@@ -18,7 +18,7 @@ namespace eyetrace {
 
 namespace {
 
-enum class Format { kAscii, kLittleEndian, kBigEndian };
+enum class Format { Ascii, LittleEndian, BigEndian };
 
 struct Scalar {
   int size = 0;     // bytes in a binary file
@@ -39,7 +39,7 @@ struct Element {
 };
 
 struct Header {
-  Format format = Format::kAscii;
+  Format format = Format::Ascii;
   std::vector<Element> elements;
   size_t data_start = 0;
 };
@@ -112,7 +112,7 @@ Header parse_header(const std::string& bytes) {
     if (w[0] == "format") {
       if (w.size() != 3 || (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
         throw PlyError(fmt::format("header line {}: unsupported format", line));
-      h.format = w[1] == "ascii" ? Format::kAscii : w[1] == "binary_little_endian" ? Format::kLittleEndian : Format::kBigEndian;
+      h.format = w[1] == "ascii" ? Format::Ascii : w[1] == "binary_little_endian" ? Format::LittleEndian : Format::BigEndian;
       have_format = true;
     } else if (w[0] == "element") {
       add_element(w, line, h);
@@ -133,9 +133,9 @@ void check_declared_size(const Header& h, size_t available) {
   for (const Element& e : h.elements) {
     double per_element = 0;  // bytes; lists count as empty
     for (const Property& p : e.properties)
-      per_element += h.format == Format::kAscii ? 2.0 : double(p.is_list ? p.count.size : p.value.size);
+      per_element += h.format == Format::Ascii ? 2.0 : double(p.is_list ? p.count.size : p.value.size);
     // An ascii value is at least a character and a separator (the file's last may lack one).
-    double needed = double(e.count) * per_element - (h.format == Format::kAscii ? 1.0 : 0.0);
+    double needed = double(e.count) * per_element - (h.format == Format::Ascii ? 1.0 : 0.0);
     if (needed > double(available))
       throw PlyError(fmt::format("the header declares {} {} element(s), which need at least {:.0f} bytes, but the "
                                  "file holds only {} bytes of data (is the file truncated?)",
@@ -148,9 +148,9 @@ class DataReader {
  public:
   DataReader(const std::string& bytes, const Header& h) : bytes_(bytes), pos_(h.data_start), format_(h.format) {}
 
-  bool read(const Scalar& s, double* v) { return format_ == Format::kAscii ? read_text(v) : read_binary(s, v); }
+  bool read(const Scalar& s, double* v) { return format_ == Format::Ascii ? read_text(v) : read_binary(s, v); }
   size_t remaining() const { return bytes_.size() - pos_; }
-  bool binary() const { return format_ != Format::kAscii; }
+  bool binary() const { return format_ != Format::Ascii; }
 
  private:
   bool read_text(double* v) {
@@ -172,7 +172,7 @@ class DataReader {
     unsigned char b[8];
     std::memcpy(b, bytes_.data() + pos_, s.size);
     pos_ += s.size;
-    bool file_little = format_ == Format::kLittleEndian;
+    bool file_little = format_ == Format::LittleEndian;
     if (file_little != (std::endian::native == std::endian::little))
       for (int i = 0; i < s.size / 2; ++i) std::swap(b[i], b[s.size - 1 - i]);
     *v = decode(s, b);

@@ -17,7 +17,7 @@ namespace {
 using OIIO::TextureOpt;
 using OIIO::TextureSystem;
 
-enum class Encoding { kLinear, kSRGB, kGamma };
+enum class Encoding { Linear, SRGB, Gamma };
 
 // Everything an image lookup needs, shared by the float and spectrum variants.
 struct ImageLookup {
@@ -25,7 +25,7 @@ struct ImageLookup {
   TextureSystem::TextureHandle* handle = nullptr;
   TextureOpt opt;
   int channels = 0;      // colour channels in the file (alpha excluded when we can tell)
-  Encoding encoding = Encoding::kLinear;
+  Encoding encoding = Encoding::Linear;
   float gamma = 1.f;
   float scale = 1.f;
   bool invert = false;
@@ -43,8 +43,8 @@ struct ImageLookup {
   }
 
   float finish(float v) const {
-    if (encoding == Encoding::kSRGB) v = srgb_to_linear(v);
-    else if (encoding == Encoding::kGamma) v = std::pow(std::max(v, 0.f), gamma);
+    if (encoding == Encoding::SRGB) v = srgb_to_linear(v);
+    else if (encoding == Encoding::Gamma) v = std::pow(std::max(v, 0.f), gamma);
     v *= scale;
     if (invert) v = std::max(0.f, 1.f - v);
     return std::isfinite(v) ? v : 0.f;
@@ -84,21 +84,21 @@ void read_encoding(const ParameterList& p, const std::string& path, const OIIO::
   for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
   std::string e = p.get_string("encoding", ext == ".png" || eight_bit ? "sRGB" : "linear");
   if (e == "sRGB" || e == "srgb") {
-    l->encoding = Encoding::kSRGB;
+    l->encoding = Encoding::SRGB;
   } else if (e == "linear") {
-    l->encoding = Encoding::kLinear;
+    l->encoding = Encoding::Linear;
   } else if (e.rfind("gamma ", 0) == 0) {
     char* end = nullptr;
     float g = std::strtof(e.c_str() + 6, &end);
     if (!(g > 0.f) || !std::isfinite(g) || (end && *end != '\0'))
       p.fail("encoding", fmt::format("bad gamma in \"{}\"", e));
-    l->encoding = Encoding::kGamma;
+    l->encoding = Encoding::Gamma;
     l->gamma = g;
   } else {
     p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
   }
   // Floating-point pixels are linear already (pbrt-v4 ignores the encoding for them).
-  if (spec.format.is_floating_point()) l->encoding = Encoding::kLinear;
+  if (spec.format.is_floating_point()) l->encoding = Encoding::Linear;
 }
 
 ImageLookup open_image(const TextureContext& ctx) {

@@ -21,8 +21,8 @@ class TextureMapping2D {
   TextureCoords map(const TextureEvalContext& ctx) const;
 
  private:
-  enum class Kind { kUV, kSpherical, kCylindrical, kPlanar };
-  Kind kind_ = Kind::kUV;
+  enum class Kind { UV, Spherical, Cylindrical, Planar };
+  Kind kind_ = Kind::UV;
   Vec2 scale_{1.f}, delta_{0.f};
   Vec3 v1_{1.f, 0.f, 0.f}, v2_{0.f, 1.f, 0.f};
   Transform texture_from_world_;

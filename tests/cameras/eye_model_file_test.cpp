@@ -60,16 +60,16 @@ TEST(EyeModelFile, RegisteredModelIsBuiltAnalysedAndRendered) {
   expected.surfaces[0].profile = optics::SurfaceProfile::from_radius(7.5, expected.surfaces[0].profile.conic);
   o.model = "steep-cornea";
   const optics::Prescription loaded = optics::make_eye(o);
-  EXPECT_NEAR(optics::refraction_diopters(loaded), optics::refraction_diopters(expected), 1e-12);
+  EXPECT_NEAR(optics::refraction_D(loaded), optics::refraction_D(expected), 1e-12);
   // A thin cornea in air: its power rises by (1.376 - 1)(1/7.5 - 1/7.72) mm^-1 = 1.43 D, and the
   // eye's refraction falls by about that much (less the effectivity of the 0.55 mm cornea and
   // the aqueous: within 0.2 D).
   const double delta_power = (1.376 - 1.0) * (1.0 / 7.5 - 1.0 / 7.72) * 1000.0;
   o.model = "navarro";
-  EXPECT_NEAR(optics::refraction_diopters(loaded) - optics::refraction_diopters(optics::make_eye(o)), -delta_power,
+  EXPECT_NEAR(optics::refraction_D(loaded) - optics::refraction_D(optics::make_eye(o)), -delta_power,
               0.2);
   // Its accommodation law comes from the file like everything else.
-  EXPECT_EQ(optics::max_accommodation_diopters("steep-cornea"), optics::max_accommodation_diopters("navarro"));
+  EXPECT_EQ(optics::max_accommodation_D("steep-cornea"), optics::max_accommodation_D("navarro"));
 
   const Image steep = render_with(R"(Camera "eye" "string model" "steep-cornea" "float fov" 40)");
   const Image navarro = render_with(R"(Camera "eye" "string model" "navarro" "float fov" 40)");

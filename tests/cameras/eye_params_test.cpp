@@ -109,7 +109,7 @@ TEST(EyeParams, ParametersReachThePrescription) {
   EXPECT_DOUBLE_EQ(p.wavelength_nm, 550.0);
   EXPECT_EQ(p.variant, "wu2011");
   const optics::Prescription myope = prescription_of("Camera \"legrand\" \"float refractiveerror\" -2");
-  EXPECT_NEAR(optics::refraction_diopters(myope), -2.0, 1e-9);
+  EXPECT_NEAR(optics::refraction_D(myope), -2.0, 1e-9);
   // Defaults: 4 mm pupil, the model's reference wavelength.
   EXPECT_DOUBLE_EQ(prescription_of("Camera \"navarro\"").stop_diameter_mm(), 4.0);
   EXPECT_DOUBLE_EQ(prescription_of("Camera \"navarro\"").wavelength_nm, 589.3);

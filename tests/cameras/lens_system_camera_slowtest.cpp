@@ -69,7 +69,7 @@ TEST(LensSystemCameraSlow, TenMillionRandomSamplesAreFiniteUnitBoundedAndReal) {
   int cameras = 0, skipped = 0;
   while (counts.samples < 10'200'000) {
     const std::string model = models[cameras % models.size()];
-    const double max_a = optics::max_accommodation_diopters(model);
+    const double max_a = optics::max_accommodation_D(model);
     const double accommodation = max_a * u(rng);
     const double pupil = 0.5 + 8.5 * u(rng);
     const double fov = cameras % 4 == 0 ? 179.9 : 1.0 + 178.9 * u(rng);

@@ -226,7 +226,7 @@ TEST(LensSystemCamera, ImageIsUprightAndNotMirrored) {
 TEST(LensSystemCamera, AccommodatedEyeFocusesAtParaxialFarPoint) {
   for (double accommodation : {1.0, 2.0, 4.0, 8.0}) {
     auto cam = eye_camera(fmt::format("\"float pupildiameter\" 0.5 \"float accommodation\" {}", accommodation));
-    const double refraction = optics::refraction_diopters(cam->prescription());
+    const double refraction = optics::refraction_D(cam->prescription());
     ASSERT_LT(refraction, -0.5);
     const auto [z, rms] = best_focus(bundle(*cam, Vec2(128.f, 128.f), 40), 0.02, 50.0);
     EXPECT_NEAR(1.0 / z, -refraction, 0.012) << accommodation;
@@ -262,7 +262,7 @@ TEST(LensSystemCamera, ThinLensFileFocusesLikeThinLensCamera) {
   EXPECT_NEAR(track_m, 0.1 + 0.1 * 0.1 / (2.0 - 0.2), 0.001);  // thin-lens film distance, about 105.6 mm
 
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 30.f;
+  s.fov_deg = 30.f;
   s.lens_radius = 0.002f;
   s.focal_distance = float(2.0 - track_m);
   PerspectiveCamera thin(Transform(), IVec2(128, 128), s);

@@ -13,7 +13,7 @@ namespace {
 TEST(PerspectiveCamera, PixelCentreRaysHitAnalyticPoints) {
   IVec2 res(64, 48);
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 60.f;
+  s.fov_deg = 60.f;
   PerspectiveCamera cam(Transform(), res, s);
   float aspect = 64.f / 48.f, t = std::tan(radians(30.f)), depth = 10.f;
   for (int y = 0; y < res.y; y += 7)
@@ -52,7 +52,7 @@ TEST(PerspectiveCamera, LookAtPlacesTargetAtCentre) {
 // focus: the point the pinhole ray from that film point reaches there.
 TEST(ThinLensCamera, RaysFromOneFilmPointConvergeAtFocalDistance) {
   PerspectiveCamera::Settings s;
-  s.fov_degrees = 40.f;
+  s.fov_deg = 40.f;
   s.lens_radius = 0.05f;
   s.focal_distance = 3.f;
   PerspectiveCamera cam(Transform(), IVec2(32, 32), s);

@@ -61,7 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     trace_fan(p);
     try {
       const ParaxialData d = paraxial_analysis(p);
-      if (!std::isfinite(d.power_diopters) || !std::isfinite(d.back_focal_point_mm))
+      if (!std::isfinite(d.power_D) || !std::isfinite(d.back_focal_point_mm))
         violated("paraxial analysis returned a non-finite power or focal point");
     } catch (const OpticsError&) {
     }

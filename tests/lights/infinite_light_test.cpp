@@ -132,7 +132,7 @@ TEST(UniformInfiniteLight, IlluminanceSetsIrradianceAndPowerCoversScene) {
 // Which pixel of the map a direction falls in.
 int pixel_of(const ImageInfiniteLight& light, const Vec3& w) {
   const RGBImage& img = light.map().image();
-  Vec2 uv = light.map().mapping() == SphereMapping::kEqualArea ? equal_area_sphere_to_square(w)
+  Vec2 uv = light.map().mapping() == SphereMapping::EqualArea ? equal_area_sphere_to_square(w)
                                                                  : latlong_sphere_to_square(w);
   int x = std::clamp(int(uv.x * img.width), 0, img.width - 1);
   int y = std::clamp(int(uv.y * img.height), 0, img.height - 1);
@@ -146,7 +146,7 @@ std::vector<double> pixel_probabilities(const ImageInfiniteLight& light) {
   double sum = 0.0;
   for (int y = 0; y < img.height; ++y) {
     double omega = 1.0;
-    if (light.map().mapping() == SphereMapping::kLatLong)
+    if (light.map().mapping() == SphereMapping::LatLong)
       omega = std::cos(kPi * y / img.height) - std::cos(kPi * (y + 1) / img.height);
     for (int x = 0; x < img.width; ++x) {
       p[size_t(y) * img.width + x] = luminance(img.at(x, y)) * omega;

@@ -32,7 +32,7 @@ std::string preset_table() {
             spots += (spots.empty() ? "" : " / ") + fmt::format("{:.1f}", trace_spot(p, {f}).rms_radius_um);
         const Surface& retina = p.surfaces.back();
         out += fmt::format("| {}{} | {:.3f} | {:+.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} (×{:.3f}) | {:.3f} (×{:.3f}) | {} | {} |\n",
-                           model, *variant ? std::string(" ") + variant : "", d.power_diopters, d.refraction_diopters + 0.0,
+                           model, *variant ? std::string(" ") + variant : "", d.power_D, d.refraction_D + 0.0,
                            d.axial_length_mm, d.front_focal_point_mm, d.back_focal_point_mm, d.front_principal_point_mm,
                            d.back_principal_point_mm, d.front_nodal_point_mm, d.back_nodal_point_mm,
                            d.entrance_pupil.position_mm, d.entrance_pupil.magnification, d.exit_pupil.position_mm,
@@ -56,11 +56,11 @@ std::string accommodation_table() {
     for (double D : {0.0, 1.0, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0}) {
         const ParaxialData n = refraction("navarro", "", D);
         auto cell = [&](const char* model) {
-            return D <= max_accommodation_diopters(model) ? fmt::format("{:+.3f}", refraction(model, "", D).refraction_diopters + 0.0)
+            return D <= max_accommodation_D(model) ? fmt::format("{:+.3f}", refraction(model, "", D).refraction_D + 0.0)
                                                           : std::string("–");
         };
-        out += fmt::format("| {} | {:.3f} | {:+.3f} | {:+.3f} | {} | {} | {} |\n", D, n.power_diopters, n.refraction_diopters + 0.0,
-                           refraction("navarro", "wu2011", D).refraction_diopters, cell("gullstrand"), cell("legrand"), cell("arizona"));
+        out += fmt::format("| {} | {:.3f} | {:+.3f} | {:+.3f} | {} | {} | {} |\n", D, n.power_D, n.refraction_D + 0.0,
+                           refraction("navarro", "wu2011", D).refraction_D, cell("gullstrand"), cell("legrand"), cell("arizona"));
     }
     return out;
 }

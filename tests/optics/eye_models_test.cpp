@@ -47,8 +47,8 @@ TEST(EyePresets, ParaxialConstantsMatchIndependentComputation) {
         const Prescription p = make_eye(o);
         const ParaxialData d = paraxial_analysis(p);
         SCOPED_TRACE(std::string(e.model) + " " + e.variant + " A=" + std::to_string(e.accommodation));
-        EXPECT_NEAR(d.power_diopters, e.power, 0.001);
-        EXPECT_NEAR(d.refraction_diopters, e.refraction, 0.001);
+        EXPECT_NEAR(d.power_D, e.power, 0.001);
+        EXPECT_NEAR(d.refraction_D, e.refraction, 0.001);
         EXPECT_NEAR(d.front_focal_point_mm, e.F, 0.0006);
         EXPECT_NEAR(d.back_focal_point_mm, e.Fp, 0.0006);
         EXPECT_NEAR(d.front_principal_point_mm, e.H, 0.0006);
@@ -73,14 +73,14 @@ TEST(EyePresets, PublishedPowersWithinOneHundredthDioptre) {
         o.accommodation_D = a;
         return paraxial_analysis(make_eye(o));
     };
-    EXPECT_NEAR(power("gullstrand", 0).power_diopters, 58.636, 0.01);
-    EXPECT_NEAR(power("gullstrand", 10.87013).power_diopters, 70.576, 0.01);
-    EXPECT_NEAR(power("gullstrand", 10.87013).refraction_diopters, -10.870, 0.01);
-    EXPECT_NEAR(power("legrand", 0).power_diopters, 59.94, 0.01);
+    EXPECT_NEAR(power("gullstrand", 0).power_D, 58.636, 0.01);
+    EXPECT_NEAR(power("gullstrand", 10.87013).power_D, 70.576, 0.01);
+    EXPECT_NEAR(power("gullstrand", 10.87013).refraction_D, -10.870, 0.01);
+    EXPECT_NEAR(power("legrand", 0).power_D, 59.94, 0.01);
     const ParaxialData lg = power("legrand", 7.0525);
-    EXPECT_NEAR(lg.power_diopters, 67.677, 0.01);
-    EXPECT_NEAR(lg.refraction_diopters, -7.053, 0.01);
-    EXPECT_NEAR(power("navarro", 0).power_diopters, 60.416, 0.01);
+    EXPECT_NEAR(lg.power_D, 67.677, 0.01);
+    EXPECT_NEAR(lg.refraction_D, -7.053, 0.01);
+    EXPECT_NEAR(power("navarro", 0).power_D, 60.416, 0.01);
     // SCH's Le Grand entrance and exit pupils.
     EXPECT_NEAR(power("legrand", 0).entrance_pupil.position_mm, 3.038, 0.001);
     EXPECT_NEAR(power("legrand", 0).exit_pupil.position_mm, 3.682, 0.001);
@@ -98,11 +98,11 @@ TEST(EyePresets, NavarroAccommodationMatchesTable5c) {
         o.accommodation_D = D[i];
         const Prescription p = make_eye(o);
         const ParaxialData d = paraxial_analysis(p);
-        EXPECT_NEAR(d.power_diopters, power[i], 0.01) << "D = " << D[i];
-        EXPECT_NEAR(-d.refraction_diopters, accommodation[i], 0.01) << "D = " << D[i];
-        EXPECT_LT(d.refraction_diopters, previous) << "D = " << D[i];
+        EXPECT_NEAR(d.power_D, power[i], 0.01) << "D = " << D[i];
+        EXPECT_NEAR(-d.refraction_D, accommodation[i], 0.01) << "D = " << D[i];
+        EXPECT_LT(d.refraction_D, previous) << "D = " << D[i];
         EXPECT_NEAR(d.axial_length_mm, 24.00398, 1e-9);
-        previous = d.refraction_diopters;
+        previous = d.refraction_D;
     }
     // Monotonic on a fine grid up to the extrapolated 15 D as well.
     previous = 1e9;
@@ -110,7 +110,7 @@ TEST(EyePresets, NavarroAccommodationMatchesTable5c) {
         EyeOptions o;
         o.model = "navarro";
         o.accommodation_D = a;
-        const double r = refraction_diopters(make_eye(o));
+        const double r = refraction_D(make_eye(o));
         EXPECT_LT(r, previous) << "D = " << a;
         previous = r;
     }
@@ -123,11 +123,11 @@ TEST(EyePresets, Wu2011VariantReproducesThePaper) {
     EyeOptions o;
     o.model = "navarro";
     o.variant = "wu2011";
-    const double relaxed = refraction_diopters(make_eye(o));
+    const double relaxed = refraction_D(make_eye(o));
     EXPECT_NEAR(relaxed, -1.238, 0.001);
     for (int i = 0; i < 8; ++i) {
         o.accommodation_D = D[i];
-        EXPECT_NEAR(relaxed - refraction_diopters(make_eye(o)), accommodation[i], 0.01) << "D = " << D[i];
+        EXPECT_NEAR(relaxed - refraction_D(make_eye(o)), accommodation[i], 0.01) << "D = " << D[i];
     }
     const Prescription p = make_eye(o);
     EXPECT_TRUE(p.surfaces.back().profile.is_flat());  // Table 1 gives the retina position only
@@ -140,19 +140,19 @@ TEST(EyePresets, GullstrandContinuousVersionFocusesAtMinusA) {
         EyeOptions o;
         o.model = "gullstrand";
         o.accommodation_D = a;
-        EXPECT_NEAR(refraction_diopters(make_eye(o)), -a, 0.003) << "A = " << a;
+        EXPECT_NEAR(refraction_D(make_eye(o)), -a, 0.003) << "A = " << a;
     }
 }
 
 TEST(EyePresets, LeGrandInterpolationProducesTheRequestedAccommodation) {
     EyeOptions o;
     o.model = "legrand";
-    const double relaxed = refraction_diopters(make_eye(o));  // 7e-6 D: the tabulated 16.59655
+    const double relaxed = refraction_D(make_eye(o));  // 7e-6 D: the tabulated 16.59655
     for (double a : {0.5, 2.0, 5.0, 7.0}) {
         o.accommodation_D = a;
-        EXPECT_NEAR(relaxed - refraction_diopters(make_eye(o)), a, 1e-9) << "A = " << a;
+        EXPECT_NEAR(relaxed - refraction_D(make_eye(o)), a, 1e-9) << "A = " << a;
     }
-    EXPECT_NEAR(max_accommodation_diopters("legrand"), 7.0525, 0.001);  // eye-models.md table 3
+    EXPECT_NEAR(max_accommodation_D("legrand"), 7.0525, 0.001);  // eye-models.md table 3
 }
 
 TEST(EyePresets, ArizonaAccommodationIsNearlyTrue) {
@@ -161,10 +161,10 @@ TEST(EyePresets, ArizonaAccommodationIsNearlyTrue) {
     const double produced[] = {0.990, 1.987, 2.989, 3.997, 5.009, 6.024, 8.054};
     EyeOptions o;
     o.model = "arizona";
-    const double relaxed = refraction_diopters(make_eye(o));
+    const double relaxed = refraction_D(make_eye(o));
     for (int i = 0; i < 7; ++i) {
         o.accommodation_D = A[i];
-        EXPECT_NEAR(relaxed - refraction_diopters(make_eye(o)), produced[i], 0.01) << "A = " << A[i];
+        EXPECT_NEAR(relaxed - refraction_D(make_eye(o)), produced[i], 0.01) << "A = " << A[i];
     }
 }
 
@@ -175,9 +175,9 @@ TEST(EyePresets, EscuderoSanzIsEmmetropicAt543AndHyperopicAt589) {
     // +0.245 D, hence the 0.02 D tolerance.
     EyeOptions o;
     o.model = "escudero-sanz";
-    EXPECT_NEAR(refraction_diopters(make_eye(o)), 0.0, 0.001);
+    EXPECT_NEAR(refraction_D(make_eye(o)), 0.0, 0.001);
     o.wavelength_nm = 589.3;
-    EXPECT_NEAR(refraction_diopters(make_eye(o)), 0.229, 0.02);
+    EXPECT_NEAR(refraction_D(make_eye(o)), 0.229, 0.02);
 }
 
 TEST(EyePresets, NavarroChromaticFocusFollowsTheDispersionModel) {
@@ -188,7 +188,7 @@ TEST(EyePresets, NavarroChromaticFocusFollowsTheDispersionModel) {
     const std::pair<double, double> expected[] = {{486.1, -0.68}, {555, -0.16}, {656.3, 0.27}, {700, 0.40}};
     for (auto [wl, r] : expected) {
         o.wavelength_nm = wl;
-        EXPECT_NEAR(refraction_diopters(make_eye(o)), r, 0.03) << wl << " nm";
+        EXPECT_NEAR(refraction_D(make_eye(o)), r, 0.03) << wl << " nm";
     }
 }
 
@@ -198,16 +198,16 @@ TEST(EyePresets, RefractiveErrorChangesAxialLengthOnly) {
     o.refractive_error_D = -2.0;
     const Prescription myope = make_eye(o);
     const ParaxialData d = paraxial_analysis(myope);
-    EXPECT_NEAR(d.refraction_diopters, -2.0, 1e-9);
+    EXPECT_NEAR(d.refraction_D, -2.0, 1e-9);
     EXPECT_NEAR(d.far_point_m, 0.5, 1e-9);
     EXPECT_GT(d.axial_length_mm, 24.00398 + 0.5);  // about 0.37 mm per dioptre
-    EXPECT_NEAR(d.power_diopters, 60.4156, 0.001);
+    EXPECT_NEAR(d.power_D, 60.4156, 0.001);
     o.accommodation_D = 4.0;  // accommodating keeps the myope's axial length
     EXPECT_NEAR(make_eye(o).axial_length_mm(), myope.axial_length_mm(), 1e-9);
     o = {};
     o.model = "legrand";
     o.refractive_error_D = 3.0;
-    EXPECT_NEAR(refraction_diopters(make_eye(o)), 3.0, 1e-9);
+    EXPECT_NEAR(refraction_D(make_eye(o)), 3.0, 1e-9);
 }
 
 TEST(EyePresets, PupilAndRetinaOptionsAreApplied) {

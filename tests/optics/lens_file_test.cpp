@@ -40,9 +40,9 @@ TEST(LensFile, ParsesPbrtDoubleGauss) {
     EXPECT_NEAR(1.0 / p.surfaces[6].profile.curvature, -14.495, 1e-12);
     EXPECT_EQ(p.surfaces.back().role, SurfaceRole::Image);
     // Last thickness 0: film at the paraxial focus for infinity, i.e. refraction 0.
-    EXPECT_NEAR(refraction_diopters(p), 0.0, 1e-9);
+    EXPECT_NEAR(refraction_D(p), 0.0, 1e-9);
     const ParaxialData d = paraxial_analysis(p);
-    EXPECT_NEAR(1000.0 / d.power_diopters, 50.0, 1.5);  // "scaled to 50 mm"
+    EXPECT_NEAR(1000.0 / d.power_D, 50.0, 1.5);  // "scaled to 50 mm"
     // An axial ray reaches the film on the axis.
     const TraceResult t = CompiledSystem(p).trace_forward({{0, 0, -10}, {0, 0, 1}});
     ASSERT_TRUE(t.ok());
@@ -54,7 +54,7 @@ TEST(LensFile, FocusDistanceAndApertureOptions) {
     o.focus_distance_m = 2.0;
     o.aperture_diameter_mm = 8.0;
     const Prescription p = parse_lens_file(kDoubleGauss, "dgauss.50mm.dat", o);
-    EXPECT_NEAR(refraction_diopters(p), -0.5, 1e-9);
+    EXPECT_NEAR(refraction_D(p), -0.5, 1e-9);
     EXPECT_DOUBLE_EQ(p.stop_diameter_mm(), 8.0);
     o.aperture_diameter_mm = 20.0;
     try {

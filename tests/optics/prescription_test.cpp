@@ -45,7 +45,7 @@ TEST(PrescriptionJson, RoundTripKeepsTheSystem) {
         EXPECT_DOUBLE_EQ(p.surfaces[i].thickness_mm, q.surfaces[i].thickness_mm);
         EXPECT_DOUBLE_EQ(p.surfaces[i].index_after, q.surfaces[i].index_after);
     }
-    EXPECT_DOUBLE_EQ(refraction_diopters(p), refraction_diopters(q));
+    EXPECT_DOUBLE_EQ(refraction_D(p), refraction_D(q));
 }
 
 TEST(PrescriptionJson, StrictAboutKeysAndTypes) {

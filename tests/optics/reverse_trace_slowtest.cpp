@@ -45,7 +45,7 @@ TEST(ReverseTraceStress, TenMillionRandomRaysAreFiniteAndAccounted) {
         EyeOptions o;
         o.model = preset.model;
         o.variant = preset.variant;
-        o.accommodation_D = u(rng) * max_accommodation_diopters(o.model, o.variant);
+        o.accommodation_D = u(rng) * max_accommodation_D(o.model, o.variant);
         o.pupil_diameter_mm = 0.5 + 8.5 * u(rng);
         if (k % 3 == 0) o.refractive_error_D = -8.0 + 14.0 * u(rng);
         if (k % 4 == 0) o.wavelength_nm = 400.0 + 300.0 * u(rng);

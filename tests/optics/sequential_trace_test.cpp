@@ -208,7 +208,7 @@ TEST(SequentialTrace, ThinLensFocusesAtItsFocalLength) {
     // Lensmaker: P = (n-1)(1/R1 - 1/R2) = 20 D (+ a 1e-6 D thickness term): f = 50 mm.
     const Prescription p = thin_lens();
     const ParaxialData d = paraxial_analysis(p);
-    EXPECT_NEAR(d.power_diopters, 20.0, 1e-4);
+    EXPECT_NEAR(d.power_D, 20.0, 1e-4);
     EXPECT_NEAR(d.back_focal_distance_mm, 50.0, 1e-3);
     // Thin-lens imaging: an object 200 mm in front (vergence -5 D) images 1/(1/50 - 1/200) mm behind.
     EXPECT_NEAR(image_position_for_refraction(p, -5.0), 200.0 / 3.0, 2e-3);

@@ -40,28 +40,28 @@ void expect_vec_near(const Vec3& got, const Vec3& want, float tol = 1e-5f) {
 TEST(Tokenizer, KindsPositionsAndEscapes) {
   Tokenizer tok("Shape \"a\\\"b\\\\\" # comment [ ignored\n  [ -1.5e2 ]\"x\"", "t.pbrt");
   Token t = tok.next();
-  EXPECT_EQ(t.kind, TokenKind::kWord);
+  EXPECT_EQ(t.kind, TokenKind::Word);
   EXPECT_EQ(t.text, "Shape");
   EXPECT_EQ(t.line, 1);
   EXPECT_EQ(t.column, 1);
   t = tok.next();
-  EXPECT_EQ(t.kind, TokenKind::kString);
+  EXPECT_EQ(t.kind, TokenKind::String);
   EXPECT_EQ(t.string_value(), "a\"b\\");
   EXPECT_EQ(t.column, 7);
   t = tok.next();
-  EXPECT_EQ(t.kind, TokenKind::kOpenBracket);
+  EXPECT_EQ(t.kind, TokenKind::OpenBracket);
   EXPECT_EQ(t.line, 2);
   EXPECT_EQ(t.column, 3);
   t = tok.next();
   EXPECT_EQ(t.text, "-1.5e2");
   EXPECT_EQ(t.column, 5);
-  EXPECT_EQ(tok.next().kind, TokenKind::kCloseBracket);
+  EXPECT_EQ(tok.next().kind, TokenKind::CloseBracket);
   t = tok.next();  // a string right after ']' with no space
-  EXPECT_EQ(t.kind, TokenKind::kString);
+  EXPECT_EQ(t.kind, TokenKind::String);
   EXPECT_EQ(t.string_value(), "x");
   EXPECT_EQ(t.column, 13);
-  EXPECT_EQ(tok.next().kind, TokenKind::kEnd);
-  EXPECT_EQ(tok.next().kind, TokenKind::kEnd);  // stays at the end
+  EXPECT_EQ(tok.next().kind, TokenKind::End);
+  EXPECT_EQ(tok.next().kind, TokenKind::End);  // stays at the end
 }
 
 TEST(Tokenizer, EscapeSequencesDecode) {
@@ -71,22 +71,22 @@ TEST(Tokenizer, EscapeSequencesDecode) {
 
 TEST(Tokenizer, NumbersParseLikeStrtod) {
   double v = 0;
-  EXPECT_EQ(parse_number("+2e3", &v), NumberStatus::kOk);
+  EXPECT_EQ(parse_number("+2e3", &v), NumberStatus::Ok);
   EXPECT_EQ(v, 2000.0);
-  EXPECT_EQ(parse_number("-.5", &v), NumberStatus::kOk);
+  EXPECT_EQ(parse_number("-.5", &v), NumberStatus::Ok);
   EXPECT_EQ(v, -0.5);
-  EXPECT_EQ(parse_number("5.", &v), NumberStatus::kOk);
+  EXPECT_EQ(parse_number("5.", &v), NumberStatus::Ok);
   EXPECT_EQ(v, 5.0);
-  EXPECT_EQ(parse_number("1e-400", &v), NumberStatus::kOk);  // underflow is zero, not an error
+  EXPECT_EQ(parse_number("1e-400", &v), NumberStatus::Ok);  // underflow is zero, not an error
   EXPECT_EQ(v, 0.0);
-  EXPECT_EQ(parse_number("1e400", &v), NumberStatus::kOutOfRange);
-  EXPECT_EQ(parse_number("-1e400", &v), NumberStatus::kOutOfRange);
-  EXPECT_EQ(parse_number("nan", &v), NumberStatus::kNotFinite);
-  EXPECT_EQ(parse_number("-inf", &v), NumberStatus::kNotFinite);
-  EXPECT_EQ(parse_number("0x10", &v), NumberStatus::kNotANumber);
-  EXPECT_EQ(parse_number("1.2.3", &v), NumberStatus::kNotANumber);
-  EXPECT_EQ(parse_number("+-1", &v), NumberStatus::kNotANumber);
-  EXPECT_EQ(parse_number("", &v), NumberStatus::kNotANumber);
+  EXPECT_EQ(parse_number("1e400", &v), NumberStatus::OutOfRange);
+  EXPECT_EQ(parse_number("-1e400", &v), NumberStatus::OutOfRange);
+  EXPECT_EQ(parse_number("nan", &v), NumberStatus::NotFinite);
+  EXPECT_EQ(parse_number("-inf", &v), NumberStatus::NotFinite);
+  EXPECT_EQ(parse_number("0x10", &v), NumberStatus::NotANumber);
+  EXPECT_EQ(parse_number("1.2.3", &v), NumberStatus::NotANumber);
+  EXPECT_EQ(parse_number("+-1", &v), NumberStatus::NotANumber);
+  EXPECT_EQ(parse_number("", &v), NumberStatus::NotANumber);
 }
 
 // ---------------------------------------------------------------------------------------
