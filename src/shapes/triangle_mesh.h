@@ -55,6 +55,10 @@ class TriangleMesh : public Shape {
     Vec2 uv[3];
   };
   Corner corners(unsigned tri) const;
+  // Rounding-error bound of the point b0 p0 + b1 p1 + b2 p2 (see the .cpp).
+  static Vec3 barycentric_error(float b0, float b1, float b2, const Corner& c);
+  // Distance from the triangle's plane within which Embree's float test may misjudge the side.
+  static float embree_plane_error(const Corner& c);
   // Geometric normal oriented as pbrt orients it (see the .cpp), and the shading normal.
   void normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const;
   void validate(MeshData& mesh, const MeshSource& source) const;
