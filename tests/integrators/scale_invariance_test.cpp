@@ -47,11 +47,14 @@ const std::string kLitScene = R"(
   AttributeEnd
 )";
 
-// The only light is a sphere inside a closed box (12 triangles, all faces) standing on the floor.
+// The only light is a sphere inside a closed box (12 triangles, all faces) that floats 0.02
+// units above the floor. Shadow rays from the floor under the box must not start inside it:
+// the old fixed offset (6e-6 scene units near the origin) did at scale 1e-4, where the gap is
+// 2e-6, and lit the floor under the box, whose light then leaked out through the gap.
 const std::string kBoxedLight = R"(
   Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
   Shape "trianglemesh" "point3 P" [-6 -6 0  6 -6 0  6 6 0  -6 6 0] "integer indices" [0 1 2 0 2 3]
-  Shape "trianglemesh" "point3 P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0  -1 -1 2  1 -1 2  1 1 2  -1 1 2]
+  Shape "trianglemesh" "point3 P" [-1 -1 0.02  1 -1 0.02  1 1 0.02  -1 1 0.02  -1 -1 2  1 -1 2  1 1 2  -1 1 2]
     "integer indices" [0 1 2 0 2 3  4 5 6 4 6 7  0 1 5 0 5 4  1 2 6 1 6 5  2 3 7 2 7 6  3 0 4 3 4 7]
   AttributeBegin
     Translate 0 0 1
@@ -81,6 +84,7 @@ TEST(ScaleInvariance, BoxedLightLeaksNothingAtAnyScale) {
     Image img = render(kBoxedLight, s, 1);
     double max_value = 0;
     for (float v : img.pixels) max_value = std::max(max_value, double(v));
+    std::printf("scale %g: boxed light, brightest pixel %g, mean %g\n", s, max_value, mean(img));
     EXPECT_EQ(max_value, 0.0) << "light leaked out of the closed box at scale " << s;
   }
 }
