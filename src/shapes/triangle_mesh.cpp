@@ -89,6 +89,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
 
   indices_.reserve(mesh.indices.size());
   cdf_.reserve(mesh.indices.size() / 3);
+  plane_error_.reserve(mesh.indices.size() / 3);
   double total = 0.0;
   for (size_t i = 0; i < mesh.indices.size(); i += 3) {
     const Vec3 &p0 = positions_[mesh.indices[i]], &p1 = positions_[mesh.indices[i + 1]],
@@ -102,6 +103,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
     glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0);
     total += 0.5 * glm::length(glm::cross(e1, e2));
     cdf_.push_back(total);
+    plane_error_.push_back(embree_plane_error(Corner{{p0, p1, p2}, {}}));
     for (int k = 0; k < 3; ++k) {
       indices_.push_back(uint32_t(mesh.indices[i + k]));
       bounds_.extend(positions_[mesh.indices[i + k]]);
@@ -142,6 +144,10 @@ TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
   return c;
 }
 
+Vec3 TriangleMesh::point_error(unsigned tri, float b0, float b1, float b2, const Corner& c) const {
+  return barycentric_error(b0, b1, b2, c) + Vec3(plane_error_[tri]);
+}
+
 Vec3 TriangleMesh::barycentric_error(float b0, float b1, float b2, const Corner& c) {
   // The exact point with Embree's barycentrics b1, b2 (and b0 = 1 - b1 - b2 exactly) lies
   // on the (world-space float) triangle whatever Embree's own rounding was. Ours differs from
@@ -152,8 +158,7 @@ Vec3 TriangleMesh::barycentric_error(float b0, float b1, float b2, const Corner&
   // the rounding of that product, kept conservative). Area sampling computes b2 from the
   // other two instead, so the term takes the largest corner.
   Vec3 corner_max = glm::max(glm::abs(c.p[0]), glm::max(glm::abs(c.p[1]), glm::abs(c.p[2])));
-  Vec3 err = gamma(7) * (glm::abs(b0 * c.p[0]) + glm::abs(b1 * c.p[1]) + glm::abs(b2 * c.p[2])) + gamma(5) * corner_max;
-  return err + Vec3(embree_plane_error(c));
+  return gamma(7) * (glm::abs(b0 * c.p[0]) + glm::abs(b1 * c.p[1]) + glm::abs(b2 * c.p[2])) + gamma(5) * corner_max;
 }
 
 float TriangleMesh::embree_plane_error(const Corner& c) {
@@ -166,12 +171,14 @@ float TriangleMesh::embree_plane_error(const Corner& c) {
   // distance that is T / |Ng|: gamma(8) sqrt(3) |v0 - o| |e1| |e2| / |e1 x e2|; |v0 - o| is
   // at most the longest edge plus the offset, and gamma(16) covers the sqrt(3), the offset
   // and the neighbouring triangles of similar shape a ray may meet near the edge.
+  // Per triangle, once at load (plane_error_).
   Vec3 e1 = c.p[0] - c.p[1], e2 = c.p[2] - c.p[0], e3 = c.p[1] - c.p[2];
-  float cross = glm::length(glm::cross(e1, e2));
-  float l1 = glm::length(e1), l2 = glm::length(e2), l3 = glm::length(e3);
-  if (!(cross > 0.f)) return 0.f;  // degenerate: Embree reports no hit on it
-  float longest = std::max(l1, std::max(l2, l3));
-  return gamma(16) * longest * (l1 * l2 / cross);
+  Vec3 n = glm::cross(e1, e2);
+  float cross2 = glm::dot(n, n);
+  if (!(cross2 > 0.f)) return 0.f;  // degenerate: Embree reports no hit on it
+  float l1_2 = glm::dot(e1, e1), l2_2 = glm::dot(e2, e2), l3_2 = glm::dot(e3, e3);
+  float longest2 = std::max(l1_2, std::max(l2_2, l3_2));
+  return gamma(16) * std::sqrt(longest2 * (l1_2 / cross2) * l2_2);
 }
 
 void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n,
@@ -204,7 +211,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned p
   // The barycentric point lies on the triangle's plane to float rounding, which keeps the
   // spawned-ray offset small; ray.at(t) can be off the plane by |o| * eps.
   si.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
-  si.p_error = barycentric_error(b0, b1, b2, c);
+  si.p_error = point_error(prim_id, b0, b1, b2, c);
   si.t = t;
   si.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   normals_at(prim_id, b0, b1, b2, c, &si.n, &si.ns);
@@ -242,7 +249,7 @@ ShapeSample TriangleMesh::sample_area(Vec2 u) const {
   Corner c = corners(unsigned(tri));
   ShapeSample s;
   s.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
-  s.p_error = barycentric_error(b0, b1, b2, c);
+  s.p_error = point_error(unsigned(tri), b0, b1, b2, c);
   s.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   Vec3 ns;
   normals_at(unsigned(tri), b0, b1, b2, c, &s.n, &ns);
