@@ -89,7 +89,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
 
   indices_.reserve(mesh.indices.size());
   cdf_.reserve(mesh.indices.size() / 3);
-  plane_error_.reserve(mesh.indices.size() / 3);
+  point_error_.reserve(mesh.indices.size() / 3);
   double total = 0.0;
   for (size_t i = 0; i < mesh.indices.size(); i += 3) {
     const Vec3 &p0 = positions_[mesh.indices[i]], &p1 = positions_[mesh.indices[i + 1]],
@@ -103,7 +103,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
     glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0);
     total += 0.5 * glm::length(glm::cross(e1, e2));
     cdf_.push_back(total);
-    plane_error_.push_back(embree_plane_error(Corner{{p0, p1, p2}, {}}));
+    point_error_.push_back(triangle_error(Corner{{p0, p1, p2}, {}}));
     for (int k = 0; k < 3; ++k) {
       indices_.push_back(uint32_t(mesh.indices[i + k]));
       bounds_.extend(positions_[mesh.indices[i + k]]);
@@ -144,21 +144,18 @@ TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
   return c;
 }
 
-Vec3 TriangleMesh::point_error(unsigned tri, float b0, float b1, float b2, const Corner& c) const {
-  return barycentric_error(b0, b1, b2, c) + Vec3(plane_error_[tri]);
-}
-
-Vec3 TriangleMesh::barycentric_error(float b0, float b1, float b2, const Corner& c) {
+Vec3 TriangleMesh::triangle_error(const Corner& c) {
   // The exact point with Embree's barycentrics b1, b2 (and b0 = 1 - b1 - b2 exactly) lies
   // on the (world-space float) triangle whatever Embree's own rounding was. Ours differs from
   // it twice: b0 p0 + b1 p1 + b2 p2 is three products and two sums per axis, within gamma(7)
-  // times the sum of the terms' magnitudes (pbrt-v4, PBR 4th ed. 6.8.5); and b0 computed as
-  // 1 - b1 - b2 in float is off by up to gamma(2) (1 + b1 + b2) <= 4u absolutely (not
-  // relatively: b0 may be tiny), which moves the point by at most gamma(5) |p0| (4u plus
-  // the rounding of that product, kept conservative). Area sampling computes b2 from the
-  // other two instead, so the term takes the largest corner.
+  // times sum |b_i p_i| (pbrt-v4, PBR 4th ed. 6.8.5); and b0 computed as 1 - b1 - b2 in float
+  // is off by up to gamma(2) (1 + b1 + b2) <= 4u absolutely (not relatively: b0 may be tiny),
+  // which moves the point by at most gamma(5) |p0|. With b_i >= 0 summing to 1 (within 2u),
+  // sum |b_i p_i| <= (1 + gamma(2)) max |p_i| per axis, and gamma(7) (1 + gamma(2)) + gamma(5)
+  // <= gamma(13): one bound for every point of the triangle (area samples, which compute b2
+  // instead of b0, included), computed at load, so a hit costs one load.
   Vec3 corner_max = glm::max(glm::abs(c.p[0]), glm::max(glm::abs(c.p[1]), glm::abs(c.p[2])));
-  return gamma(7) * (glm::abs(b0 * c.p[0]) + glm::abs(b1 * c.p[1]) + glm::abs(b2 * c.p[2])) + gamma(5) * corner_max;
+  return gamma(13) * corner_max + Vec3(embree_plane_error(c));
 }
 
 float TriangleMesh::embree_plane_error(const Corner& c) {
@@ -171,7 +168,6 @@ float TriangleMesh::embree_plane_error(const Corner& c) {
   // distance that is T / |Ng|: gamma(8) sqrt(3) |v0 - o| |e1| |e2| / |e1 x e2|; |v0 - o| is
   // at most the longest edge plus the offset, and gamma(16) covers the sqrt(3), the offset
   // and the neighbouring triangles of similar shape a ray may meet near the edge.
-  // Per triangle, once at load (plane_error_).
   Vec3 e1 = c.p[0] - c.p[1], e2 = c.p[2] - c.p[0], e3 = c.p[1] - c.p[2];
   Vec3 n = glm::cross(e1, e2);
   float cross2 = glm::dot(n, n);
@@ -211,7 +207,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned p
   // The barycentric point lies on the triangle's plane to float rounding, which keeps the
   // spawned-ray offset small; ray.at(t) can be off the plane by |o| * eps.
   si.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
-  si.p_error = point_error(prim_id, b0, b1, b2, c);
+  si.p_error = point_error_[prim_id];
   si.t = t;
   si.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   normals_at(prim_id, b0, b1, b2, c, &si.n, &si.ns);
@@ -249,7 +245,7 @@ ShapeSample TriangleMesh::sample_area(Vec2 u) const {
   Corner c = corners(unsigned(tri));
   ShapeSample s;
   s.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
-  s.p_error = point_error(unsigned(tri), b0, b1, b2, c);
+  s.p_error = point_error_[tri];
   s.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   Vec3 ns;
   normals_at(unsigned(tri), b0, b1, b2, c, &s.n, &ns);
