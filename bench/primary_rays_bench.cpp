@@ -110,7 +110,7 @@ void BM_SceneOccludedOnly(benchmark::State& state) {
   const Vec3 to_light = glm::normalize(Vec3(0.f, 0.f, 1.f) - Vec3(0.3f, 0.2f, 0.f));
   for (const Ray& r : primary_rays(s)) {
     SurfaceInteraction si;
-    if (s.scene->intersect(r, &si)) shadow.push_back(spawn_ray(si.p, si.n, to_light));
+    if (s.scene->intersect(r, &si)) shadow.push_back(spawn_ray(si, to_light));
   }
   size_t blocked = 0;
   for (auto _ : state)

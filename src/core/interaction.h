@@ -9,6 +9,9 @@ class Light;
 
 struct SurfaceInteraction {
   Vec3 p{0.f};
+  // Conservative absolute rounding-error bound of p per axis (world space): the exact surface
+  // point lies in p +- p_error. Each shape computes it; spawned rays step over it (core/ray.h).
+  Vec3 p_error{0.f};
   Vec3 n{0.f, 0.f, 1.f};   // geometric normal, unit, flipped by ReverseOrientation/handedness
   Vec3 ns{0.f, 0.f, 1.f};  // shading normal (interpolated), same hemisphere as n
   Vec2 uv{0.f};

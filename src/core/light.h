@@ -20,6 +20,7 @@ struct LightLiSample {
   float pdf = 0.f; // solid-angle density (1 for delta lights: a discrete choice)
   Vec3 p_light{0.f};  // point on the light, for the shadow ray (far away for distant/infinite)
   Vec3 n_light{0.f};
+  Vec3 p_light_error{0.f};  // rounding-error bound of p_light (area lights; zero for the others)
 };
 
 class Light {

@@ -16,6 +16,7 @@ struct ShapeSample {
   Vec3 n{0.f, 0.f, 1.f};  // oriented like the shape's geometric normal (ReverseOrientation applied)
   Vec2 uv{0.f};
   float pdf_area = 0.f;   // density with respect to surface area
+  Vec3 p_error{0.f};      // rounding-error bound of p, as SurfaceInteraction::p_error (last: aggregate order)
 };
 
 class Shape {

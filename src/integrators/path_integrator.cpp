@@ -37,7 +37,7 @@ RGB PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf
   if (is_black(f)) return skip();
   ++tally.rays;
   ++tally.shadow_rays;
-  if (scene_.occluded(spawn_ray_to(si.p, si.n, ls->p_light, si.time))) return RGB(0.f);
+  if (scene_.occluded(spawn_ray_to(si, ls->p_light, ls->p_light_error, ls->n_light))) return RGB(0.f);
   float light_pdf = pmf * ls->pdf;
   if (light->is_delta()) return f * ls->L / light_pdf;
   float w = power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi));
@@ -74,7 +74,7 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     if (si.area_light) add_emission(si.area_light, si.area_light->L(si, -ray.d), &si);
     const BSDF* bsdf = si.material ? si.material->bsdf(si, arena) : nullptr;
     if (!bsdf) {
-      ray = spawn_ray(si.p, si.n, ray.d, ray.time);
+      ray = spawn_ray(si, ray.d);
       continue;
     }
     if (depth++ == max_depth_) break;
@@ -90,7 +90,7 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     specular_bounce = bs->is_specular();
     prev_bsdf_pdf = bs->pdf;
     prev_ctx = LightSampleContext{si.p, si.n};
-    ray = spawn_ray(si.p, si.n, bs->wi, ray.time);
+    ray = spawn_ray(si, bs->wi);
     if (!is_finite(beta)) break;
     // Russian roulette once the path has some length; unbiased (survivors are reweighted).
     float q = max_component(beta);

@@ -34,6 +34,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
   s.wi = wi;
   s.pdf = pdf;
   s.p_light = ss.p;
+  s.p_light_error = ss.p_error;
   s.n_light = ss.n;
   return s;
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/float_error.h"
 
 namespace eyetrace {
 
@@ -84,7 +85,9 @@ Vec3 normalized_or(const Vec3& v, const Vec3& fallback) {
 // tangents as vectors, normals by the inverse transpose (as pbrt-v4 does for instances).
 SurfaceInteraction to_world(const SurfaceInteraction& local, const Transform& world_from_instance) {
   SurfaceInteraction si = local;
-  si.p = world_from_instance.point(local.p);
+  // pbrt's Transform rule for points with error: the instance transform's own rounding plus
+  // the local bound carried through its linear part (core/float_error.h).
+  si.p = transform_point_with_error(world_from_instance.matrix(), local.p, local.p_error, &si.p_error);
   si.n = normalized_or(world_from_instance.normal(local.n), local.n);
   si.ns = normalized_or(world_from_instance.normal(local.ns), si.n);
   if (glm::dot(si.ns, si.n) < 0.f) si.ns = -si.ns;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "core/float_error.h"
+
 namespace eyetrace {
 
 namespace {
@@ -142,9 +144,31 @@ SurfaceInteraction AnalyticShape::interaction(const Ray& ray, float t, unsigned,
   return si;
 }
 
+Vec3 AnalyticShape::point_error(const glm::dvec3& p, double p_rel_error) const {
+  // Double rounding of n chained operations: gamma_d(n) = n u / (1 - n u), u = 2^-53.
+  constexpr double kUnitD = std::numeric_limits<double>::epsilon() * 0.5;
+  constexpr double kGammaD3 = 3.0 * kUnitD / (1.0 - 3.0 * kUnitD);
+  const glm::dmat4& m = world_from_object_;
+  glm::dvec3 pw(m * glm::dvec4(p, 1.0));
+  Vec3 err;
+  for (int r = 0; r < 3; ++r) {
+    // Each world coordinate is a sum of four double products: gamma_d(3) times the terms'
+    // magnitudes (pbrt's Transform rule); the object error goes through |M| (times 1 + gamma_d(3)).
+    double terms = std::abs(m[0][r] * p.x) + std::abs(m[1][r] * p.y) + std::abs(m[2][r] * p.z) + std::abs(m[3][r]);
+    double carried = (std::abs(m[0][r] * p.x) + std::abs(m[1][r] * p.y) + std::abs(m[2][r] * p.z)) * p_rel_error;
+    // Rounding the double result to float adds at most half an ulp: kMachineEpsilon |pw|.
+    double e = kGammaD3 * terms + (1.0 + kGammaD3) * carried + double(kMachineEpsilon) * std::abs(pw[r]);
+    // The sums above are themselves rounded (relative 1e-15): a factor of 1 + 1e-6 and the
+    // step up to the next float keep the float bound above the exact one.
+    err[r] = next_float_up(float(e * (1.0 + 1e-6)));
+  }
+  return err;
+}
+
 void AnalyticShape::set_surface(SurfaceInteraction* si, const glm::dvec3& p, const glm::dvec3& n, double u, double v,
-                                const glm::dvec3& dpdu, const glm::dvec3& dpdv) const {
+                                const glm::dvec3& dpdu, const glm::dvec3& dpdv, double p_rel_error) const {
   si->p = point_to_world(p);
+  si->p_error = point_error(p, p_rel_error);
   si->n = normal_to_world(n);
   si->uv = Vec2(float(std::clamp(u, 0.0, 1.0)), float(std::clamp(v, 0.0, 1.0)));
   si->dpdu = vector_to_world(dpdu);

@@ -36,8 +36,14 @@ class AnalyticShape : public Shape {
   // Position, normal, uv and tangents of the object-space surface point p (on the surface).
   virtual void surface_at(glm::dvec3 p, SurfaceInteraction* si) const = 0;
   // Stores object-space p, outward normal n, (u, v) clamped to [0, 1] and tangents in world space.
+  // p may be off the exact surface by p_rel_error |p| per axis (object space, double); p_error
+  // gets the world-space bound of the float p (see point_error).
   void set_surface(SurfaceInteraction* si, const glm::dvec3& p, const glm::dvec3& n, double u, double v,
-                   const glm::dvec3& dpdu, const glm::dvec3& dpdv) const;
+                   const glm::dvec3& dpdu, const glm::dvec3& dpdv, double p_rel_error = 0.0) const;
+  // Absolute error bound of point_to_world(p) for an object-space p off the surface by
+  // p_rel_error |p|: carried through the transform, plus the transform's double rounding,
+  // plus the final rounding to float.
+  Vec3 point_error(const glm::dvec3& p, double p_rel_error) const;
 
   DRay to_object(const Vec3& o, const Vec3& d) const;
   Vec3 point_to_world(const glm::dvec3& p) const;

@@ -43,7 +43,10 @@ std::optional<double> Disk::hit_object(const DRay& r, double tmin, double tmax) 
 }
 
 void Disk::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
-  p.z = height_;  // exact plane: t from Embree is a float
+  // The exact plane: t from Embree is a float, but any (x, y) with z = height is a point of
+  // the plane, so the object-space point has no error (pbrt-v4 likewise); only the transform
+  // to world space and the rounding to float add to p_error (set_surface).
+  p.z = height_;
   double r_hit = std::sqrt(p.x * p.x + p.y * p.y);
   double phi = std::atan2(p.y, p.x);
   if (phi < 0.0) phi += kTwoPi;
@@ -64,6 +67,7 @@ ShapeSample Disk::sample_area(Vec2 u) const {
   surface_at(glm::dvec3(r * std::cos(phi), r * std::sin(phi), height_), &si);
   ShapeSample s;
   s.p = si.p;
+  s.p_error = si.p_error;
   s.n = si.n;
   s.uv = si.uv;
   s.pdf_area = float(1.0 / area_);

@@ -68,6 +68,10 @@ std::optional<double> Sphere::hit_object(const DRay& r, double tmin, double tmax
 
 void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   // Project back onto the surface: t from Embree is a float, so o + t d is off by ~|o| eps.
+  // The projected point is off the sphere only by the projection's own rounding, at most
+  // gamma_d(5) |p| per axis (pbrt-v4's bound for p * r / |p|, here in double).
+  constexpr double kUnitD = std::numeric_limits<double>::epsilon() * 0.5;
+  constexpr double kGammaD5 = 5.0 * kUnitD / (1.0 - 5.0 * kUnitD);
   double len = glm::length(p);
   p = len > 0.0 ? p * (radius_ / len) : glm::dvec3(0.0, 0.0, radius_);
   double phi = std::atan2(p.y, p.x);
@@ -80,7 +84,7 @@ void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   double v = (theta - theta_zmin_) / (theta_zmax_ - theta_zmin_);
   glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0);
   glm::dvec3 dpdv = (theta_zmax_ - theta_zmin_) * glm::dvec3(p.z * cos_phi, p.z * sin_phi, -radius_ * sin_theta);
-  set_surface(si, p, p, u, v, dpdu, dpdv);
+  set_surface(si, p, p, u, v, dpdu, dpdv, kGammaD5);
 }
 
 ShapeSample Sphere::sample_area(Vec2 u) const {
@@ -94,6 +98,7 @@ ShapeSample Sphere::sample_area(Vec2 u) const {
   surface_at(glm::dvec3(rxy * std::cos(phi), rxy * std::sin(phi), z), &si);
   ShapeSample s;
   s.p = si.p;
+  s.p_error = si.p_error;
   s.n = si.n;
   s.uv = si.uv;
   s.pdf_area = float(1.0 / area_);

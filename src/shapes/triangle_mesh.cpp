@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/float_error.h"
 #include "core/sampling.h"
 
 namespace eyetrace {
@@ -88,6 +89,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
 
   indices_.reserve(mesh.indices.size());
   cdf_.reserve(mesh.indices.size() / 3);
+  point_error_.reserve(mesh.indices.size() / 3);
   double total = 0.0;
   for (size_t i = 0; i < mesh.indices.size(); i += 3) {
     const Vec3 &p0 = positions_[mesh.indices[i]], &p1 = positions_[mesh.indices[i + 1]],
@@ -101,6 +103,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
     glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0);
     total += 0.5 * glm::length(glm::cross(e1, e2));
     cdf_.push_back(total);
+    point_error_.push_back(triangle_error(Corner{{p0, p1, p2}, {}}));
     for (int k = 0; k < 3; ++k) {
       indices_.push_back(uint32_t(mesh.indices[i + k]));
       bounds_.extend(positions_[mesh.indices[i + k]]);
@@ -141,6 +144,39 @@ TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
   return c;
 }
 
+Vec3 TriangleMesh::triangle_error(const Corner& c) {
+  // The exact point with Embree's barycentrics b1, b2 (and b0 = 1 - b1 - b2 exactly) lies
+  // on the (world-space float) triangle whatever Embree's own rounding was. Ours differs from
+  // it twice: b0 p0 + b1 p1 + b2 p2 is three products and two sums per axis, within gamma(7)
+  // times sum |b_i p_i| (pbrt-v4, PBR 4th ed. 6.8.5); and b0 computed as 1 - b1 - b2 in float
+  // is off by up to gamma(2) (1 + b1 + b2) <= 4u absolutely (not relatively: b0 may be tiny),
+  // which moves the point by at most gamma(5) |p0|. With b_i >= 0 summing to 1 (within 2u),
+  // sum |b_i p_i| <= (1 + gamma(2)) max |p_i| per axis, and gamma(7) (1 + gamma(2)) + gamma(5)
+  // <= gamma(13): one bound for every point of the triangle (area samples, which compute b2
+  // instead of b0, included), computed at load, so a hit costs one load.
+  Vec3 corner_max = glm::max(glm::abs(c.p[0]), glm::max(glm::abs(c.p[1]), glm::abs(c.p[2])));
+  return gamma(13) * corner_max + Vec3(embree_plane_error(c));
+}
+
+float TriangleMesh::embree_plane_error(const Corner& c) {
+  // pbrt's own triangle test accepts only a conservatively positive t, so its offset need
+  // only clear the error box of p. Embree accepts any computed t >= tnear = 0, so a spawned
+  // origin must also lie farther from the plane than Embree's own rounding can misjudge.
+  // Embree decides the side from T = dot(Ng, v0 - o) with Ng = cross(v0 - v1, v2 - v0) in
+  // float: about eight chained roundings, each relative to the terms' magnitudes, so |T| is
+  // uncertain by gamma(8) |e1| |e2| |v0 - o| (times sqrt(3) for the sum over axes). As a
+  // distance that is T / |Ng|: gamma(8) sqrt(3) |v0 - o| |e1| |e2| / |e1 x e2|; |v0 - o| is
+  // at most the longest edge plus the offset, and gamma(16) covers the sqrt(3), the offset
+  // and the neighbouring triangles of similar shape a ray may meet near the edge.
+  Vec3 e1 = c.p[0] - c.p[1], e2 = c.p[2] - c.p[0], e3 = c.p[1] - c.p[2];
+  Vec3 n = glm::cross(e1, e2);
+  float cross2 = glm::dot(n, n);
+  if (!(cross2 > 0.f)) return 0.f;  // degenerate: Embree reports no hit on it
+  float l1_2 = glm::dot(e1, e1), l2_2 = glm::dot(e2, e2), l3_2 = glm::dot(e3, e3);
+  float longest2 = std::max(l1_2, std::max(l2_2, l3_2));
+  return gamma(16) * std::sqrt(longest2 * (l1_2 / cross2) * l2_2);
+}
+
 void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n,
                               Vec3* ns) const {
   // pbrt: n along cross(p0 - p2, p1 - p2) of the world-space corners, flipped when
@@ -171,6 +207,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned p
   // The barycentric point lies on the triangle's plane to float rounding, which keeps the
   // spawned-ray offset small; ray.at(t) can be off the plane by |o| * eps.
   si.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
+  si.p_error = point_error_[prim_id];
   si.t = t;
   si.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   normals_at(prim_id, b0, b1, b2, c, &si.n, &si.ns);
@@ -208,6 +245,7 @@ ShapeSample TriangleMesh::sample_area(Vec2 u) const {
   Corner c = corners(unsigned(tri));
   ShapeSample s;
   s.p = b0 * c.p[0] + b1 * c.p[1] + b2 * c.p[2];
+  s.p_error = point_error_[tri];
   s.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   Vec3 ns;
   normals_at(unsigned(tri), b0, b1, b2, c, &s.n, &ns);

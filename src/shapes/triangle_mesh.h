@@ -55,6 +55,11 @@ class TriangleMesh : public Shape {
     Vec2 uv[3];
   };
   Corner corners(unsigned tri) const;
+  // Error box of any hit or sample point b0 p0 + b1 p1 + b2 p2 of a triangle: the rounding of
+  // that sum, bounded over all barycentrics, plus embree_plane_error (see the .cpp).
+  static Vec3 triangle_error(const Corner& c);
+  // Distance from the triangle's plane within which Embree's float test may misjudge the side.
+  static float embree_plane_error(const Corner& c);
   // Geometric normal oriented as pbrt orients it (see the .cpp), and the shading normal.
   void normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const;
   void validate(MeshData& mesh, const MeshSource& source) const;
@@ -68,6 +73,7 @@ class TriangleMesh : public Shape {
   std::vector<Vec3> normals_;  // world space, reverse orientation applied; may be empty
   std::vector<Vec2> uvs_;
   std::vector<double> cdf_;    // cumulative triangle area / total, for area sampling
+  std::vector<Vec3> point_error_;  // triangle_error of each kept triangle
   float area_ = 0.f;
   Bounds3 bounds_;
   bool flip_normal_ = false;   // reverse_orientation XOR transform swaps handedness

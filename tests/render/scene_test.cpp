@@ -174,7 +174,7 @@ TEST(Scene, OccludedAndIntersectRespectTmaxInUnitsOfD) {
   EXPECT_FALSE(scene->occluded(Ray{Vec3(0), Vec3(0, 0, 2), 0.9f}));
   EXPECT_TRUE(scene->occluded(Ray{Vec3(0), Vec3(0, 0, 2), 1.1f}));
   // spawn_ray_to stops short of its target: a target on the plane is not occluded by it.
-  EXPECT_FALSE(scene->occluded(spawn_ray_to(Vec3(0), Vec3(0, 0, 1), Vec3(1, 1, 2))));
+  EXPECT_FALSE(scene->occluded(spawn_ray_to(Vec3(0), Vec3(1e-6f), Vec3(0, 0, 1), 0.f, Vec3(1, 1, 2), Vec3(0), Vec3(0))));
   SurfaceInteraction si;
   EXPECT_FALSE(scene->intersect(Ray{Vec3(0), Vec3(0, 0, 2), 0.9f}, &si));
   ASSERT_TRUE(scene->intersect(Ray{Vec3(0), Vec3(0, 0, 2), 1.1f}, &si));
@@ -277,59 +277,62 @@ TEST(Scene, EmbreeErrorsBecomeSceneErrors) {
   }
 }
 
-// Rays spawned with offset_ray_origin (core/ray.h) from hits on a sphere and on a plane
-// placed near and far from the origin (float spacing grows with distance) never hit the
-// point they leave: rays leaving a convex sphere, or either side of a lone plane, must
-// find nothing; rays into the sphere must reach its far side (a self-hit lands at ~0
-// distance, the far side at the chord length 2 cos(angle to -n), which the offset origin
-// changes only slightly).
+// Rays spawned with offset_ray_origin (core/ray.h) from hits on a sphere and on a plane,
+// at scene scales 1e-4 .. 1e5 and placed near and far (1e4 radii) from the origin (float
+// spacing grows with distance), never hit the point they leave: rays leaving a convex
+// sphere, or either side of a lone plane, must find nothing; rays into the sphere must
+// reach its far side (a self-hit lands at ~0 distance, the far side at the chord length
+// 2 r cos(angle to -n)). The old fixed epsilon (1e-4 * max(1, |p|) * 0.05 + 1e-6) failed
+// this at scale 1e-4 (the offset is 1e-2 radii) and 1e5 far from the origin.
 TEST(Scene, SpawnedRaysDoNotSelfIntersect) {
-  for (float distance : {0.f, 100.f, 1e4f}) {
-    Transform t = translate(Vec3(distance, -distance, 0.5f * distance));
-    Scene sphere_scene, plane_scene;
-    ParameterList sp;
-    sp.add(param("float", "radius", {1.0}));
-    sphere_scene.add_primitive(Primitive{std::move(create_sphere_shapes(ShapeContext{sp, t, false, ""})[0]), nullptr, nullptr});
-    sphere_scene.commit();
-    ParameterList pp;
-    pp.add(param("point3", "P", {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}));
-    pp.add(param("integer", "indices", {0, 1, 2, 0, 2, 3}));
-    Transform tilt = t * rotate(20.f, Vec3(1, 1, 0));
-    plane_scene.add_primitive(Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pp, tilt, false, ""})[0]), nullptr, nullptr});
-    plane_scene.commit();
+  for (float s : {1e-4f, 1e-2f, 1.f, 1e2f, 1e5f})
+    for (float distance : {0.f, 100.f, 1e4f}) {
+      Transform t = translate(s * Vec3(distance, -distance, 0.5f * distance)) * scale(Vec3(s));
+      Scene sphere_scene, plane_scene;
+      ParameterList sp;
+      sp.add(param("float", "radius", {1.0}));
+      sphere_scene.add_primitive(Primitive{std::move(create_sphere_shapes(ShapeContext{sp, t, false, ""})[0]), nullptr, nullptr});
+      sphere_scene.commit();
+      ParameterList pp;
+      pp.add(param("point3", "P", {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}));
+      pp.add(param("integer", "indices", {0, 1, 2, 0, 2, 3}));
+      Transform tilt = t * rotate(20.f, Vec3(1, 1, 0));
+      plane_scene.add_primitive(Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pp, tilt, false, ""})[0]), nullptr, nullptr});
+      plane_scene.commit();
 
-    Vec3 centre = t.point(Vec3(0));
-    // Below this chord a grazing inward ray is too close to tangent to judge.
-    float min_chord = 4.f * (2e-5f * std::max(1.f, distance) + 1e-3f);
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<float> U(0.f, 1.f);
-    int bad = 0, checked = 0, plane_hits = 0;
-    for (int i = 0; i < 2000; ++i) {
-      Vec3 dir = sample_uniform_sphere(Vec2(U(rng), U(rng)));
-      Vec3 out_local = sample_uniform_hemisphere(Vec2(U(rng), U(rng)));
-      SurfaceInteraction si, next;
-      if (sphere_scene.intersect(Ray{centre - 10.f * dir, dir}, &si)) {
-        Vec3 out = Frame(si.n).to_world(out_local);
-        if (sphere_scene.intersect(spawn_ray(si.p, si.n, out), &next)) ++bad;
-        // Into the sphere: the chord through a unit sphere is 2 cos(angle to -n).
-        float chord = 2.f * out_local.z;
-        if (chord > min_chord) {
-          ++checked;
-          if (!sphere_scene.intersect(spawn_ray(si.p, si.n, -out), &next) || glm::distance(next.p, si.p) < 0.5f * chord)
-            ++bad;
+      Vec3 centre = t.point(Vec3(0));
+      // Below this chord (in radii) a grazing inward ray is too close to tangent to judge:
+      // the hit point itself is only known to float spacing at |p| ~ distance radii.
+      float min_chord = 4.f * (2e-5f * std::max(1.f, distance) + 1e-3f);
+      std::mt19937 rng(17);
+      std::uniform_real_distribution<float> U(0.f, 1.f);
+      int bad = 0, checked = 0, plane_hits = 0;
+      for (int i = 0; i < 2000; ++i) {
+        Vec3 dir = sample_uniform_sphere(Vec2(U(rng), U(rng)));
+        Vec3 out_local = sample_uniform_hemisphere(Vec2(U(rng), U(rng)));
+        SurfaceInteraction si, next;
+        if (sphere_scene.intersect(Ray{centre - 10.f * s * dir, dir}, &si)) {
+          Vec3 out = Frame(si.n).to_world(out_local);
+          if (sphere_scene.intersect(spawn_ray(si, out), &next)) ++bad;
+          float chord = 2.f * out_local.z;
+          if (chord > min_chord) {
+            ++checked;
+            if (!sphere_scene.intersect(spawn_ray(si, -out), &next) || glm::distance(next.p, si.p) < 0.5f * chord * s)
+              ++bad;
+          }
+        }
+        Vec3 jitter = 0.5f * s * Vec3(U(rng) - 0.5f, U(rng) - 0.5f, 0);
+        if (plane_scene.intersect(Ray{tilt.point(Vec3(0)) - 10.f * s * dir + jitter, dir}, &si)) {
+          ++plane_hits;
+          Vec3 out = Frame(si.n).to_world(out_local);
+          if (plane_scene.intersect(spawn_ray(si, out), &next)) ++bad;
+          if (plane_scene.intersect(spawn_ray(si, -out), &next)) ++bad;
         }
       }
-      if (plane_scene.intersect(Ray{tilt.point(Vec3(0)) - 10.f * dir + 0.5f * Vec3(U(rng) - 0.5f, U(rng) - 0.5f, 0), dir}, &si)) {
-        ++plane_hits;
-        Vec3 out = Frame(si.n).to_world(out_local);
-        if (plane_scene.intersect(spawn_ray(si.p, si.n, out), &next)) ++bad;
-        if (plane_scene.intersect(spawn_ray(si.p, si.n, -out), &next)) ++bad;
-      }
+      EXPECT_GT(checked, 1000);
+      EXPECT_GT(plane_hits, 1000);
+      EXPECT_EQ(bad, 0) << "at scale " << s << ", distance " << distance << " radii";
     }
-    EXPECT_GT(checked, 1000);
-    EXPECT_GT(plane_hits, 1000);
-    EXPECT_EQ(bad, 0) << "at distance " << distance;
-  }
 }
 
 }  // namespace
