@@ -4,8 +4,8 @@
 // no surface acne, and images equal to the scale-1 image within Monte Carlo noise.
 #include <gtest/gtest.h>
 
-#include "core/parser.h"
-#include "core/scene_builder.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {

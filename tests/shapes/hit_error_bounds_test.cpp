@@ -8,7 +8,7 @@
 #include <random>
 
 #include "core/sampling.h"
-#include "core/scene.h"
+#include "render/scene.h"
 #include "shapes/disk.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
