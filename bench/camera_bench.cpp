@@ -102,9 +102,7 @@ void BM_ThinLens(benchmark::State& state) {
 BENCHMARK(BM_ThinLens);
 
 // The paper's configuration: 5 mm pupil, relaxed eye, 60 degree field.
-void BM_Navarro(benchmark::State& state) {
-  run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
-}
+void BM_Navarro(benchmark::State& state) { run(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60")); }
 BENCHMARK(BM_Navarro);
 
 void BM_NavarroBatched(benchmark::State& state) {
@@ -129,9 +127,7 @@ void BM_Gullstrand(benchmark::State& state) {  // six surfaces
 }
 BENCHMARK(BM_Gullstrand);
 
-void BM_LeGrand(benchmark::State& state) {
-  run(state, *eye("legrand", "\"float pupildiameter\" 5 \"float fov\" 60"));
-}
+void BM_LeGrand(benchmark::State& state) { run(state, *eye("legrand", "\"float pupildiameter\" 5 \"float fov\" 60")); }
 BENCHMARK(BM_LeGrand);
 
 void BM_NavarroConstruction(benchmark::State& state) {

@@ -27,7 +27,8 @@ namespace {
 const IVec2 kResolution(512, 512);
 
 std::unique_ptr<LensSystemCamera> navarro() {
-  SceneEntity e = parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 60", "Camera", "bench");
+  SceneEntity e =
+      parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 60", "Camera", "bench");
   CameraContext ctx{e.params, Transform(), kResolution, ""};
   std::unique_ptr<Camera> c = create_named_eye_camera("navarro")(ctx);
   return std::unique_ptr<LensSystemCamera>(static_cast<LensSystemCamera*>(c.release()));

@@ -6,8 +6,9 @@
 #include "core/error.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"eyetrace: a physically based renderer that shows what a human eye sees.\n"
-               "Renders pbrt-v4 scene files through pinhole, thin-lens and schematic-eye cameras."};
+  CLI::App app{
+      "eyetrace: a physically based renderer that shows what a human eye sees.\n"
+      "Renders pbrt-v4 scene files through pinhole, thin-lens and schematic-eye cameras."};
   app.require_subcommand(1);
   auto render = eyetrace::add_render_command(app);
   auto optics = eyetrace::add_optics_command(app);

@@ -10,11 +10,11 @@
 #include "app/commands.h"
 #include "cameras/eye_params.h"
 #include "cameras/lens_system_camera.h"
-#include "render/image_io.h"
-#include "scene/parser.h"
 #include "optics/optics_error.h"
 #include "optics/report.h"
 #include "optics/spot.h"
+#include "render/image_io.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 
@@ -37,8 +37,10 @@ std::vector<double> parse_fields(const std::string& text) {
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
     if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v) || std::abs(v) >= 85.0)
-      throw_error(fmt::format("--fields \"{}\": expected comma-separated field angles in degrees, each within "
-                              "(-85, 85)", text));
+      throw_error(
+          fmt::format("--fields \"{}\": expected comma-separated field angles in degrees, each within "
+                      "(-85, 85)",
+                      text));
     fields.push_back(v);
   }
   if (fields.empty()) throw_error("--fields: give at least one field angle");

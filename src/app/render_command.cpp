@@ -11,11 +11,11 @@
 
 #include "app/commands.h"
 #include "app/interrupt.h"
-#include "scene/parser.h"
 #include "render/progress.h"
 #include "render/render_state.h"
-#include "scene/scene_fingerprint.h"
+#include "scene/parser.h"
 #include "scene/scene_builder.h"
+#include "scene/scene_fingerprint.h"
 
 namespace eyetrace {
 
@@ -67,15 +67,16 @@ void check_output_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& c : ext) c = char(std::tolower(c));
   if (ext != ".exr" && ext != ".png")
-    throw_parameter_error({}, "--output", fmt::format("\"{}\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", path));
+    throw_parameter_error({}, "--output",
+                          fmt::format("\"{}\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", path));
 }
 
 // Everything besides the scene description that changes the image, for the state fingerprint.
 std::string image_options(const RenderArgs& a, const RenderSetup& setup) {
   const Film& f = *setup.film;
-  return fmt::format("spp={} seed={} camera={} resolution={}x{} bounds={},{},{},{}\n{}", setup.sampler->samples_per_pixel(),
-                     a.seed, a.camera, f.resolution().x, f.resolution().y, f.bounds().lo.x, f.bounds().lo.y,
-                     f.bounds().hi.x, f.bounds().hi.y, setup.description);
+  return fmt::format("spp={} seed={} camera={} resolution={}x{} bounds={},{},{},{}\n{}",
+                     setup.sampler->samples_per_pixel(), a.seed, a.camera, f.resolution().x, f.resolution().y,
+                     f.bounds().lo.x, f.bounds().lo.y, f.bounds().hi.x, f.bounds().hi.y, setup.description);
 }
 
 // Loads `path` into the film and tiles, refusing a state made for another render.
@@ -84,16 +85,20 @@ void resume_from(const std::string& path, uint64_t fingerprint, RenderSetup& set
   const Film& f = *setup.film;
   int spp = setup.sampler->samples_per_pixel();
   if (s.samples_per_pixel != spp)
-    throw_error(fmt::format("--resume: render state \"{}\" is for {} samples per pixel, this render asks for {} "
-                            "(resume with the same --spp, or render without --resume)", path, s.samples_per_pixel, spp));
+    throw_error(
+        fmt::format("--resume: render state \"{}\" is for {} samples per pixel, this render asks for {} "
+                    "(resume with the same --spp, or render without --resume)",
+                    path, s.samples_per_pixel, spp));
   if (s.resolution != f.resolution() || s.bounds.lo != f.bounds().lo || s.bounds.hi != f.bounds().hi)
-    throw_error(fmt::format("--resume: render state \"{}\" is for a {}x{} image (or another crop), this render is {}x{}",
-                            path, s.resolution.x, s.resolution.y, f.resolution().x, f.resolution().y));
+    throw_error(
+        fmt::format("--resume: render state \"{}\" is for a {}x{} image (or another crop), this render is {}x{}", path,
+                    s.resolution.x, s.resolution.y, f.resolution().x, f.resolution().y));
   if (s.fingerprint != fingerprint)
-    throw_error(fmt::format("--resume: render state \"{}\" was made for another scene or other options (the scene "
-                            "file, an included file, a mesh, image or lens file it reads, --seed or --camera differ); render without "
-                            "--resume to start over",
-                            path));
+    throw_error(fmt::format(
+        "--resume: render state \"{}\" was made for another scene or other options (the scene "
+        "file, an included file, a mesh, image or lens file it reads, --seed or --camera differ); render without "
+        "--resume to start over",
+        path));
   setup.film->restore(s.accumulators, s.nonfinite_samples);
   tiles = std::move(s.tiles);
 }
@@ -192,7 +197,8 @@ int run_render(const RenderArgs& a) {
     std::filesystem::remove(state_path(output), ec);  // finished: nothing left to resume
   } else if (tiles.max_done() > 0) {
     save(output, a, setup, tiles, fingerprint, Snapshot{true, false});
-    fmt::print(stderr, "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
+    fmt::print(stderr,
+               "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
                output, tiles.min_done(), spp,
                tiles.max_done() != tiles.min_done() ? fmt::format(" (up to {} in some tiles)", tiles.max_done()) : "",
                state_path(output));
@@ -204,7 +210,9 @@ int run_render(const RenderArgs& a) {
     fmt::print("{}: {:.2f} s ({:.2f} s render{}), {} spp, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
                seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "", spp, cam,
                cam ? 100.0 * lost / cam : 0.0, render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
-               counters.nonfinite_samples ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load()) : "");
+               counters.nonfinite_samples
+                   ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load())
+                   : "");
   if (!a.stats.empty())
     write_stats(a, {{"scene", a.scene},
                     {"output", output},
@@ -263,23 +271,30 @@ CommandRunner add_render_command(CLI::App& app) {
   CLI::App* c = app.add_subcommand("render", "Render a pbrt-v4 scene file");
   c->footer(kRenderFooter);
   c->add_option("scene", args->scene, "Scene file (pbrt-v4 text format)")->required();
-  c->add_option("-o,--output", args->output, "Output image: .exr (linear float) or .png (sRGB 8-bit); default: the Film's filename")
+  c->add_option("-o,--output", args->output,
+                "Output image: .exr (linear float) or .png (sRGB 8-bit); default: the Film's filename")
       ->check(validator(check_output_extension, "PATH"));
-  c->add_option("--spp", args->spp, "Samples per pixel (overrides the Sampler's pixelsamples)")->check(CLI::Range(1, 1 << 24));
+  c->add_option("--spp", args->spp, "Samples per pixel (overrides the Sampler's pixelsamples)")
+      ->check(CLI::Range(1, 1 << 24));
   c->add_option("--resolution", args->resolution, "Image size WxH (overrides the Film's xresolution/yresolution)")
       ->check(validator(parse_resolution, "WxH"));
   c->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  c->add_option("--seed", args->seed, "Sampler seed; the same seed gives the same image for any thread count")->check(CLI::NonNegativeNumber);
+  c->add_option("--seed", args->seed, "Sampler seed; the same seed gives the same image for any thread count")
+      ->check(CLI::NonNegativeNumber);
   c->add_option("--crop", args->crop, "Render only x0,x1,y0,y1 (fractions of the image, as pbrt's cropwindow)")
       ->check(validator(parse_crop, "X0,X1,Y0,Y1"));
-  c->add_option("--camera", args->camera,
-                "Replace the scene's camera with a Camera directive, e.g. 'Camera \"navarro\" \"float accommodation\" 2'");
+  c->add_option(
+      "--camera", args->camera,
+      "Replace the scene's camera with a Camera directive, e.g. 'Camera \"navarro\" \"float accommodation\" 2'");
   c->add_flag("-q,--quiet", args->quiet, "No progress line, summary or warnings");
-  c->add_flag("--strict", args->strict, "Treat warnings (unsupported but ignorable input) as errors: nothing is rendered");
+  c->add_flag("--strict", args->strict,
+              "Treat warnings (unsupported but ignorable input) as errors: nothing is rendered");
   c->add_option("--stats", args->stats, "Write render statistics as JSON to this file");
-  c->add_option("--max-memory", args->max_memory_gib, "Refuse renders predicted to need more GiB (default: 3/4 of RAM)");
+  c->add_option("--max-memory", args->max_memory_gib,
+                "Refuse renders predicted to need more GiB (default: 3/4 of RAM)");
   c->add_option("--checkpoint", args->checkpoint,
-                "Every SECONDS (0: after every pass), write the image so far to the output and its resumable state to OUTPUT.state")
+                "Every SECONDS (0: after every pass), write the image so far to the output and its resumable state to "
+                "OUTPUT.state")
       ->check(CLI::Range(0.0, 1e9));
   c->add_flag("--resume", args->resume, "Continue the render saved in OUTPUT.state (same scene and options)");
   c->add_option("--pass-samples", args->pass_samples,

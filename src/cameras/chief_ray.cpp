@@ -17,8 +17,8 @@ optics::Prescription with_extended_apertures(const optics::Prescription& p) {
     for (int j : {i - 1, i + 1}) {
       if (j < 0 || j >= n - 1) continue;  // the retina does not bound a lens
       const optics::Surface& t = p.surfaces[static_cast<size_t>(j)];
-      const double reach = t.limited() && t.role == optics::SurfaceRole::Stop ? t.semi_diameter_mm
-                                                                               : t.profile.max_height();
+      const double reach =
+          t.limited() && t.role == optics::SurfaceRole::Stop ? t.semi_diameter_mm : t.profile.max_height();
       const double probe = std::fmin(h, reach);
       const double meet = j < i ? optics::meeting_height(t.profile, z[static_cast<size_t>(j)], s.profile,
                                                          z[static_cast<size_t>(i)], probe)
@@ -31,8 +31,8 @@ optics::Prescription with_extended_apertures(const optics::Prescription& p) {
   return out;
 }
 
-optics::TraceResult trace_towards_plane(const optics::CompiledSystem& system, const glm::dvec3& from,
-                                        double q, double y, double z_plane, int last) {
+optics::TraceResult trace_towards_plane(const optics::CompiledSystem& system, const glm::dvec3& from, double q,
+                                        double y, double z_plane, int last) {
   const optics::Ray ray{from, glm::dvec3(q, y, z_plane) - from};
   return system.trace_range(ray, system.image_index() - 1, last);
 }
@@ -56,8 +56,8 @@ std::optional<double> stop_height(const optics::CompiledSystem& system, const gl
 
 }  // namespace
 
-std::optional<double> aim_chief_ray(const optics::CompiledSystem& system, const glm::dvec3& from,
-                                    double z_plane, double q_guess) {
+std::optional<double> aim_chief_ray(const optics::CompiledSystem& system, const glm::dvec3& from, double z_plane,
+                                    double q_guess) {
   // Bracket the root by stepping away from the guess (towards lower |g| first; the stop height
   // normally grows with q), then bisect: bisection cannot jump into a region where rays are
   // lost the way a secant step can.

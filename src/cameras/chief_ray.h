@@ -22,12 +22,12 @@ optics::Prescription with_extended_apertures(const optics::Prescription& p);
 
 // A ray from `from` through the sampling-plane point (q, y, z_plane), traced in reverse from the
 // surface just in front of the image to `last` (0 = out into object space).
-optics::TraceResult trace_towards_plane(const optics::CompiledSystem& system, const glm::dvec3& from,
-                                        double q, double y, double z_plane, int last = 0);
+optics::TraceResult trace_towards_plane(const optics::CompiledSystem& system, const glm::dvec3& from, double q,
+                                        double y, double z_plane, int last = 0);
 
 // q of the chief ray from a retina point on the +x meridian (from.y == 0), starting the search
 // at q_guess; nullopt when no ray from `from` reaches the stop plane near its centre.
-std::optional<double> aim_chief_ray(const optics::CompiledSystem& system, const glm::dvec3& from,
-                                    double z_plane, double q_guess);
+std::optional<double> aim_chief_ray(const optics::CompiledSystem& system, const glm::dvec3& from, double z_plane,
+                                    double q_guess);
 
 }  // namespace eyetrace

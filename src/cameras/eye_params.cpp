@@ -39,7 +39,8 @@ void read_retina(const ParameterList& params, optics::EyeOptions& o) {
     const double r = get_double(params, "retinaradius", 0.0);
     if (!std::isfinite(r) || std::abs(r) < 1.0 || std::abs(r) > 1000.0)
       params.fail("retinaradius", fmt::format("{} mm is not a retina radius; give its magnitude in [1, 1000] mm "
-                                              "(the retina always curves towards the lens)", r));
+                                              "(the retina always curves towards the lens)",
+                                              r));
     if (shape == "flat") params.fail("retinaradius", "a flat retina has no radius; drop one of the two");
     o.retina_radius_mm = -std::abs(r);  // optics convention: centre of curvature in front
     return;
@@ -47,7 +48,8 @@ void read_retina(const ParameterList& params, optics::EyeOptions& o) {
   if (shape == "flat") o.retina_radius_mm = 0.0;
   if (shape == "curved" && !has_curved_retina(o))
     params.fail("retina", fmt::format("eye model '{}' has a flat retina; give \"float retinaradius\" (mm) to "
-                                      "curve it", o.model));
+                                      "curve it",
+                                      o.model));
 }
 
 }  // namespace
@@ -121,8 +123,8 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& par
     for (int i = 0; i < 8; ++i) {
       const double from_vertex_mm = focus_m * 1000.0 - p.axial_length_mm();
       if (!(from_vertex_mm > 0.0))
-        params.fail("focusdistance", fmt::format("{} m lies inside the lens ({:.4g} mm long)", focus_m,
-                                                 p.axial_length_mm()));
+        params.fail("focusdistance",
+                    fmt::format("{} m lies inside the lens ({:.4g} mm long)", focus_m, p.axial_length_mm()));
       optics::set_refraction(p, -1000.0 / from_vertex_mm);
     }
     optics::validate(p);

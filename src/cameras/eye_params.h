@@ -6,9 +6,9 @@
 #include <string>
 
 #include "cameras/lens_system_camera.h"
-#include "scene/params.h"
 #include "optics/eye_models.h"
 #include "optics/prescription.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 
@@ -16,7 +16,7 @@ namespace eyetrace {
 inline constexpr double kDefaultPupilDiameter_mm = 4.0;
 inline constexpr double kDefaultEyeFov_deg = 60.0;
 inline constexpr double kDefaultApertureDiameter_mm = 1.0;  // pbrt-v4 "realistic"
-inline constexpr double kDefaultFocusDistance = 10.0;      // pbrt-v4 "realistic", scene units (m)
+inline constexpr double kDefaultFocusDistance = 10.0;       // pbrt-v4 "realistic", scene units (m)
 inline constexpr double kDefaultFilmDiagonal_mm = 35.0;     // pbrt-v4 Film "diagonal"
 
 // The eye of camera `camera_name` ("eye" reads "string model"; "navarro" etc. are the model).

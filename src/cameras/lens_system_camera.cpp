@@ -38,8 +38,10 @@ optics::Prescription aiming_prescription(const optics::Prescription& p) {
 RetinaSurface retina_of(const optics::Prescription& p, const optics::CompiledSystem& system) {
   const optics::Surface& image = p.surfaces.back();
   if (!image.profile.is_flat() && image.profile.conic != 0.0)
-    throw optics::OpticsError(fmt::format("the image surface '{}' is a conic (Q = {}); the camera supports "
-                                          "a sphere or a plane", image.name, image.profile.conic));
+    throw optics::OpticsError(
+        fmt::format("the image surface '{}' is a conic (Q = {}); the camera supports "
+                    "a sphere or a plane",
+                    image.name, image.profile.conic));
   return {system.vertex_z(system.image_index()), image.profile.is_flat() ? 0.0 : image.profile.curvature};
 }
 
@@ -73,9 +75,10 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   retina_ = retina_of(prescription_, system_);
   z_plane_ = system_.vertex_z(system_.image_index() - 1);
   if (retina_.vertex_z_mm - z_plane_ < kMinPlaneGap_mm)
-    throw optics::OpticsError(fmt::format("the image surface is only {:.4g} mm behind the last surface; the "
-                                          "camera needs at least {} mm", retina_.vertex_z_mm - z_plane_,
-                                          kMinPlaneGap_mm));
+    throw optics::OpticsError(
+        fmt::format("the image surface is only {:.4g} mm behind the last surface; the "
+                    "camera needs at least {} mm",
+                    retina_.vertex_z_mm - z_plane_, kMinPlaneGap_mm));
   const double max_arc = arc_limit(retina_, z_plane_);
 
   if (settings_.film_half_mm > 0.0) {
@@ -189,8 +192,7 @@ std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs) 
 }
 
 // Bit-identical to generate_ray per sample; the batch trace overlaps the rays' latency chains.
-void LensSystemCamera::generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays,
-                                     size_t count) const {
+void LensSystemCamera::generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const {
   constexpr size_t kBatch = 16;
   PendingRay pending[kBatch];
   optics::Ray traced[kBatch];
@@ -215,11 +217,10 @@ std::string LensSystemCamera::to_string() const {
       settings_.film_half_mm > 0.0
           ? fmt::format("film {:.4g} mm (shorter half-axis)", settings_.film_half_mm)
           : fmt::format("fov {} deg, mapping {}", settings_.fov_deg, eyetrace::to_string(settings_.mapping));
-  return fmt::format("{} camera: {}{}, stop {:.4g} mm, {}, retina {}", settings_.name, prescription_.name,
-                     prescription_.variant.empty() ? "" : " [" + prescription_.variant + "]",
-                     prescription_.stop_diameter_mm(), field,
-                     retina_.curvature == 0.0 ? std::string("flat")
-                                              : fmt::format("radius {:.4g} mm", 1.0 / retina_.curvature));
+  return fmt::format(
+      "{} camera: {}{}, stop {:.4g} mm, {}, retina {}", settings_.name, prescription_.name,
+      prescription_.variant.empty() ? "" : " [" + prescription_.variant + "]", prescription_.stop_diameter_mm(), field,
+      retina_.curvature == 0.0 ? std::string("flat") : fmt::format("radius {:.4g} mm", 1.0 / retina_.curvature));
 }
 
 }  // namespace eyetrace
@@ -242,9 +243,7 @@ std::unique_ptr<Camera> make_camera(const CameraContext& ctx, const optics::Pres
 
 }  // namespace
 
-std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx) {
-  return create_named_eye_camera("eye")(ctx);
-}
+std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx) { return create_named_eye_camera("eye")(ctx); }
 
 CameraFactory create_named_eye_camera(std::string model) {
   return [model](const CameraContext& ctx) -> std::unique_ptr<Camera> {

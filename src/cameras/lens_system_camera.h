@@ -23,9 +23,9 @@
 #include "cameras/retina_mapping.h"
 #include "cameras/retina_surface.h"
 #include "core/camera.h"
-#include "scene/registry.h"
 #include "optics/prescription.h"
 #include "optics/sequential_trace.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 
@@ -33,16 +33,16 @@ class LensSystemCamera : public Camera {
  public:
   struct Settings {
     FieldMapping mapping = FieldMapping::Angle;
-    double fov_deg = 60.0;         // full field across the shorter image axis
-    double film_half_mm = 0.0;     // > 0: a physical flat film whose shorter half-axis is this
+    double fov_deg = 60.0;      // full field across the shorter image axis
+    double film_half_mm = 0.0;  // > 0: a physical flat film whose shorter half-axis is this
     double scene_units_per_mm = 1e-3;
-    std::string name = "eye";      // for to_string()
+    std::string name = "eye";  // for to_string()
     PupilSampler::Options pupil;
   };
   // Throws optics::OpticsError when the system cannot be used (invalid, or no ray passes at the
   // image centre) and FieldError (below) when the field of view cannot be mapped.
-  LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera,
-                   IVec2 resolution, const Settings& settings);
+  LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera, IVec2 resolution,
+                   const Settings& settings);
 
   std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
   void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const override;
@@ -70,10 +70,10 @@ class LensSystemCamera : public Camera {
 
  private:
   struct PendingRay {
-    optics::Ray ray;       // from the retina towards the sampled plane point (system frame)
-    glm::dvec3 d_local;    // the same direction in the meridian frame, unnormalised
-    glm::dvec2 normal;     // retina normal in the meridian frame
-    double area = 0.0;     // sampled area of the plane (1 / density)
+    optics::Ray ray;     // from the retina towards the sampled plane point (system frame)
+    glm::dvec3 d_local;  // the same direction in the meridian frame, unnormalised
+    glm::dvec2 normal;   // retina normal in the meridian frame
+    double area = 0.0;   // sampled area of the plane (1 / density)
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
   std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
@@ -104,9 +104,9 @@ class FieldError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx);           // Camera "eye" "string model" ...
-CameraFactory create_named_eye_camera(std::string model);                       // Camera "navarro" ...
-std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx);     // pbrt-v4 Camera "realistic"
+std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx);        // Camera "eye" "string model" ...
+CameraFactory create_named_eye_camera(std::string model);                   // Camera "navarro" ...
+std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx);  // pbrt-v4 Camera "realistic"
 // For `eyetrace optics` and tests: the prescription a Camera directive describes (eye cameras
 // and "realistic"; lens files relative to search_dir). Errors are SceneErrors naming the
 // parameter.

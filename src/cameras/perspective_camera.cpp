@@ -10,7 +10,9 @@ Vec4 default_screen_window(IVec2 res, float frame) {
 }
 
 PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s)
-    : world_from_camera_(world_from_camera), resolution_(resolution), s_(s),
+    : world_from_camera_(world_from_camera),
+      resolution_(resolution),
+      s_(s),
       tan_half_fov_(std::tan(radians(s.fov_deg) / 2.f)) {
   if (s_.screen_window == Vec4(0.f)) s_.screen_window = default_screen_window(resolution);
 }
@@ -39,8 +41,8 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs)
 }
 
 std::string PerspectiveCamera::to_string() const {
-  return fmt::format("perspective camera: fov {} deg, lens radius {}, focal distance {}", s_.fov_deg,
-                     s_.lens_radius, s_.focal_distance);
+  return fmt::format("perspective camera: fov {} deg, lens radius {}, focal distance {}", s_.fov_deg, s_.lens_radius,
+                     s_.focal_distance);
 }
 
 static PerspectiveCamera::Settings read_settings(const CameraContext& ctx) {
@@ -76,8 +78,6 @@ std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx) {
   return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, s);
 }
 
-std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) {
-  return create_perspective_camera(ctx);
-}
+std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) { return create_perspective_camera(ctx); }
 
 }  // namespace eyetrace

@@ -11,10 +11,10 @@ namespace eyetrace {
 class PerspectiveCamera : public Camera {
  public:
   struct Settings {
-    float fov_deg = 90.f;       // of the shorter image axis, as pbrt
-    Vec4 screen_window{0.f};        // x0 x1 y0 y1; zero means "from the aspect ratio"
-    float lens_radius = 0.f;        // scene units
-    float focal_distance = 1e6f;    // scene units, along the camera's z axis
+    float fov_deg = 90.f;         // of the shorter image axis, as pbrt
+    Vec4 screen_window{0.f};      // x0 x1 y0 y1; zero means "from the aspect ratio"
+    float lens_radius = 0.f;      // scene units
+    float focal_distance = 1e6f;  // scene units, along the camera's z axis
   };
   PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s);
   std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;

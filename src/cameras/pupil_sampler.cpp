@@ -116,7 +116,8 @@ struct RegionTracer {
     }
     std::vector<double> out(r);
     for (int j = 0; j < n; ++j)
-      out[static_cast<size_t>(j)] *= std::fmax(factor[static_cast<size_t>(j)], factor[static_cast<size_t>((j - 1 + n) % n)]);
+      out[static_cast<size_t>(j)] *=
+          std::fmax(factor[static_cast<size_t>(j)], factor[static_cast<size_t>((j - 1 + n) % n)]);
     return out;
   }
 
@@ -204,8 +205,14 @@ std::vector<double> centres_of(const std::vector<Node>& nodes) {
       continue;
     }
     for (size_t d = 1; d < nodes.size(); ++d) {
-      if (i >= d && nodes[i - d].centre) { c[i] = *nodes[i - d].centre; break; }
-      if (i + d < nodes.size() && nodes[i + d].centre) { c[i] = *nodes[i + d].centre; break; }
+      if (i >= d && nodes[i - d].centre) {
+        c[i] = *nodes[i - d].centre;
+        break;
+      }
+      if (i + d < nodes.size() && nodes[i + d].centre) {
+        c[i] = *nodes[i + d].centre;
+        break;
+      }
     }
   }
   return c;
@@ -245,7 +252,8 @@ PupilSampler::PupilSampler(const optics::CompiledSystem& system, const RetinaSur
       // second difference bounds that bulge for a quadratic change (by a factor 4 at the
       // quarter points).
       const double bulge = std::abs(r0 + r1 - 2.0 * mid[j]);
-      radii[j] = std::nextafter(static_cast<float>((r + bulge) * (1.0 + o.relative_margin) + o.absolute_margin_mm), 1e30f);
+      radii[j] =
+          std::nextafter(static_cast<float>((r + bulge) * (1.0 + o.relative_margin) + o.absolute_margin_mm), 1e30f);
     }
     build_distribution(i);
   }

@@ -31,8 +31,8 @@ namespace eyetrace {
 class PupilSampler {
  public:
   struct Options {
-    int intervals = 128;      // retina intervals over [0, max_arc]
-    int directions = 64;      // polygon vertices (a multiple of 4, at most 256)
+    int intervals = 128;  // retina intervals over [0, max_arc]
+    int directions = 64;  // polygon vertices (a multiple of 4, at most 256)
     double relative_margin = 0.002;
     double absolute_margin_mm = 2e-4;
     double scan_half_width_mm = 10.0;  // meridian scan used when the chief ray is blocked
@@ -40,8 +40,8 @@ class PupilSampler {
 
   PupilSampler() = default;
   // chief (may be empty) gives starting points; max_arc_mm is the farthest retina arc needed.
-  PupilSampler(const optics::CompiledSystem& system, const RetinaSurface& retina, double z_plane,
-               double max_arc_mm, const FieldAngleTable& chief, const Options& options);
+  PupilSampler(const optics::CompiledSystem& system, const RetinaSurface& retina, double z_plane, double max_arc_mm,
+               const FieldAngleTable& chief, const Options& options);
 
   double z_plane() const { return z_plane_; }
   double max_arc_mm() const { return max_arc_; }
@@ -56,8 +56,8 @@ class PupilSampler {
     const Region& r = regions_[static_cast<size_t>(i)];
     if (r.area <= 0.0) return false;
     const double t = x - i;
-    const double cx = centres_[static_cast<size_t>(i)] + t * (centres_[static_cast<size_t>(i) + 1] -
-                                                             centres_[static_cast<size_t>(i)]);
+    const double cx = centres_[static_cast<size_t>(i)] +
+                      t * (centres_[static_cast<size_t>(i) + 1] - centres_[static_cast<size_t>(i)]);
     // Pick a fan triangle by area, then a uniform point in it: with s = sqrt(u), the point
     // c + s ((1 - v) V_j + v V_j+1) is uniform in the triangle (c, V_j, V_j+1).
     const float* cdf = &cdf_[static_cast<size_t>(i) * directions_];
@@ -95,13 +95,13 @@ class PupilSampler {
   double inv_step_ = 0.0;
   int intervals_ = 0;
   int directions_ = 0;
-  std::vector<double> cos_, sin_;      // polygon directions
-  std::vector<double> centres_;        // per node: x of the region centre (y = 0 by symmetry)
-  std::vector<Region> regions_;        // per interval
-  std::vector<float> radii_, cdf_;     // per interval x direction
-  std::vector<float> inv_width_;       // 1 / (cdf[j] - cdf[j-1]), 0 for empty triangles
+  std::vector<double> cos_, sin_;   // polygon directions
+  std::vector<double> centres_;     // per node: x of the region centre (y = 0 by symmetry)
+  std::vector<Region> regions_;     // per interval
+  std::vector<float> radii_, cdf_;  // per interval x direction
+  std::vector<float> inv_width_;    // 1 / (cdf[j] - cdf[j-1]), 0 for empty triangles
   static constexpr int kGuideSize = 256;
-  std::vector<std::uint8_t> guide_;    // per interval x kGuideSize: first triangle whose cdf > g / size
+  std::vector<std::uint8_t> guide_;  // per interval x kGuideSize: first triangle whose cdf > g / size
 };
 
 }  // namespace eyetrace

@@ -31,9 +31,9 @@ size_t interval_of(const std::vector<double>& xs, double x) {
 
 const char* to_string(FieldMapping m) {
   switch (m) {
-  case FieldMapping::Angle: return "angle";
-  case FieldMapping::Flat: return "flat";
-  case FieldMapping::Retina: return "retina";
+    case FieldMapping::Angle: return "angle";
+    case FieldMapping::Flat: return "flat";
+    case FieldMapping::Retina: return "retina";
   }
   return "?";
 }
@@ -47,8 +47,8 @@ bool parse_field_mapping(const std::string& text, FieldMapping* out) {
   return false;
 }
 
-FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const RetinaSurface& retina,
-                                 double z_plane, double angle_limit_deg, double max_arc_mm) {
+FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const RetinaSurface& retina, double z_plane,
+                                 double angle_limit_deg, double max_arc_mm) {
   arcs_ = {0.0};
   angles_ = {0.0};
   chief_q_ = {0.0};
@@ -97,10 +97,10 @@ RetinaMapping::RetinaMapping(FieldMapping kind, double half_fov_deg, const Field
   }
   const double a = table.arc_for_angle(half_fov_deg);
   if (a < 0.0)
-    throw optics::OpticsError(fmt::format(
-        "the chief ray of this eye reaches only {:.2f} degrees from the axis, so a field of view of "
-        "{:.4g} degrees cannot set the scale of mapping \"{}\"; use a smaller fov or mapping \"angle\"",
-        table.max_angle_deg(), 2.0 * half_fov_deg, to_string(kind)));
+    throw optics::OpticsError(
+        fmt::format("the chief ray of this eye reaches only {:.2f} degrees from the axis, so a field of view of "
+                    "{:.4g} degrees cannot set the scale of mapping \"{}\"; use a smaller fov or mapping \"angle\"",
+                    table.max_angle_deg(), 2.0 * half_fov_deg, to_string(kind)));
   edge_ = kind == FieldMapping::Retina ? a : retina.point(a).x;
 }
 

@@ -64,8 +64,7 @@ class RetinaMapping {
   // half_fov_deg (angle), or at the height/arc of the chief ray at that angle (flat, retina).
   // Throws optics::OpticsError when the chief ray does not reach half_fov_deg and the mapping
   // needs it (flat, retina).
-  RetinaMapping(FieldMapping kind, double half_fov_deg, const FieldAngleTable& table,
-                const RetinaSurface& retina);
+  RetinaMapping(FieldMapping kind, double half_fov_deg, const FieldAngleTable& table, const RetinaSurface& retina);
   // A physical flat film: screen radius 1 at lateral height half_extent_mm.
   RetinaMapping(double half_extent_mm, const RetinaSurface& retina);
 
@@ -74,21 +73,19 @@ class RetinaMapping {
   // (beyond the traced field or the retina's reach). table: the one given at construction.
   double arc_for_screen_radius(double s, const FieldAngleTable& table) const {
     switch (kind_) {
-    case FieldMapping::Angle: return table.arc_for_angle(s * edge_);
-    case FieldMapping::Retina: return s * edge_;
-    case FieldMapping::Flat: {
-      const double h = s * edge_;
-      return h * std::abs(retina_curvature_) < 1.0 ? arc_for_height_(h) : -1.0;
-    }
+      case FieldMapping::Angle: return table.arc_for_angle(s * edge_);
+      case FieldMapping::Retina: return s * edge_;
+      case FieldMapping::Flat: {
+        const double h = s * edge_;
+        return h * std::abs(retina_curvature_) < 1.0 ? arc_for_height_(h) : -1.0;
+      }
     }
     return -1.0;
   }
   double edge() const { return edge_; }  // degrees (angle) or mm (flat, retina)
 
  private:
-  double arc_for_height_(double h) const {
-    return RetinaSurface{0.0, retina_curvature_}.arc_for_height(h);
-  }
+  double arc_for_height_(double h) const { return RetinaSurface{0.0, retina_curvature_}.arc_for_height(h); }
   FieldMapping kind_ = FieldMapping::Angle;
   double edge_ = 1.0;
   double retina_curvature_ = 0.0;

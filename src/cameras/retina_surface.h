@@ -21,9 +21,7 @@ struct RetinaSurface {
 
   // Largest arc length on the surface the optics library models: a sphere's sequential sheet
   // is the hemisphere on the vertex side, so the retina ends at its equator.
-  double max_arc_mm() const {
-    return curvature == 0.0 ? 1e300 : 0.5 * kPiDouble / std::abs(curvature);
-  }
+  double max_arc_mm() const { return curvature == 0.0 ? 1e300 : 0.5 * kPiDouble / std::abs(curvature); }
   // (height from the axis, z) of the point at arc length a from the vertex along the meridian.
   glm::dvec2 point(double a) const {
     if (curvature == 0.0) return {a, vertex_z_mm};
@@ -52,7 +50,8 @@ class RetinaPointTable {
  public:
   RetinaPointTable() = default;
   RetinaPointTable(const RetinaSurface& retina, double max_arc_mm, int nodes = 2048)
-      : retina_(retina), inv_step_(nodes / std::fmax(max_arc_mm, 1e-9)),
+      : retina_(retina),
+        inv_step_(nodes / std::fmax(max_arc_mm, 1e-9)),
         radius_(retina.curvature == 0.0 ? 0.0 : 1.0 / retina.curvature) {
     for (int i = 0; i <= nodes; ++i) {
       const double phi = retina.curvature * i / inv_step_;

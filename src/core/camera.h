@@ -12,8 +12,8 @@
 namespace eyetrace {
 
 struct CameraSample {
-  Vec2 p_film{0.f};        // continuous raster position on the full film, in pixels
-  Vec2 p_lens{0.5f};       // [0,1)^2 sample of the lens / pupil
+  Vec2 p_film{0.f};           // continuous raster position on the full film, in pixels
+  Vec2 p_lens{0.5f};          // [0,1)^2 sample of the lens / pupil
   float wavelength_u = 0.5f;  // [0,1) sample for spectral cameras (unused by RGB cameras)
   float time = 0.f;
   float filter_weight = 1.f;

@@ -21,8 +21,7 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f) {
   integral_ = float(total / double(n));
 
   cdf_.resize(n + 1);
-  for (size_t i = 0; i <= n; ++i)
-    cdf_[i] = total > 0.0 ? float(running[i] / total) : float(double(i) / double(n));
+  for (size_t i = 0; i <= n; ++i) cdf_[i] = total > 0.0 ? float(running[i] / total) : float(double(i) / double(n));
   cdf_[n] = 1.f;
 }
 

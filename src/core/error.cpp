@@ -24,15 +24,17 @@ std::string Diagnostic::to_string() const {
 }
 
 bool Diagnostic::operator==(const Diagnostic& o) const {
-  return loc.file == o.loc.file && loc.line == o.loc.line && loc.column == o.loc.column &&
-         parameter == o.parameter && severity == o.severity && message == o.message;
+  return loc.file == o.loc.file && loc.line == o.loc.line && loc.column == o.loc.column && parameter == o.parameter &&
+         severity == o.severity && message == o.message;
 }
 
 void DiagnosticList::add(const Diagnostic& d) {
   for (const Diagnostic& k : kept_)
     if (k == d) return;
-  if (kept_.size() < kMaxErrors) kept_.push_back(d);
-  else ++suppressed_;
+  if (kept_.size() < kMaxErrors)
+    kept_.push_back(d);
+  else
+    ++suppressed_;
 }
 
 void DiagnosticList::add_all(const std::vector<Diagnostic>& ds) {
@@ -43,7 +45,9 @@ void DiagnosticList::throw_if_any() const {
   if (kept_.empty()) return;
   std::vector<Diagnostic> all = kept_;
   if (suppressed_ > 0)
-    all.push_back(Diagnostic{{}, "", Severity::Error,
+    all.push_back(Diagnostic{{},
+                             "",
+                             Severity::Error,
                              fmt::format("{} more error{} not shown (at most {} are listed)", suppressed_,
                                          suppressed_ == 1 ? "" : "s", kMaxErrors)});
   throw SceneError(std::move(all));
@@ -82,7 +86,8 @@ void set_warnings_fatal(bool fatal) { g_warnings_fatal = fatal; }
 int warning_count() { return g_warning_count; }
 
 void warn(const SourceLoc& loc, const std::string& message) {
-  if (g_warnings_fatal) throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
+  if (g_warnings_fatal)
+    throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
   std::string text = Diagnostic{loc, "", Severity::Warning, message}.to_string();
   std::lock_guard<std::mutex> lock(g_warn_mutex);
   static std::set<std::string> seen;

@@ -28,8 +28,7 @@ class SceneError : public std::runtime_error {
 [[noreturn]] void throw_error(const SourceLoc& loc, const std::string& message);
 [[noreturn]] void throw_error(const std::string& message);
 // An error about one scene parameter or command-line option: `parameter` is kept as a field.
-[[noreturn]] void throw_parameter_error(const SourceLoc& loc, const std::string& parameter,
-                                        const std::string& message);
+[[noreturn]] void throw_parameter_error(const SourceLoc& loc, const std::string& parameter, const std::string& message);
 // Warnings go to stderr (once per distinct text) unless warnings are silenced by --quiet.
 // With strict warnings (--strict) a warning is thrown as an error instead.
 void warn(const SourceLoc& loc, const std::string& message);

@@ -16,7 +16,7 @@ struct SurfaceInteraction {
   Vec3 ns{0.f, 0.f, 1.f};  // shading normal (interpolated), same hemisphere as n
   Vec2 uv{0.f};
   Vec3 dpdu{1.f, 0.f, 0.f}, dpdv{0.f, 1.f, 0.f};
-  Vec3 wo{0.f};            // unit, towards where the ray came from
+  Vec3 wo{0.f};  // unit, towards where the ray came from
   float t = 0.f;
   float time = 0.f;
   const Material* material = nullptr;  // null: an interface that only bounds a medium; pass through

@@ -15,9 +15,9 @@ struct LightSampleContext {
 };
 
 struct LightLiSample {
-  RGB L{0.f};      // incident radiance arriving at ctx.p from the light
-  Vec3 wi{0.f};    // unit direction from ctx.p towards the light
-  float pdf = 0.f; // solid-angle density (1 for delta lights: a discrete choice)
+  RGB L{0.f};         // incident radiance arriving at ctx.p from the light
+  Vec3 wi{0.f};       // unit direction from ctx.p towards the light
+  float pdf = 0.f;    // solid-angle density (1 for delta lights: a discrete choice)
   Vec3 p_light{0.f};  // point on the light, for the shadow ray (far away for distant/infinite)
   Vec3 n_light{0.f};
   Vec3 p_light_error{0.f};  // rounding-error bound of p_light (area lights; zero for the others)

@@ -1,10 +1,10 @@
 // Vector types and small numeric helpers shared by the renderer (float) side.
 // The optics library uses double (glm::dvec3) and converts once where a ray leaves the eye.
 #pragma once
-#include <glm/glm.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <limits>
 
 #include "core/constants.h"
@@ -20,7 +20,6 @@ using Mat4 = glm::mat4;
 // The renderer is RGB (linear Rec.709 primaries); spectral sampling can come later through
 // CameraSample::wavelength_u without changing interfaces.
 using RGB = glm::vec3;
-
 
 inline float radians(float deg) { return deg * (kPi / 180.f); }
 inline float luminance(const RGB& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
@@ -50,8 +49,14 @@ struct Frame {
 
 struct Bounds3 {
   Vec3 lo{kInfinity}, hi{-kInfinity};
-  void extend(const Vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-  void extend(const Bounds3& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+  void extend(const Vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  void extend(const Bounds3& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
   bool empty() const { return lo.x > hi.x; }
   Vec3 center() const { return 0.5f * (lo + hi); }
   float radius() const { return empty() ? 0.f : 0.5f * glm::length(hi - lo); }

@@ -30,8 +30,10 @@ inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& n,
   if (glm::dot(w, n) < 0.f) offset = -offset;
   Vec3 po = p + offset;
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0.f) po[i] = next_float_up(po[i]);
-    else if (offset[i] < 0.f) po[i] = next_float_down(po[i]);
+    if (offset[i] > 0.f)
+      po[i] = next_float_up(po[i]);
+    else if (offset[i] < 0.f)
+      po[i] = next_float_down(po[i]);
   }
   return po;
 }
@@ -40,7 +42,9 @@ inline Ray spawn_ray(const Vec3& p, const Vec3& p_error, const Vec3& n, const Ve
   return Ray{offset_ray_origin(p, p_error, n, d), d, kInfinity, time};
 }
 
-inline Ray spawn_ray(const SurfaceInteraction& si, const Vec3& d) { return spawn_ray(si.p, si.p_error, si.n, d, si.time); }
+inline Ray spawn_ray(const SurfaceInteraction& si, const Vec3& d) {
+  return spawn_ray(si.p, si.p_error, si.n, d, si.time);
+}
 
 // A ray from one surface point to another: both ends are offset off their surfaces (the
 // target towards the origin), and tmax = 1 - kShadowEpsilon stops short of the target.

@@ -15,8 +15,8 @@ struct ShapeSample {
   Vec3 p{0.f};
   Vec3 n{0.f, 0.f, 1.f};  // oriented like the shape's geometric normal (ReverseOrientation applied)
   Vec2 uv{0.f};
-  float pdf_area = 0.f;   // density with respect to surface area
-  Vec3 p_error{0.f};      // rounding-error bound of p, as SurfaceInteraction::p_error (last: aggregate order)
+  float pdf_area = 0.f;  // density with respect to surface area
+  Vec3 p_error{0.f};     // rounding-error bound of p, as SurfaceInteraction::p_error (last: aggregate order)
 };
 
 class Shape {
@@ -26,8 +26,7 @@ class Shape {
   virtual unsigned attach(RTCDevice device, RTCScene scene) const = 0;
   // The hit at distance `t` on primitive `prim_id` with Embree's barycentrics (u, v) and
   // geometric normal `ng` (object space of the geometry, as Embree reports it).
-  virtual SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv,
-                                         Vec3 ng) const = 0;
+  virtual SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const = 0;
   virtual float area() const = 0;
   virtual ShapeSample sample_area(Vec2 u) const = 0;
   virtual Bounds3 bounds() const = 0;

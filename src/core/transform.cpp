@@ -41,10 +41,9 @@ Transform rotate(float degrees, const Vec3& axis) {
   Vec3 a = glm::normalize(axis);
   float s = std::sin(radians(degrees)), c = std::cos(radians(degrees));
   // Row-major formula from pbrt; glm indexes [column][row].
-  float r[3][3] = {
-      {a.x * a.x + (1 - a.x * a.x) * c, a.x * a.y * (1 - c) - a.z * s, a.x * a.z * (1 - c) + a.y * s},
-      {a.x * a.y * (1 - c) + a.z * s, a.y * a.y + (1 - a.y * a.y) * c, a.y * a.z * (1 - c) - a.x * s},
-      {a.x * a.z * (1 - c) - a.y * s, a.y * a.z * (1 - c) + a.x * s, a.z * a.z + (1 - a.z * a.z) * c}};
+  float r[3][3] = {{a.x * a.x + (1 - a.x * a.x) * c, a.x * a.y * (1 - c) - a.z * s, a.x * a.z * (1 - c) + a.y * s},
+                   {a.x * a.y * (1 - c) + a.z * s, a.y * a.y + (1 - a.y * a.y) * c, a.y * a.z * (1 - c) - a.x * s},
+                   {a.x * a.z * (1 - c) - a.y * s, a.y * a.z * (1 - c) + a.x * s, a.z * a.z + (1 - a.z * a.z) * c}};
   Mat4 m(1.f);
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 3; ++col) m[col][row] = r[row][col];
@@ -57,8 +56,7 @@ Transform look_at(const Vec3& eye, const Vec3& look, const Vec3& up) {
   dir = glm::normalize(dir);
   Vec3 upn = glm::normalize(up);
   Vec3 right = glm::cross(upn, dir);
-  if (glm::length(right) == 0.f)
-    throw std::domain_error("up vector and viewing direction are parallel");
+  if (glm::length(right) == 0.f) throw std::domain_error("up vector and viewing direction are parallel");
   right = glm::normalize(right);
   Vec3 new_up = glm::cross(dir, right);
   Mat4 world_from_camera(Vec4(right, 0.f), Vec4(new_up, 0.f), Vec4(dir, 0.f), Vec4(eye, 1.f));

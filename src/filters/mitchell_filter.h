@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "core/filter.h"
-#include "scene/params.h"
 #include "filters/filter_sampler.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 

@@ -9,9 +9,12 @@
 namespace eyetrace {
 
 PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name)
-    : Integrator(scene), max_depth_(max_depth), name_(std::move(name)), lights_(scene.lights()),
-      hittable_lights_(std::any_of(scene.lights().begin(), scene.lights().end(),
-                                   [](const auto& l) { return !l->is_delta(); })) {}
+    : Integrator(scene),
+      max_depth_(max_depth),
+      name_(std::move(name)),
+      lights_(scene.lights()),
+      hittable_lights_(
+          std::any_of(scene.lights().begin(), scene.lights().end(), [](const auto& l) { return !l->is_delta(); })) {}
 
 std::string PathIntegrator::to_string() const {
   return fmt::format("{} integrator: maxdepth {}, {} light(s), power light sampling", name_, max_depth_,
@@ -78,8 +81,10 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
       continue;
     }
     if (depth++ == max_depth_) break;
-    if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy))) L += beta * sample_direct(si, *bsdf, sampler, tally);
-    else ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
+    if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy)))
+      L += beta * sample_direct(si, *bsdf, sampler, tally);
+    else
+      ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
     // The next ray could only add emission it finds, and there is none to find.
     if (depth == max_depth_ && !hittable_lights_) break;
 
@@ -112,7 +117,8 @@ static void read_common(const IntegratorContext& ctx) {
   const ParameterList& p = ctx.params;
   bool given = p.has("lightsampler");
   std::string ls = p.get_string("lightsampler", "bvh");
-  if (ls != "power" && ls != "uniform" && ls != "bvh") p.fail("lightsampler", "must be \"bvh\", \"power\" or \"uniform\"");
+  if (ls != "power" && ls != "uniform" && ls != "bvh")
+    p.fail("lightsampler", "must be \"bvh\", \"power\" or \"uniform\"");
   // pbrt-v4's default "bvh" is unbiased like ours; only an explicit request is worth a note.
   if (given && ls != "power") warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
   if (p.get_bool("regularize", false)) warn(p.loc(), "\"regularize\" is not supported; ignored");

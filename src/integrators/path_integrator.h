@@ -2,9 +2,9 @@
 // (power heuristic) between BSDF and light sampling, as pbrt-v4's "path" integrator.
 // "direct" is the same estimator stopped after the first bounce (direct lighting only).
 #pragma once
+#include "integrators/light_sampler.h"
 #include "render/integrator.h"
 #include "scene/registry.h"
-#include "integrators/light_sampler.h"
 
 namespace eyetrace {
 

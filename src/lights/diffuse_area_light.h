@@ -17,9 +17,9 @@
 #include <optional>
 
 #include "core/light.h"
-#include "scene/registry.h"
 #include "core/shape.h"
 #include "lights/rgb_image.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

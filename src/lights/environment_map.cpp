@@ -2,16 +2,14 @@
 
 namespace eyetrace {
 
-EnvironmentMap::EnvironmentMap(RGBImage image, SphereMapping mapping)
-    : image_(std::move(image)), mapping_(mapping) {
+EnvironmentMap::EnvironmentMap(RGBImage image, SphereMapping mapping) : image_(std::move(image)), mapping_(mapping) {
   // Density over the square proportional to luminance times the pixel's solid angle, so
   // that the density per solid angle follows luminance (exactly for equal-area pixels; to
   // within the variation of sin(theta) across a lat-long row).
   std::vector<float> f(image_.pixels.size());
   for (int y = 0; y < image_.height; ++y) {
     float omega = pixel_solid_angle(y);
-    for (int x = 0; x < image_.width; ++x)
-      f[size_t(y) * image_.width + x] = luminance(image_.at(x, y)) * omega;
+    for (int x = 0; x < image_.width; ++x) f[size_t(y) * image_.width + x] = luminance(image_.at(x, y)) * omega;
   }
   distribution_ = PiecewiseConstant2D(f, image_.width, image_.height);
 }

@@ -36,14 +36,14 @@ float UniformInfiniteLight::pdf_li(const LightSampleContext&, const Vec3&, const
   return is_black(L_) ? 0.f : uniform_sphere_pdf();
 }
 
-float UniformInfiniteLight::power() const {
-  return 4.f * kPi * kPi * sqr(scene_radius_) * channel_mean(L_);
-}
+float UniformInfiniteLight::power() const { return 4.f * kPi * kPi * sqr(scene_radius_) * channel_mean(L_); }
 
 void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
 
 ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale)
-    : map_(std::move(map)), world_from_light_(world_from_light), light_from_world_(world_from_light.inverse()),
+    : map_(std::move(map)),
+      world_from_light_(world_from_light),
+      light_from_world_(world_from_light.inverse()),
       scale_(scale) {}
 
 Vec3 ImageInfiniteLight::to_light(const Vec3& w) const {

@@ -14,9 +14,9 @@
 #include <memory>
 
 #include "core/light.h"
-#include "scene/registry.h"
 #include "core/transform.h"
 #include "lights/environment_map.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -35,5 +35,4 @@ float photometric_factor(std::optional<float> target, float emitted_luminance) {
   return std::isfinite(f) ? f : 1.f;
 }
 
-
 }  // namespace eyetrace

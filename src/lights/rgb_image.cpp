@@ -8,9 +8,7 @@
 namespace eyetrace {
 namespace {
 
-float srgb_decode(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_decode(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 bool is_integer_format(const OIIO::TypeDesc& t) {
   return t.basetype != OIIO::TypeDesc::FLOAT && t.basetype != OIIO::TypeDesc::HALF &&
@@ -43,8 +41,8 @@ RGB RGBImage::bilerp(Vec2 st) const {
   int x0 = int(std::floor(x)), y0 = int(std::floor(y));
   float dx = x - float(x0), dy = y - float(y0);
   auto px = [&](int xi, int yi) { return at(std::clamp(xi, 0, width - 1), std::clamp(yi, 0, height - 1)); };
-  return (1.f - dx) * (1.f - dy) * px(x0, y0) + dx * (1.f - dy) * px(x0 + 1, y0) +
-         (1.f - dx) * dy * px(x0, y0 + 1) + dx * dy * px(x0 + 1, y0 + 1);
+  return (1.f - dx) * (1.f - dy) * px(x0, y0) + dx * (1.f - dy) * px(x0 + 1, y0) + (1.f - dx) * dy * px(x0, y0 + 1) +
+         dx * dy * px(x0 + 1, y0 + 1);
 }
 
 std::optional<RGBImage> read_rgb_image(const std::string& path, std::string* error, size_t* non_finite) {

@@ -60,13 +60,14 @@ std::unique_ptr<Light> create_spot_light(const LightContext& ctx) {
   Vec3 to = params.get_point3("to", Vec3(0.f, 0.f, 1.f));
   float cone = params.get_float_in("coneangle", 30.f, 0.f, 180.f);
   float delta = params.get_float_in("conedeltaangle", 5.f, 0.f, 180.f);
-  if (from == to) params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the spot has no direction");
+  if (from == to)
+    params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the spot has no direction");
   if (delta > cone) {
     // pbrt-v4 would take cos of a negative start angle; a falloff across the whole cone is
     // what such a scene means.
     warn(params.find("conedeltaangle") ? params.find("conedeltaangle")->loc : params.loc(),
-         fmt::format("parameter \"conedeltaangle\": {} exceeds \"coneangle\" {}; the falloff starts at the axis",
-                     delta, cone));
+         fmt::format("parameter \"conedeltaangle\": {} exceeds \"coneangle\" {}; the falloff starts at the axis", delta,
+                     cone));
     delta = cone;
   }
   float cos_start = std::cos(radians(cone - delta)), cos_end = std::cos(radians(cone));

@@ -10,8 +10,8 @@
 #include <memory>
 
 #include "core/light.h"
-#include "scene/registry.h"
 #include "core/transform.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 
@@ -19,8 +19,8 @@ class SpotLight : public Light {
  public:
   // `light_from_world` measures angles in the light's own frame (as pbrt-v4 does, so a
   // non-uniform scale in the CTM distorts the cone like it distorts the scene).
-  SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I,
-            float cone_angle_deg, float falloff_start_deg);
+  SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I, float cone_angle_deg,
+            float falloff_start_deg);
 
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
@@ -33,8 +33,8 @@ class SpotLight : public Light {
 
  private:
   Transform light_from_world_;
-  Vec3 p_;            // world position
-  Vec3 axis_light_;   // unit axis in light space
+  Vec3 p_;           // world position
+  Vec3 axis_light_;  // unit axis in light space
   RGB I_;
   float cos_falloff_start_, cos_falloff_end_;
 };

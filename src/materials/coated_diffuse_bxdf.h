@@ -39,8 +39,8 @@ namespace eyetrace {
 // Parts of the model that depend only on the coat's index: computed once per material.
 struct CoatConstants {
   float eta = 1.5f;
-  float n2 = 2.25f;     // max(eta^2, 1): keeps K >= R Tbar for coats thinner than outside
-  float t_mean = 1.f;   // Tbar, rounded up
+  float n2 = 2.25f;    // max(eta^2, 1): keeps K >= R Tbar for coats thinner than outside
+  float t_mean = 1.f;  // Tbar, rounded up
   static CoatConstants make(float eta);
 };
 

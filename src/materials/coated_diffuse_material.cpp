@@ -1,11 +1,11 @@
 #include "materials/coated_diffuse_material.h"
 
-#include "scene/texture_store.h"
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/dielectric_material.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 

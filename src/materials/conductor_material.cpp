@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "scene/spectrum_param.h"
-#include "scene/texture_store.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "scene/spectrum_param.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 
@@ -60,7 +60,8 @@ void check_constant(const ParameterList& params, const char* name, bool zero_all
   RGB v = *params.get_rgb(name);
   float lo = std::min({v.r, v.g, v.b});
   if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
-  params.fail(name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
+  params.fail(
+      name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
 }
 
 }  // namespace

@@ -104,8 +104,7 @@ class DielectricBxDF {
       s.flags = kReflection | kGlossy;
     } else {
       float etap;
-      if (!refract(wo, wm, eta_, &etap, &s.wi) || same_hemisphere(wo, s.wi) || s.wi.z == 0.f)
-        return std::nullopt;
+      if (!refract(wo, wm, eta_, &etap, &s.wi) || same_hemisphere(wo, s.wi) || s.wi.z == 0.f) return std::nullopt;
       s.flags = kTransmission | kGlossy;
       s.eta = etap;
     }

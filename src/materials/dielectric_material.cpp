@@ -1,10 +1,10 @@
 #include "materials/dielectric_material.h"
 
-#include "scene/spectrum_param.h"
 #include "materials/dielectric_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "scene/spectrum_param.h"
 
 namespace eyetrace {
 
@@ -30,8 +30,10 @@ class DielectricMaterial final : public Material {
 
 float read_eta_at_550(const ParameterList& params, float def) {
   const Param* p = params.find("eta");
-  float eta = p && p->canonical_type() != "float" ? params.get_spectrum_at("eta", 550.f, def) : params.get_float("eta", def);
-  if (!(eta > 0.f) || !std::isfinite(eta)) params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
+  float eta =
+      p && p->canonical_type() != "float" ? params.get_spectrum_at("eta", 550.f, def) : params.get_float("eta", def);
+  if (!(eta > 0.f) || !std::isfinite(eta))
+    params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
   return eta;
 }
 

@@ -1,9 +1,9 @@
 #include "materials/diffuse_material.h"
 
-#include "scene/texture_store.h"
 #include "materials/lambertian_bxdf.h"
 #include "materials/local_bsdf.h"
 #include "materials/normal_map.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
+#include "scene/scene_files.h"
 #include "scene/texture_store.h"
 #include "textures/imagemap_texture.h"
-#include "scene/scene_files.h"
 
 namespace eyetrace {
 

@@ -3,8 +3,8 @@
 // (dpdu, ns x dpdu, ns) of the hit. Shared by every material that takes it.
 #pragma once
 #include "core/interaction.h"
-#include "scene/registry.h"
 #include "core/texture.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

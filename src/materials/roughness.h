@@ -1,9 +1,9 @@
 // The roughness parameters pbrt-v4 materials share: "roughness" or the anisotropic pair
 // "uroughness"/"vroughness" (each a float or a float texture), and "remaproughness".
 #pragma once
-#include "scene/registry.h"
 #include "core/texture.h"
 #include "materials/microfacet.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -13,14 +13,14 @@ namespace eyetrace::optics {
 struct EyeModel;
 
 struct AccommodationLaw {
-    const char* name;
-    const char* description;  // one line, with its source
-    bool needs_accommodated_state;
-    // The model's prescription at A in [0, max] (the caller checks the range).
-    Prescription (*apply)(const EyeModel& model, double A);
-    // The largest accommodation the law can give this model; < 0: the data file must say
-    // ("max_D"), because the law itself has no end.
-    double (*max_D)(const EyeModel& model);
+  const char* name;
+  const char* description;  // one line, with its source
+  bool needs_accommodated_state;
+  // The model's prescription at A in [0, max] (the caller checks the range).
+  Prescription (*apply)(const EyeModel& model, double A);
+  // The largest accommodation the law can give this model; < 0: the data file must say
+  // ("max_D"), because the law itself has no end.
+  double (*max_D)(const EyeModel& model);
 };
 
 // Throws OpticsError listing the known laws when `name` is not one.

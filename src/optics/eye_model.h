@@ -12,13 +12,13 @@
 namespace eyetrace::optics {
 
 struct EyeModel {
-    std::string name;     // the file's "model": also its camera name (Camera "navarro")
-    std::string variant;  // the file's "variant" ("" = the model's default prescription)
-    std::string origin;   // the file it came from, for messages
-    Prescription relaxed;
-    std::string accommodation_law;          // a name of accommodation_law_names()
-    std::optional<Prescription> accommodated;  // the law's end state, when it has one
-    double max_accommodation_D = 0.0;       // accepted range [0, max]
+  std::string name;     // the file's "model": also its camera name (Camera "navarro")
+  std::string variant;  // the file's "variant" ("" = the model's default prescription)
+  std::string origin;   // the file it came from, for messages
+  Prescription relaxed;
+  std::string accommodation_law;             // a name of accommodation_law_names()
+  std::optional<Prescription> accommodated;  // the law's end state, when it has one
+  double max_accommodation_D = 0.0;          // accepted range [0, max]
 };
 
 // Parses and validates a model file's text: the prescription format of prescription_io.h plus

@@ -15,21 +15,21 @@
 namespace eyetrace::optics {
 
 struct EyeOptions {
-    std::string model;    // one of eye_model_names()
-    std::string variant;  // "" = the model's default; see eye_model_variants()
-    // Accommodation in dioptres. Its meaning is the model's own: the Navarro parameter D
-    // (not the produced accommodation, see docs), Arizona's A, and for gullstrand/legrand the
-    // accommodation actually produced.
-    double accommodation_D = 0.0;
-    double pupil_diameter_mm = 4.0;  // iris (aperture stop) diameter, (0, 10]
-    // 0 keeps the model's published retina. Otherwise the vitreous depth (axial length) is set
-    // so the relaxed eye's refraction is this value (-2 = myope with far point 0.5 m); the
-    // accommodated eye then keeps that axial length.
-    double refractive_error_D = 0.0;
-    // Retina radius (mm, < 0: centre of curvature in front of the retina; 0 = flat);
-    // nullopt = the model's default. The vertex stays where the model puts it.
-    std::optional<double> retina_radius_mm;
-    double wavelength_nm = 0.0;  // 0 = the model's reference wavelength
+  std::string model;    // one of eye_model_names()
+  std::string variant;  // "" = the model's default; see eye_model_variants()
+  // Accommodation in dioptres. Its meaning is the model's own: the Navarro parameter D
+  // (not the produced accommodation, see docs), Arizona's A, and for gullstrand/legrand the
+  // accommodation actually produced.
+  double accommodation_D = 0.0;
+  double pupil_diameter_mm = 4.0;  // iris (aperture stop) diameter, (0, 10]
+  // 0 keeps the model's published retina. Otherwise the vitreous depth (axial length) is set
+  // so the relaxed eye's refraction is this value (-2 = myope with far point 0.5 m); the
+  // accommodated eye then keeps that axial length.
+  double refractive_error_D = 0.0;
+  // Retina radius (mm, < 0: centre of curvature in front of the retina; 0 = flat);
+  // nullopt = the model's default. The vertex stays where the model puts it.
+  std::optional<double> retina_radius_mm;
+  double wavelength_nm = 0.0;  // 0 = the model's reference wavelength
 };
 
 // Sorted model names (the embedded ones: arizona, escudero-sanz, gullstrand, kooijman, legrand,

@@ -21,10 +21,10 @@
 namespace eyetrace::optics {
 
 struct LensFileOptions {
-    // Replaces the stop's diameter (pbrt's "aperturediameter"); may not exceed the file's.
-    std::optional<double> aperture_diameter_mm;
-    // Object distance in metres from the first vertex to focus on (moves the film).
-    std::optional<double> focus_distance_m;
+  // Replaces the stop's diameter (pbrt's "aperturediameter"); may not exceed the file's.
+  std::optional<double> aperture_diameter_mm;
+  // Object distance in metres from the first vertex to focus on (moves the film).
+  std::optional<double> focus_distance_m;
 };
 
 // `file_name` is used in error messages ("lens.dat:7: expected 4 or 5 numbers, found 3").

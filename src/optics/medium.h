@@ -15,36 +15,35 @@
 namespace eyetrace::optics {
 
 enum class DispersionLaw {
-    None,               // constant index (Gullstrand, and anything without published dispersion)
-    NavarroHerzberger,  // Navarro 1985: weights of the indices at 365, 486.1, 656.3, 1014 nm
-    Cornu,              // n(lambda) = n_inf + K / (lambda - lambda0), lambda in nm (Le Grand)
-    AbbeLinear,         // n(lambda) = nd + (lambda - 589.3)(nd - 1) / (Vd (486.1 - 656.3)) (Arizona)
+  None,               // constant index (Gullstrand, and anything without published dispersion)
+  NavarroHerzberger,  // Navarro 1985: weights of the indices at 365, 486.1, 656.3, 1014 nm
+  Cornu,              // n(lambda) = n_inf + K / (lambda - lambda0), lambda in nm (Le Grand)
+  AbbeLinear,         // n(lambda) = nd + (lambda - 589.3)(nd - 1) / (Vd (486.1 - 656.3)) (Arizona)
 };
 
 struct Dispersion {
-    DispersionLaw law = DispersionLaw::None;
-    std::array<double, 4> herzberger_indices{};  // NavarroHerzberger: n(365), n(486.1), n(656.3), n(1014)
-    double cornu_n_inf = 0.0;                    // Cornu
-    double cornu_k_nm = 0.0;                     // Cornu
-    double cornu_lambda0_nm = 130.0;             // Cornu
-    double abbe_nd = 0.0;                        // AbbeLinear
-    double abbe_vd = 0.0;                        // AbbeLinear
+  DispersionLaw law = DispersionLaw::None;
+  std::array<double, 4> herzberger_indices{};  // NavarroHerzberger: n(365), n(486.1), n(656.3), n(1014)
+  double cornu_n_inf = 0.0;                    // Cornu
+  double cornu_k_nm = 0.0;                     // Cornu
+  double cornu_lambda0_nm = 130.0;             // Cornu
+  double abbe_nd = 0.0;                        // AbbeLinear
+  double abbe_vd = 0.0;                        // AbbeLinear
 
-    // The raw law at lambda (nm). For None returns 0 (no change with wavelength).
-    double evaluate(double lambda_nm) const;
+  // The raw law at lambda (nm). For None returns 0 (no change with wavelength).
+  double evaluate(double lambda_nm) const;
 };
 
 struct Medium {
-    std::string name;
-    double index = 1.0;                      // at reference_wavelength_nm
-    double reference_wavelength_nm = 589.3;
-    Dispersion dispersion;
+  std::string name;
+  double index = 1.0;  // at reference_wavelength_nm
+  double reference_wavelength_nm = 589.3;
+  Dispersion dispersion;
 
-    double index_at(double lambda_nm) const {
-        if (dispersion.law == DispersionLaw::None || lambda_nm == reference_wavelength_nm)
-            return index;
-        return index + dispersion.evaluate(lambda_nm) - dispersion.evaluate(reference_wavelength_nm);
-    }
+  double index_at(double lambda_nm) const {
+    if (dispersion.law == DispersionLaw::None || lambda_nm == reference_wavelength_nm) return index;
+    return index + dispersion.evaluate(lambda_nm) - dispersion.evaluate(reference_wavelength_nm);
+  }
 };
 
 // Navarro et al. (1985) Herzberger-type interpolation; lambda in nm. Exposed for tests.

@@ -9,8 +9,8 @@ namespace eyetrace::optics {
 
 // How the lens index grows with D.
 enum class NavarroLensIndexLaw {
-    Navarro1985,    // n_l = n_l0 + 9e-5 (10 D + D^2)  (N85 and every implementation)
-    Wu2011Printed,  // n_l = n_l0 + 9e-5 ln(D + 1)      (Wu et al. 2011 Eq. 1 as printed)
+  Navarro1985,    // n_l = n_l0 + 9e-5 (10 D + D^2)  (N85 and every implementation)
+  Wu2011Printed,  // n_l = n_l0 + 9e-5 ln(D + 1)      (Wu et al. 2011 Eq. 1 as printed)
 };
 
 inline constexpr double kNavarroMaxPublished_D = 10.0;  // range of the 1985 fit

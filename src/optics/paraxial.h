@@ -10,7 +10,7 @@ namespace eyetrace::optics {
 
 // (y, n u) -> (A y + B n u, C y + D n u); determinant 1 with reduced angles.
 struct RayMatrix {
-    double A = 1.0, B = 0.0, C = 0.0, D = 1.0;
+  double A = 1.0, B = 0.0, C = 0.0, D = 1.0;
 };
 
 // Matrix from just before surface `first`'s vertex to just after surface `last` (at its vertex),
@@ -18,31 +18,31 @@ struct RayMatrix {
 RayMatrix system_matrix(const Prescription& p, int first, int last);
 
 struct Pupil {
-    double position_mm = 0.0;    // from the first vertex
-    double diameter_mm = 0.0;
-    double magnification = 0.0;  // pupil diameter / stop diameter
+  double position_mm = 0.0;  // from the first vertex
+  double diameter_mm = 0.0;
+  double magnification = 0.0;  // pupil diameter / stop diameter
 };
 
 struct ParaxialData {
-    double power_D = 0.0;  // equivalent power (object space air for an eye)
-    double object_index = 1.0;
-    double image_index = 1.0;
-    // Cardinal points, positions from the first vertex.
-    double front_focal_point_mm = 0.0;  // F
-    double back_focal_point_mm = 0.0;   // F'
-    double front_principal_point_mm = 0.0;  // H
-    double back_principal_point_mm = 0.0;   // H'
-    double front_nodal_point_mm = 0.0;      // N
-    double back_nodal_point_mm = 0.0;       // N'
-    double front_focal_length_mm = 0.0;  // H -> F, = -n / P (negative)
-    double back_focal_length_mm = 0.0;   // H' -> F', = n' / P
-    double back_focal_distance_mm = 0.0;   // last refracting vertex -> F'
-    double front_focal_distance_mm = 0.0;  // first vertex -> F (negative)
-    Pupil entrance_pupil;  // image of the stop in object space
-    Pupil exit_pupil;      // image of the stop in image space
-    double refraction_D = 0.0;  // object vergence at the first vertex imaged on the image
-    double axial_length_mm = 0.0;      // first vertex -> image vertex
-    double far_point_m = 0.0;          // -1 / refraction (+inf when emmetropic)
+  double power_D = 0.0;  // equivalent power (object space air for an eye)
+  double object_index = 1.0;
+  double image_index = 1.0;
+  // Cardinal points, positions from the first vertex.
+  double front_focal_point_mm = 0.0;      // F
+  double back_focal_point_mm = 0.0;       // F'
+  double front_principal_point_mm = 0.0;  // H
+  double back_principal_point_mm = 0.0;   // H'
+  double front_nodal_point_mm = 0.0;      // N
+  double back_nodal_point_mm = 0.0;       // N'
+  double front_focal_length_mm = 0.0;     // H -> F, = -n / P (negative)
+  double back_focal_length_mm = 0.0;      // H' -> F', = n' / P
+  double back_focal_distance_mm = 0.0;    // last refracting vertex -> F'
+  double front_focal_distance_mm = 0.0;   // first vertex -> F (negative)
+  Pupil entrance_pupil;                   // image of the stop in object space
+  Pupil exit_pupil;                       // image of the stop in image space
+  double refraction_D = 0.0;              // object vergence at the first vertex imaged on the image
+  double axial_length_mm = 0.0;           // first vertex -> image vertex
+  double far_point_m = 0.0;               // -1 / refraction (+inf when emmetropic)
 };
 
 // Throws OpticsError for an afocal system (zero power) or a prescription without a stop.

@@ -12,61 +12,58 @@
 namespace eyetrace::optics {
 
 const char* to_string(SurfaceRole role) {
-    switch (role) {
+  switch (role) {
     case SurfaceRole::Refract: return "refract";
     case SurfaceRole::Stop: return "stop";
     case SurfaceRole::Image: return "image";
-    }
-    return "?";
+  }
+  return "?";
 }
 
 int Prescription::stop_index() const {
-    for (size_t i = 0; i < surfaces.size(); ++i)
-        if (surfaces[i].role == SurfaceRole::Stop) return static_cast<int>(i);
-    return -1;
+  for (size_t i = 0; i < surfaces.size(); ++i)
+    if (surfaces[i].role == SurfaceRole::Stop) return static_cast<int>(i);
+  return -1;
 }
 
 double Prescription::stop_diameter_mm() const {
-    const int s = stop_index();
-    return s < 0 ? 0.0 : 2.0 * surfaces[s].semi_diameter_mm;
+  const int s = stop_index();
+  return s < 0 ? 0.0 : 2.0 * surfaces[s].semi_diameter_mm;
 }
 
 std::vector<double> Prescription::vertex_z_mm() const {
-    std::vector<double> z(surfaces.size(), 0.0);
-    for (size_t i = 1; i < surfaces.size(); ++i) z[i] = z[i - 1] + surfaces[i - 1].thickness_mm;
-    return z;
+  std::vector<double> z(surfaces.size(), 0.0);
+  for (size_t i = 1; i < surfaces.size(); ++i) z[i] = z[i - 1] + surfaces[i - 1].thickness_mm;
+  return z;
 }
 
-double Prescription::axial_length_mm() const {
-    return surfaces.empty() ? 0.0 : vertex_z_mm().back();
-}
+double Prescription::axial_length_mm() const { return surfaces.empty() ? 0.0 : vertex_z_mm().back(); }
 
 const Medium* Prescription::find_medium(const std::string& name) const {
-    for (const Medium& m : media)
-        if (m.name == name) return &m;
-    return nullptr;
+  for (const Medium& m : media)
+    if (m.name == name) return &m;
+  return nullptr;
 }
 
-double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile& b, double z_b,
-                      double h_max) {
-    auto gap = [&](double r) { return (z_b + b.sag(r * r)) - (z_a + a.sag(r * r)); };
-    if (gap(0.0) < 0.0) return 0.0;
-    // Sample first (the gap need not be monotonic for conics of opposite kinds), then bisect
-    // the first sign change.
-    constexpr int kSteps = 256;
-    double lo = 0.0;
-    for (int i = 1; i <= kSteps; ++i) {
-        double hi = h_max * i / kSteps;
-        if (gap(hi) < 0.0) {
-            for (int it = 0; it < 60; ++it) {
-                const double mid = 0.5 * (lo + hi);
-                (gap(mid) < 0.0 ? hi : lo) = mid;
-            }
-            return lo;
-        }
-        lo = hi;
+double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile& b, double z_b, double h_max) {
+  auto gap = [&](double r) { return (z_b + b.sag(r * r)) - (z_a + a.sag(r * r)); };
+  if (gap(0.0) < 0.0) return 0.0;
+  // Sample first (the gap need not be monotonic for conics of opposite kinds), then bisect
+  // the first sign change.
+  constexpr int kSteps = 256;
+  double lo = 0.0;
+  for (int i = 1; i <= kSteps; ++i) {
+    double hi = h_max * i / kSteps;
+    if (gap(hi) < 0.0) {
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (gap(mid) < 0.0 ? hi : lo) = mid;
+      }
+      return lo;
     }
-    return h_max;
+    lo = hi;
+  }
+  return h_max;
 }
 
 namespace {
@@ -74,148 +71,133 @@ namespace {
 constexpr double kMaxIndex = 10.0;
 constexpr double kMaxThickness_mm = 1e6;  // 1 km
 
-std::string label(const Prescription& p, size_t i) {
-    return fmt::format("surface {} '{}'", i, p.surfaces[i].name);
-}
+std::string label(const Prescription& p, size_t i) { return fmt::format("surface {} '{}'", i, p.surfaces[i].name); }
 
 void check_finite(const Prescription& p, size_t i, const char* what, double value) {
-    if (!std::isfinite(value))
-        throw OpticsError(fmt::format("{}: {} is not a finite number ({})", label(p, i), what, value));
+  if (!std::isfinite(value))
+    throw OpticsError(fmt::format("{}: {} is not a finite number ({})", label(p, i), what, value));
 }
 
 // Height up to which a surface is used: its semi-diameter, else the conic's own reach.
-double used_height(const Surface& s) {
-    return s.limited() ? s.semi_diameter_mm : s.profile.max_height();
-}
+double used_height(const Surface& s) { return s.limited() ? s.semi_diameter_mm : s.profile.max_height(); }
 
 void validate_surface(const Prescription& p, size_t i) {
-    const Surface& s = p.surfaces[i];
-    check_finite(p, i, "curvature", s.profile.curvature);
-    check_finite(p, i, "conic", s.profile.conic);
-    check_finite(p, i, "thickness_mm", s.thickness_mm);
-    check_finite(p, i, "index", s.index_after);
-    if (std::isnan(s.semi_diameter_mm) || s.semi_diameter_mm < 0.0)
-        throw OpticsError(fmt::format("{}: semi-diameter {} mm must be >= 0 (0 = unlimited)",
-                                      label(p, i), s.semi_diameter_mm));
-    if (s.thickness_mm < 0.0)
-        throw OpticsError(fmt::format("{}: thickness {} mm is negative", label(p, i), s.thickness_mm));
-    // Beyond this, squared distances in the ray-conic intersection lose every significant digit.
-    if (s.thickness_mm > kMaxThickness_mm)
-        throw OpticsError(fmt::format("{}: thickness {} mm is more than {} mm", label(p, i),
-                                      s.thickness_mm, kMaxThickness_mm));
-    if (s.index_after < 1.0)
-        throw OpticsError(fmt::format("{}: index {} of medium '{}' is below 1", label(p, i),
-                                      s.index_after, s.medium));
-    // No optical material comes near this; far beyond it, eta^2 in Snell's law overflows.
-    if (s.index_after > kMaxIndex)
-        throw OpticsError(fmt::format("{}: index {} of medium '{}' is above {}", label(p, i),
-                                      s.index_after, s.medium, kMaxIndex));
-    if (s.profile.kind == ProfileKind::Plane && s.profile.curvature != 0.0)
-        throw OpticsError(fmt::format("{}: a plane profile has curvature {}", label(p, i),
-                                      s.profile.curvature));
-    const double reach = s.profile.max_height();
-    if (s.limited() && s.semi_diameter_mm > reach * (1.0 + 1e-12))
-        throw OpticsError(fmt::format(
-            "{}: semi-diameter {:.6g} mm is beyond the conic's reach (max {:.6g} mm)", label(p, i),
-            s.semi_diameter_mm, reach));
-    if (s.role == SurfaceRole::Stop) {
-        if (!s.profile.is_flat())
-            throw OpticsError(fmt::format("{}: the aperture stop must be flat", label(p, i)));
-        if (!s.limited())
-            throw OpticsError(fmt::format(
-                "{}: the aperture stop needs a finite semi-diameter > 0 (got {})", label(p, i),
-                s.semi_diameter_mm));
-        if (s.index_after != p.index_before(static_cast<int>(i)))
-            throw OpticsError(fmt::format("{}: the medium after a stop must be the medium before it "
-                                          "(index {} vs {})",
-                                          label(p, i), s.index_after,
-                                          p.index_before(static_cast<int>(i))));
-    }
+  const Surface& s = p.surfaces[i];
+  check_finite(p, i, "curvature", s.profile.curvature);
+  check_finite(p, i, "conic", s.profile.conic);
+  check_finite(p, i, "thickness_mm", s.thickness_mm);
+  check_finite(p, i, "index", s.index_after);
+  if (std::isnan(s.semi_diameter_mm) || s.semi_diameter_mm < 0.0)
+    throw OpticsError(
+        fmt::format("{}: semi-diameter {} mm must be >= 0 (0 = unlimited)", label(p, i), s.semi_diameter_mm));
+  if (s.thickness_mm < 0.0)
+    throw OpticsError(fmt::format("{}: thickness {} mm is negative", label(p, i), s.thickness_mm));
+  // Beyond this, squared distances in the ray-conic intersection lose every significant digit.
+  if (s.thickness_mm > kMaxThickness_mm)
+    throw OpticsError(
+        fmt::format("{}: thickness {} mm is more than {} mm", label(p, i), s.thickness_mm, kMaxThickness_mm));
+  if (s.index_after < 1.0)
+    throw OpticsError(fmt::format("{}: index {} of medium '{}' is below 1", label(p, i), s.index_after, s.medium));
+  // No optical material comes near this; far beyond it, eta^2 in Snell's law overflows.
+  if (s.index_after > kMaxIndex)
+    throw OpticsError(
+        fmt::format("{}: index {} of medium '{}' is above {}", label(p, i), s.index_after, s.medium, kMaxIndex));
+  if (s.profile.kind == ProfileKind::Plane && s.profile.curvature != 0.0)
+    throw OpticsError(fmt::format("{}: a plane profile has curvature {}", label(p, i), s.profile.curvature));
+  const double reach = s.profile.max_height();
+  if (s.limited() && s.semi_diameter_mm > reach * (1.0 + 1e-12))
+    throw OpticsError(fmt::format("{}: semi-diameter {:.6g} mm is beyond the conic's reach (max {:.6g} mm)",
+                                  label(p, i), s.semi_diameter_mm, reach));
+  if (s.role == SurfaceRole::Stop) {
+    if (!s.profile.is_flat()) throw OpticsError(fmt::format("{}: the aperture stop must be flat", label(p, i)));
+    if (!s.limited())
+      throw OpticsError(fmt::format("{}: the aperture stop needs a finite semi-diameter > 0 (got {})", label(p, i),
+                                    s.semi_diameter_mm));
+    if (s.index_after != p.index_before(static_cast<int>(i)))
+      throw OpticsError(
+          fmt::format("{}: the medium after a stop must be the medium before it "
+                      "(index {} vs {})",
+                      label(p, i), s.index_after, p.index_before(static_cast<int>(i))));
+  }
 }
 
 }  // namespace
 
 void validate(const Prescription& p) {
-    const std::string who = p.name.empty() ? "prescription" : fmt::format("prescription '{}'", p.name);
-    if (p.surfaces.size() < 2)
-        throw OpticsError(fmt::format("{}: needs at least one surface and an image surface", who));
-    if (!std::isfinite(p.object_index) || p.object_index < 1.0 || p.object_index > kMaxIndex)
-        throw OpticsError(fmt::format("{}: object-space index {} is invalid", who, p.object_index));
-    if (!std::isfinite(p.wavelength_nm) || p.wavelength_nm <= 0.0)
-        throw OpticsError(fmt::format("{}: wavelength {} nm is invalid", who, p.wavelength_nm));
-    int stops = 0;
-    for (size_t i = 0; i < p.surfaces.size(); ++i) {
-        validate_surface(p, i);
-        const bool last = i + 1 == p.surfaces.size();
-        if (last != (p.surfaces[i].role == SurfaceRole::Image))
-            throw OpticsError(fmt::format("{}: {}", label(p, i),
-                                          last ? "the last surface must have role 'image'"
-                                               : "only the last surface may have role 'image'"));
-        stops += p.surfaces[i].role == SurfaceRole::Stop;
-    }
-    if (stops != 1)
-        throw OpticsError(fmt::format("{}: needs exactly one aperture stop (role 'stop'), found {}",
-                                      who, stops));
+  const std::string who = p.name.empty() ? "prescription" : fmt::format("prescription '{}'", p.name);
+  if (p.surfaces.size() < 2) throw OpticsError(fmt::format("{}: needs at least one surface and an image surface", who));
+  if (!std::isfinite(p.object_index) || p.object_index < 1.0 || p.object_index > kMaxIndex)
+    throw OpticsError(fmt::format("{}: object-space index {} is invalid", who, p.object_index));
+  if (!std::isfinite(p.wavelength_nm) || p.wavelength_nm <= 0.0)
+    throw OpticsError(fmt::format("{}: wavelength {} nm is invalid", who, p.wavelength_nm));
+  int stops = 0;
+  for (size_t i = 0; i < p.surfaces.size(); ++i) {
+    validate_surface(p, i);
+    const bool last = i + 1 == p.surfaces.size();
+    if (last != (p.surfaces[i].role == SurfaceRole::Image))
+      throw OpticsError(fmt::format(
+          "{}: {}", label(p, i),
+          last ? "the last surface must have role 'image'" : "only the last surface may have role 'image'"));
+    stops += p.surfaces[i].role == SurfaceRole::Stop;
+  }
+  if (stops != 1)
+    throw OpticsError(fmt::format("{}: needs exactly one aperture stop (role 'stop'), found {}", who, stops));
 
-    // Adjacent surfaces must not cross inside the smaller clear aperture: a crossing means a
-    // ray would have to travel backwards between them.
-    const std::vector<double> z = p.vertex_z_mm();
-    for (size_t i = 0; i + 1 < p.surfaces.size(); ++i) {
-        const Surface& a = p.surfaces[i];
-        const Surface& b = p.surfaces[i + 1];
-        const double h = std::fmin(used_height(a), used_height(b));
-        if (!std::isfinite(h)) continue;  // two unbounded sheets: only the axis gap matters
-        for (int j = 1; j <= 128; ++j) {
-            const double r = h * j / 128;
-            const double gap = (z[i + 1] + b.profile.sag(r * r)) - (z[i] + a.profile.sag(r * r));
-            if (gap >= -1e-9) continue;  // touching at the rim (a lens edge) is allowed
-            const double meet = meeting_height(a.profile, z[i], b.profile, z[i + 1], h);
-            throw OpticsError(fmt::format(
-                "{} and surface {} '{}' cross at height {:.4g} mm, inside the clear aperture "
-                "({:.4g} mm): thickness {} mm is too small for their sags",
-                label(p, i), i + 1, b.name, meet, h, a.thickness_mm));
-        }
+  // Adjacent surfaces must not cross inside the smaller clear aperture: a crossing means a
+  // ray would have to travel backwards between them.
+  const std::vector<double> z = p.vertex_z_mm();
+  for (size_t i = 0; i + 1 < p.surfaces.size(); ++i) {
+    const Surface& a = p.surfaces[i];
+    const Surface& b = p.surfaces[i + 1];
+    const double h = std::fmin(used_height(a), used_height(b));
+    if (!std::isfinite(h)) continue;  // two unbounded sheets: only the axis gap matters
+    for (int j = 1; j <= 128; ++j) {
+      const double r = h * j / 128;
+      const double gap = (z[i + 1] + b.profile.sag(r * r)) - (z[i] + a.profile.sag(r * r));
+      if (gap >= -1e-9) continue;  // touching at the rim (a lens edge) is allowed
+      const double meet = meeting_height(a.profile, z[i], b.profile, z[i + 1], h);
+      throw OpticsError(
+          fmt::format("{} and surface {} '{}' cross at height {:.4g} mm, inside the clear aperture "
+                      "({:.4g} mm): thickness {} mm is too small for their sags",
+                      label(p, i), i + 1, b.name, meet, h, a.thickness_mm));
     }
+  }
 }
 
 Prescription at_wavelength(const Prescription& p, double lambda_nm) {
-    if (!std::isfinite(lambda_nm) || lambda_nm < kMinWavelength_nm || lambda_nm > kMaxWavelength_nm)
-        throw OpticsError(fmt::format("wavelength {} nm is outside [{}, {}] nm", lambda_nm,
-                                      kMinWavelength_nm, kMaxWavelength_nm));
-    Prescription out = p;
-    out.wavelength_nm = lambda_nm;
-    for (size_t i = 0; i < out.surfaces.size(); ++i) {
-        Surface& s = out.surfaces[i];
-        const Medium* m = p.find_medium(s.medium);
-        if (!m)
-            throw OpticsError(fmt::format("{}: medium '{}' is not in the media table", label(p, i),
-                                          s.medium));
-        s.index_after = m->index_at(lambda_nm);
-    }
-    return out;
+  if (!std::isfinite(lambda_nm) || lambda_nm < kMinWavelength_nm || lambda_nm > kMaxWavelength_nm)
+    throw OpticsError(
+        fmt::format("wavelength {} nm is outside [{}, {}] nm", lambda_nm, kMinWavelength_nm, kMaxWavelength_nm));
+  Prescription out = p;
+  out.wavelength_nm = lambda_nm;
+  for (size_t i = 0; i < out.surfaces.size(); ++i) {
+    Surface& s = out.surfaces[i];
+    const Medium* m = p.find_medium(s.medium);
+    if (!m) throw OpticsError(fmt::format("{}: medium '{}' is not in the media table", label(p, i), s.medium));
+    s.index_after = m->index_at(lambda_nm);
+  }
+  return out;
 }
 
 void set_stop_diameter(Prescription& p, double diameter_mm) {
-    const int s = p.stop_index();
-    if (s < 0) throw OpticsError("set_stop_diameter: the prescription has no aperture stop");
-    p.surfaces[s].semi_diameter_mm = 0.5 * diameter_mm;
+  const int s = p.stop_index();
+  if (s < 0) throw OpticsError("set_stop_diameter: the prescription has no aperture stop");
+  p.surfaces[s].semi_diameter_mm = 0.5 * diameter_mm;
 }
 
 std::string describe(const Prescription& p) {
-    std::string out = fmt::format("{}{} ({} nm)\n", p.name,
-                                  p.variant.empty() ? "" : " [" + p.variant + "]", p.wavelength_nm);
-    out += fmt::format("{:>3} {:<24} {:>10} {:>9} {:>10} {:>9} {:>8} {:<10} {}\n", "#", "name",
-                       "radius", "conic", "thickness", "index", "semi-d", "medium", "role");
-    for (size_t i = 0; i < p.surfaces.size(); ++i) {
-        const Surface& s = p.surfaces[i];
-        const std::string radius =
-            s.profile.is_flat() ? "flat" : fmt::format("{:.5g}", 1.0 / s.profile.curvature);
-        const std::string sd = s.limited() ? fmt::format("{:.4g}", s.semi_diameter_mm) : "-";
-        out += fmt::format("{:>3} {:<24} {:>10} {:>9.5g} {:>10.6g} {:>9.6g} {:>8} {:<10} {}\n", i,
-                           s.name, radius, s.profile.conic, s.thickness_mm, s.index_after, sd,
-                           s.medium, to_string(s.role));
-    }
-    return out;
+  std::string out =
+      fmt::format("{}{} ({} nm)\n", p.name, p.variant.empty() ? "" : " [" + p.variant + "]", p.wavelength_nm);
+  out += fmt::format("{:>3} {:<24} {:>10} {:>9} {:>10} {:>9} {:>8} {:<10} {}\n", "#", "name", "radius", "conic",
+                     "thickness", "index", "semi-d", "medium", "role");
+  for (size_t i = 0; i < p.surfaces.size(); ++i) {
+    const Surface& s = p.surfaces[i];
+    const std::string radius = s.profile.is_flat() ? "flat" : fmt::format("{:.5g}", 1.0 / s.profile.curvature);
+    const std::string sd = s.limited() ? fmt::format("{:.4g}", s.semi_diameter_mm) : "-";
+    out += fmt::format("{:>3} {:<24} {:>10} {:>9.5g} {:>10.6g} {:>9.6g} {:>8} {:<10} {}\n", i, s.name, radius,
+                       s.profile.conic, s.thickness_mm, s.index_after, sd, s.medium, to_string(s.role));
+  }
+  return out;
 }
 
 }  // namespace eyetrace::optics

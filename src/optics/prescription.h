@@ -14,46 +14,44 @@
 namespace eyetrace::optics {
 
 enum class SurfaceRole {
-    Refract,  // an interface between two media
-    Stop,     // the aperture stop (iris): flat, clips at its semi-diameter, does not refract
-    Image,    // the image surface (retina or film); always last
+  Refract,  // an interface between two media
+  Stop,     // the aperture stop (iris): flat, clips at its semi-diameter, does not refract
+  Image,    // the image surface (retina or film); always last
 };
 
 const char* to_string(SurfaceRole role);
 
 struct Surface {
-    std::string name;
-    SurfaceProfile profile;          // shape in the surface's local frame
-    double thickness_mm = 0.0;       // axial distance to the next vertex (0 for the image)
-    std::string medium;              // name of the medium after the surface
-    double index_after = 1.0;        // its index at the prescription's wavelength
-    double semi_diameter_mm = 0.0;   // clear radius; 0 or +inf = unlimited
-    SurfaceRole role = SurfaceRole::Refract;
+  std::string name;
+  SurfaceProfile profile;         // shape in the surface's local frame
+  double thickness_mm = 0.0;      // axial distance to the next vertex (0 for the image)
+  std::string medium;             // name of the medium after the surface
+  double index_after = 1.0;       // its index at the prescription's wavelength
+  double semi_diameter_mm = 0.0;  // clear radius; 0 or +inf = unlimited
+  SurfaceRole role = SurfaceRole::Refract;
 
-    bool limited() const { return semi_diameter_mm > 0.0 && semi_diameter_mm < 1e300; }
+  bool limited() const { return semi_diameter_mm > 0.0 && semi_diameter_mm < 1e300; }
 };
 
 struct Prescription {
-    std::string name;     // model name, e.g. "navarro", or a lens file name
-    std::string variant;  // e.g. "wu2011"; empty for the default
-    std::string source;   // literature source of the data
-    double reference_wavelength_nm = 589.3;  // wavelength of the tabulated indices
-    double wavelength_nm = 589.3;            // wavelength the surface indices are evaluated at
-    double object_index = 1.0;               // object space is air
-    std::vector<Surface> surfaces;           // object side first, image surface last
-    std::vector<Medium> media;               // by name; lets at_wavelength() re-evaluate indices
-    std::vector<std::string> notes;          // caveats (unverified data, extrapolation, ...)
+  std::string name;                        // model name, e.g. "navarro", or a lens file name
+  std::string variant;                     // e.g. "wu2011"; empty for the default
+  std::string source;                      // literature source of the data
+  double reference_wavelength_nm = 589.3;  // wavelength of the tabulated indices
+  double wavelength_nm = 589.3;            // wavelength the surface indices are evaluated at
+  double object_index = 1.0;               // object space is air
+  std::vector<Surface> surfaces;           // object side first, image surface last
+  std::vector<Medium> media;               // by name; lets at_wavelength() re-evaluate indices
+  std::vector<std::string> notes;          // caveats (unverified data, extrapolation, ...)
 
-    int image_index() const { return static_cast<int>(surfaces.size()) - 1; }
-    int stop_index() const;  // -1 when there is none (validate() requires one)
-    double stop_diameter_mm() const;
-    // z of every vertex (first = 0); the last entry is the image vertex.
-    std::vector<double> vertex_z_mm() const;
-    double axial_length_mm() const;  // first vertex to image vertex
-    double index_before(int surface) const {
-        return surface == 0 ? object_index : surfaces[surface - 1].index_after;
-    }
-    const Medium* find_medium(const std::string& name) const;
+  int image_index() const { return static_cast<int>(surfaces.size()) - 1; }
+  int stop_index() const;  // -1 when there is none (validate() requires one)
+  double stop_diameter_mm() const;
+  // z of every vertex (first = 0); the last entry is the image vertex.
+  std::vector<double> vertex_z_mm() const;
+  double axial_length_mm() const;  // first vertex to image vertex
+  double index_before(int surface) const { return surface == 0 ? object_index : surfaces[surface - 1].index_after; }
+  const Medium* find_medium(const std::string& name) const;
 };
 
 // Throws OpticsError naming the surface and parameter at the first problem found: non-finite
@@ -73,8 +71,7 @@ void set_stop_diameter(Prescription& p, double diameter_mm);
 // Height at which two profiles, with vertices at z_a and z_b, meet (searched on [0, h_max]);
 // returns h_max when they do not meet below it. Used for the edge of a lens (e.g. Gullstrand's
 // nucleus) and for validate()'s crossing check.
-double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile& b, double z_b,
-                      double h_max);
+double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile& b, double z_b, double h_max);
 
 // A readable table of the surfaces (one line each).
 std::string describe(const Prescription& p);

@@ -16,9 +16,9 @@
 namespace eyetrace::optics {
 
 struct ReportOptions {
-    std::vector<double> fields_deg{0.0, 10.0, 20.0, 30.0, 40.0};
-    double object_distance_m = std::numeric_limits<double>::infinity();  // spot source distance
-    int spot_grid = 64;
+  std::vector<double> fields_deg{0.0, 10.0, 20.0, 30.0, 40.0};
+  double object_distance_m = std::numeric_limits<double>::infinity();  // spot source distance
+  int spot_grid = 64;
 };
 
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
@@ -37,11 +37,11 @@ nlohmann::json optics_report(const Prescription& prescription, const ReportOptio
 std::string format_report(const nlohmann::json& report);
 
 struct RgbImage {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> rgb;  // row-major, top row first, 3 bytes per pixel
-    double um_per_pixel = 0.0;      // common scale of every panel
-    double scale_bar_um = 0.0;      // length of the black bar drawn in each panel
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  // row-major, top row first, 3 bytes per pixel
+  double um_per_pixel = 0.0;      // common scale of every panel
+  double scale_bar_um = 0.0;      // length of the black bar drawn in each panel
 };
 
 // One panel per spot, left to right in the order given, on a common scale: light axes through

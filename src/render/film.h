@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/filter.h"
-#include "render/image_io.h"
 #include "core/math.h"
+#include "render/image_io.h"
 
 namespace eyetrace {
 

@@ -19,9 +19,7 @@ float linear_to_srgb(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.f / 2.4f) - 0.055f;
 }
 
-float srgb_to_linear(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 static std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
@@ -42,7 +40,8 @@ void write_image(const std::string& path, const Image& image, const std::map<std
   std::random_device rd;
   fs::path tmp = dir / fmt::format(".{}.tmp{:08x}{}", target.stem().string(), rd(), ext);
 
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   for (const auto& [k, v] : metadata) spec.attribute(k, v);
   std::vector<float> buffer = image.pixels;
   if (!is_float) {

@@ -16,8 +16,7 @@ struct Image {
 
 // .exr: linear half/float RGB with `metadata` as string attributes; .png/.jpg/.tif: sRGB
 // 8-bit after clamping. Throws SceneError naming the file on failure.
-void write_image(const std::string& path, const Image& image,
-                 const std::map<std::string, std::string>& metadata = {});
+void write_image(const std::string& path, const Image& image, const std::map<std::string, std::string>& metadata = {});
 Image read_image(const std::string& path);
 // Reads one string attribute from an image header ("" if absent).
 std::string read_image_attribute(const std::string& path, const std::string& name);

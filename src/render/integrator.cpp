@@ -120,8 +120,10 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
   auto stopped = [&] { return opts.stop && opts.stop->load(std::memory_order_relaxed); };
   auto report = [&](bool force) {
     if (!opts.on_progress) return;
-    if (force) progress_mutex.lock();
-    else if (!progress_mutex.try_lock()) return;
+    if (force)
+      progress_mutex.lock();
+    else if (!progress_mutex.try_lock())
+      return;
     auto now = std::chrono::steady_clock::now();
     if (force || now - last_report > std::chrono::milliseconds(250)) {
       last_report = now;

@@ -22,8 +22,8 @@ class Film;
 struct RenderCounters {
   std::atomic<uint64_t> camera_rays{0};
   std::atomic<uint64_t> camera_rays_lost{0};
-  std::atomic<uint64_t> rays_traced{0};      // every ray given to Embree (closest or shadow)
-  std::atomic<uint64_t> samples{0};          // camera samples taken
+  std::atomic<uint64_t> rays_traced{0};  // every ray given to Embree (closest or shadow)
+  std::atomic<uint64_t> samples{0};      // camera samples taken
   std::atomic<uint64_t> nonfinite_samples{0};
   std::atomic<uint64_t> shadow_rays{0};          // of rays_traced: occlusion tests for light samples
   std::atomic<uint64_t> shadow_rays_skipped{0};  // scattering points that needed no occlusion test

@@ -112,15 +112,18 @@ void write_render_state(const std::string& path, const RenderState& s) {
 RenderState read_render_state(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw_error(fmt::format("render state \"{}\" not found: --resume needs the state an interrupted or "
-                            "checkpointed render leaves next to its output", path));
+    throw_error(
+        fmt::format("render state \"{}\" not found: --resume needs the state an interrupted or "
+                    "checkpointed render leaves next to its output",
+                    path));
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Reader r(bytes, path);
   if (bytes.compare(0, kMagic.size(), kMagic) != 0) r.corrupt("not an eyetrace render state");
   if (bytes.size() < kMagic.size() + 8 + 8) r.corrupt("it ends early");
   uint64_t stored_sum;
   std::memcpy(&stored_sum, bytes.data() + bytes.size() - 8, 8);
-  if (fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8)) != stored_sum) r.corrupt("its checksum does not match");
+  if (fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8)) != stored_sum)
+    r.corrupt("its checksum does not match");
   for (size_t i = 0; i < kMagic.size(); ++i) r.get<char>();
   if (r.get<uint32_t>() != kByteOrderMark) r.corrupt("it was written on a machine of another byte order");
   uint32_t version = r.get<uint32_t>();
@@ -140,7 +143,8 @@ RenderState read_render_state(const std::string& path) {
   s.accumulators = r.get_array<double>();
   if (r.position() + 8 != bytes.size()) r.corrupt("it has trailing bytes");
   bool sane = s.bounds.lo.x >= 0 && s.bounds.lo.y >= 0 && s.bounds.hi.x > s.bounds.lo.x &&
-              s.bounds.hi.y > s.bounds.lo.y && s.tiles.matches(s.bounds) && s.accumulators.size() == s.bounds.area() * 4;
+              s.bounds.hi.y > s.bounds.lo.y && s.tiles.matches(s.bounds) &&
+              s.accumulators.size() == s.bounds.area() * 4;
   if (!sane) r.corrupt("its film and tile sizes disagree");
   for (int d : s.tiles.done)
     if (d < 0 || d > s.samples_per_pixel) r.corrupt("a tile count is outside [0, samples per pixel]");

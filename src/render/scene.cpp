@@ -49,8 +49,7 @@ bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) &&
 // Rays Embree must never see: non-finite origin or direction, a zero direction (no
 // direction to report wo for) or an empty/NaN [0, tmax] interval.
 bool traceable(const Ray& ray) {
-  return finite3(ray.o) && finite3(ray.d) && (ray.d.x != 0.f || ray.d.y != 0.f || ray.d.z != 0.f) &&
-         ray.tmax > 0.f;
+  return finite3(ray.o) && finite3(ray.d) && (ray.d.x != 0.f || ray.d.y != 0.f || ray.d.z != 0.f) && ray.tmax > 0.f;
 }
 
 RTCRay to_embree(const Ray& ray) {
@@ -246,8 +245,8 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction* si) const {
     // The same ray in instance space: t is unchanged because the direction is mapped
     // linearly without renormalisation.
     const Transform& inst = place.world_from_instance;
-    Ray local{Vec3(inst.inverse_matrix() * Vec4(ray.o, 1.f)), Vec3(inst.inverse_matrix() * Vec4(ray.d, 0.f)),
-              ray.tmax, ray.time};
+    Ray local{Vec3(inst.inverse_matrix() * Vec4(ray.o, 1.f)), Vec3(inst.inverse_matrix() * Vec4(ray.d, 0.f)), ray.tmax,
+              ray.time};
     *si = to_world(prim->shape->interaction(local, t, rh.hit.primID, uv, ng), inst);
   }
   si->t = t;

@@ -13,8 +13,8 @@ namespace eyetrace {
 
 struct TileProgress {
   static constexpr int kTileSize = 16;
-  IVec2 tiles{0};          // tile grid over the film's pixel bounds
-  std::vector<int> done;   // samples per pixel held, per tile, row-major
+  IVec2 tiles{0};         // tile grid over the film's pixel bounds
+  std::vector<int> done;  // samples per pixel held, per tile, row-major
 
   static TileProgress start(const PixelBounds& b) {
     TileProgress p;

@@ -85,10 +85,8 @@ Vec2 HaltonSampler::get_pixel_2d() {
 
 float HaltonSampler::sample_dimension(int dim) const {
   switch (randomization_) {
-    case Randomization::None:
-      return radical_inverse(dim, halton_index_);
-    case Randomization::PermuteDigits:
-      return permutations_->scrambled_radical_inverse(dim, halton_index_);
+    case Randomization::None: return radical_inverse(dim, halton_index_);
+    case Randomization::PermuteDigits: return permutations_->scrambled_radical_inverse(dim, halton_index_);
     default:
       return owen_scrambled_radical_inverse(dim, halton_index_, uint32_t(mix_bits((uint64_t(dim) << 32) ^ seed_)));
   }

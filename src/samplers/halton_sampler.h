@@ -6,9 +6,9 @@
 #pragma once
 #include <memory>
 
-#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/lowdiscrepancy.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -9,14 +9,10 @@ namespace eyetrace {
 
 const char* randomization_name(Randomization r) {
   switch (r) {
-    case Randomization::None:
-      return "none";
-    case Randomization::PermuteDigits:
-      return "permutedigits";
-    case Randomization::FastOwen:
-      return "fastowen";
-    case Randomization::Owen:
-      return "owen";
+    case Randomization::None: return "none";
+    case Randomization::PermuteDigits: return "permutedigits";
+    case Randomization::FastOwen: return "fastowen";
+    case Randomization::Owen: return "owen";
   }
   return "?";
 }
@@ -71,14 +67,10 @@ const uint32_t* sobol_byte_tables() {
 
 float randomized_sobol_sample(uint64_t a, int dim, Randomization r, uint32_t seed) {
   switch (r) {
-    case Randomization::None:
-      return sobol_sample(a, dim, NoRandomizer());
-    case Randomization::PermuteDigits:
-      return sobol_sample(a, dim, BinaryPermuteScrambler(seed));
-    case Randomization::FastOwen:
-      return sobol_sample(a, dim, FastOwenScrambler(seed));
-    case Randomization::Owen:
-      return sobol_sample(a, dim, OwenScrambler(seed));
+    case Randomization::None: return sobol_sample(a, dim, NoRandomizer());
+    case Randomization::PermuteDigits: return sobol_sample(a, dim, BinaryPermuteScrambler(seed));
+    case Randomization::FastOwen: return sobol_sample(a, dim, FastOwenScrambler(seed));
+    case Randomization::Owen: return sobol_sample(a, dim, OwenScrambler(seed));
   }
   return 0.f;
 }

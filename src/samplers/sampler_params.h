@@ -3,8 +3,8 @@
 #pragma once
 #include <string>
 
-#include "scene/registry.h"
 #include "samplers/lowdiscrepancy.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -7,9 +7,9 @@
 #include <memory>
 #include <vector>
 
-#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/lowdiscrepancy.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -4,9 +4,9 @@
 #pragma once
 #include <memory>
 
-#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/rng.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -120,9 +120,9 @@ std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx) {
   if (!std::has_single_bit(uint32_t(spp)))
     warn(ctx.params.loc(), fmt::format("zsobol sampler: {} samples per pixel rounded up to the power of two {}", spp,
                                        std::bit_ceil(uint32_t(spp))));
-  return std::make_unique<ZSobolSampler>(spp, ctx.resolution, r, seed,
-                                         lens == "joint" ? ZSobolSampler::LensDimensions::Joint
-                                                         : ZSobolSampler::LensDimensions::Padded);
+  return std::make_unique<ZSobolSampler>(
+      spp, ctx.resolution, r, seed,
+      lens == "joint" ? ZSobolSampler::LensDimensions::Joint : ZSobolSampler::LensDimensions::Padded);
 }
 
 }  // namespace eyetrace

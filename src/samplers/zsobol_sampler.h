@@ -9,9 +9,9 @@
 #include <array>
 #include <memory>
 
-#include "scene/registry.h"
 #include "core/sampler.h"
 #include "samplers/lowdiscrepancy.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

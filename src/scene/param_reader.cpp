@@ -16,15 +16,12 @@ struct ParamType {
 
 // pbrt-v4's parameter types, plus the pbrt-v3 spellings it still reads.
 constexpr ParamType kParamTypes[] = {
-    {"float", ValueKind::Numbers, 1},     {"integer", ValueKind::Integers, 1},
-    {"bool", ValueKind::Bools, 1},        {"string", ValueKind::Strings, 1},
-    {"texture", ValueKind::Strings, 1},   {"point2", ValueKind::Numbers, 2},
-    {"vector2", ValueKind::Numbers, 2},   {"point3", ValueKind::Numbers, 3},
-    {"vector3", ValueKind::Numbers, 3},   {"normal", ValueKind::Numbers, 3},
-    {"normal3", ValueKind::Numbers, 3},   {"point", ValueKind::Numbers, 3},
-    {"vector", ValueKind::Numbers, 3},    {"rgb", ValueKind::Numbers, 3},
-    {"color", ValueKind::Numbers, 3},     {"spectrum", ValueKind::Spectrum, 1},
-    {"blackbody", ValueKind::Numbers, 1},
+    {"float", ValueKind::Numbers, 1},     {"integer", ValueKind::Integers, 1},  {"bool", ValueKind::Bools, 1},
+    {"string", ValueKind::Strings, 1},    {"texture", ValueKind::Strings, 1},   {"point2", ValueKind::Numbers, 2},
+    {"vector2", ValueKind::Numbers, 2},   {"point3", ValueKind::Numbers, 3},    {"vector3", ValueKind::Numbers, 3},
+    {"normal", ValueKind::Numbers, 3},    {"normal3", ValueKind::Numbers, 3},   {"point", ValueKind::Numbers, 3},
+    {"vector", ValueKind::Numbers, 3},    {"rgb", ValueKind::Numbers, 3},       {"color", ValueKind::Numbers, 3},
+    {"spectrum", ValueKind::Spectrum, 1}, {"blackbody", ValueKind::Numbers, 1},
 };
 
 const ParamType* find_type(const std::string& name) {
@@ -60,8 +57,7 @@ class ValueReader {
     }
     if (type_.kind == ValueKind::Bools || type_.kind == ValueKind::Strings)
       fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
-    if (type_.kind == ValueKind::Spectrum && !p_.strings.empty())
-      fail(t, "cannot mix numbers and a spectrum name");
+    if (type_.kind == ValueKind::Spectrum && !p_.strings.empty()) fail(t, "cannot mix numbers and a spectrum name");
     p_.numbers.push_back(number(t, open));
   }
 
@@ -70,12 +66,11 @@ class ValueReader {
     if (n == 0) eyetrace::fail(p_.loc, "parameter \"{}\" has no values", declaration());
     size_t nums = p_.numbers.size();
     if (type_.tuple > 1 && nums % type_.tuple != 0)
-      eyetrace::fail(p_.loc, "parameter \"{}\" needs a multiple of {} values, got {}", declaration(),
-                     type_.tuple, nums);
+      eyetrace::fail(p_.loc, "parameter \"{}\" needs a multiple of {} values, got {}", declaration(), type_.tuple,
+                     nums);
     if (type_.kind != ValueKind::Spectrum) return;
     if (nums > 1 && nums % 2 != 0)
-      eyetrace::fail(p_.loc,
-                     "parameter \"{}\" needs one constant value or (wavelength, value) pairs, got {} values",
+      eyetrace::fail(p_.loc, "parameter \"{}\" needs one constant value or (wavelength, value) pairs, got {} values",
                      declaration(), nums);
     if (p_.strings.size() > 1)
       eyetrace::fail(p_.loc, "parameter \"{}\" takes one spectrum name or file name, got {}", declaration(),
@@ -110,11 +105,8 @@ class ValueReader {
       case ValueKind::Spectrum:
         if (!p_.numbers.empty()) fail(t, "cannot mix numbers and a spectrum name");
         [[fallthrough]];
-      case ValueKind::Strings:
-        p_.strings.push_back(std::move(s));
-        return;
-      default:
-        fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
+      case ValueKind::Strings: p_.strings.push_back(std::move(s)); return;
+      default: fail(t, fmt::format("expected {}, got {}", expected(), t.describe()));
     }
   }
 
@@ -143,8 +135,7 @@ class ValueReader {
 Param declare(const Tokenizer& tok, const Token& decl) {
   std::string text = decl.string_value();
   std::vector<std::string> words = split_words(text);
-  if (words.size() != 2)
-    fail(tok.loc(decl), "malformed parameter declaration \"{}\": expected \"type name\"", text);
+  if (words.size() != 2) fail(tok.loc(decl), "malformed parameter declaration \"{}\": expected \"type name\"", text);
   if (!find_type(words[0])) {
     std::vector<std::string> names;
     for (const auto& t : kParamTypes) names.push_back(t.name);
@@ -167,23 +158,20 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
   Token v = tok.next();
   switch (v.kind) {
     case TokenKind::Word:
-    case TokenKind::String:
-      reader.add(v, nullptr);
-      break;
+    case TokenKind::String: reader.add(v, nullptr); break;
     case TokenKind::OpenBracket:
       for (Token t = tok.next(); t.kind != TokenKind::CloseBracket; t = tok.next()) {
         if (t.kind == TokenKind::End)
           fail(tok.loc(v), "parameter \"{} {}\": '[' has no matching ']' before the end of the file", p.type, p.name);
         if (t.kind == TokenKind::OpenBracket)
-          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)",
-               p.type, p.name, v.line, v.column);
+          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)", p.type,
+               p.name, v.line, v.column);
         reader.add(t, &v);
       }
       break;
     case TokenKind::CloseBracket:
       fail(tok.loc(v), "parameter \"{} {}\": unexpected ']' (no matching '[')", p.type, p.name);
-    case TokenKind::End:
-      fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
+    case TokenKind::End: fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
   }
   reader.check_counts();
   return p;

@@ -42,8 +42,7 @@ void ParameterList::note_query(const std::string& name) const {
 static void check_numbers(const Param& p) {
   for (double v : p.numbers) {
     if (!std::isfinite(v)) eyetrace::fail(p.loc, "parameter \"{}\" has a non-finite value", p.name);
-    if (std::abs(v) > 3.0e38)
-      eyetrace::fail(p.loc, "parameter \"{}\" value {} is out of the float range", p.name, v);
+    if (std::abs(v) > 3.0e38) eyetrace::fail(p.loc, "parameter \"{}\" value {} is out of the float range", p.name, v);
   }
 }
 
@@ -52,8 +51,7 @@ const Param* ParameterList::lookup(const std::string& name, const char* type, si
   const Param* p = find(name);
   if (!p) return nullptr;
   std::string t = p->canonical_type();
-  if (t != type)
-    eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"{}\"", name, p->type, type);
+  if (t != type) eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"{}\"", name, p->type, type);
   p->used = true;
   size_t n = p->numbers.size() + p->strings.size() + p->bools.size();
   if (n < min_values)
@@ -65,7 +63,8 @@ const Param* ParameterList::lookup(const std::string& name, const char* type, si
 float ParameterList::get_float(const std::string& name, float def) const {
   const Param* p = lookup(name, "float", 1);
   if (!p) return def;
-  if (p->numbers.size() != 1) eyetrace::fail(p->loc, "parameter \"{}\" takes one value, got {}", name, p->numbers.size());
+  if (p->numbers.size() != 1)
+    eyetrace::fail(p->loc, "parameter \"{}\" takes one value, got {}", name, p->numbers.size());
   double v = p->numbers[0];
   if (std::abs(v) > 3.0e38) eyetrace::fail(p->loc, "parameter \"{}\" value {} is out of the float range", name, v);
   return float(v);
@@ -74,7 +73,8 @@ float ParameterList::get_float(const std::string& name, float def) const {
 int ParameterList::get_int(const std::string& name, int def) const {
   const Param* p = lookup(name, "integer", 1);
   if (!p) return def;
-  if (p->numbers.size() != 1) eyetrace::fail(p->loc, "parameter \"{}\" takes one value, got {}", name, p->numbers.size());
+  if (p->numbers.size() != 1)
+    eyetrace::fail(p->loc, "parameter \"{}\" takes one value, got {}", name, p->numbers.size());
   double v = p->numbers[0];
   if (v != std::floor(v) || std::abs(v) > 2147483647.0)
     eyetrace::fail(p->loc, "parameter \"{}\" value {} is not a 32-bit integer", name, v);
@@ -124,7 +124,8 @@ std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
     check_numbers(*p);
     return spectrum_param_to_rgb(*p);
   }
-  eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name, p->type);
+  eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name,
+                 p->type);
 }
 
 float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, float def) const {

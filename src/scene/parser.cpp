@@ -138,8 +138,7 @@ bool SceneParser::skip_to_directive(Tokenizer& tok) {
 void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const {
   double v;
   if (parse_number(t.text, &v) != NumberStatus::NotANumber)
-    fail(loc, "unexpected number {} where a directive was expected (a list of several values needs [ ])",
-         t.text);
+    fail(loc, "unexpected number {} where a directive was expected (a list of several values needs [ ])", t.text);
   fail(loc, "unknown directive \"{}\"{}", t.text, hint_suffix(std::string(t.text), keys_of(handlers())));
 }
 
@@ -149,8 +148,9 @@ SceneDescription SceneParser::finish(const std::string& top_file) {
   if (cut_short_) errors_.throw_if_any();
   if (!blocks_.empty()) {
     const OpenBlock& b = blocks_.back();
-    const char* closer = b.directive == "ObjectBegin" ? "ObjectEnd"
-                         : b.directive == "TransformBegin" ? "TransformEnd" : "AttributeEnd";
+    const char* closer = b.directive == "ObjectBegin"      ? "ObjectEnd"
+                         : b.directive == "TransformBegin" ? "TransformEnd"
+                                                           : "AttributeEnd";
     errors_.add(Diagnostic{b.loc, "", Severity::Error,
                            fmt::format("{} has no matching {} before the end of the scene", b.directive, closer)});
   }
@@ -160,8 +160,7 @@ SceneDescription SceneParser::finish(const std::string& top_file) {
   return std::move(desc_);
 }
 
-fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc,
-                                      const char* directive) const {
+fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const {
   fs::path p(name);
   std::vector<fs::path> candidates;
   if (p.is_absolute()) {
@@ -192,8 +191,7 @@ void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char*
 
 std::string SceneParser::read_name(Tokenizer& tok, const char* directive, const char* what, SourceLoc* at) {
   Token t = tok.next();
-  if (t.kind != TokenKind::String)
-    fail(tok.loc(t), "{}: expected a quoted {}, got {}", directive, what, t.describe());
+  if (t.kind != TokenKind::String) fail(tok.loc(t), "{}: expected a quoted {}, got {}", directive, what, t.describe());
   if (at) *at = tok.loc(t);
   return t.string_value();
 }
@@ -248,22 +246,19 @@ SceneDescription parse_scene_file(const std::string& path) {
   return parser.finish(path);
 }
 
-SceneDescription parse_scene_string(std::string_view text, const std::string& filename,
-                                    const std::string& search_dir) {
+SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir) {
   SceneParser parser(absolute_dir(search_dir));
   parser.parse_text(std::string(text), filename);
   return parser.finish(filename);
 }
 
-SceneEntity parse_directive_text(std::string_view text, const std::string& directive,
-                                 const std::string& origin) {
+SceneEntity parse_directive_text(std::string_view text, const std::string& directive, const std::string& origin) {
   Tokenizer tok(std::string(text), origin);
   Token first = tok.peek();
   SourceLoc loc = tok.loc(first);
   // The keyword may be left out: `--camera '"thinlens" "float lensradius" 0.01'`.
   if (first.kind == TokenKind::Word) {
-    if (first.text != directive)
-      fail(loc, "expected a {} directive, got {}", directive, first.describe());
+    if (first.text != directive) fail(loc, "expected a {} directive, got {}", directive, first.describe());
     tok.next();
   }
   SceneEntity e;

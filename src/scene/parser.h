@@ -13,14 +13,12 @@ SceneDescription parse_scene_file(const std::string& path);
 
 // Parses scene text held in memory; `filename` is used in messages, `search_dir` resolves
 // Include/Import and relative paths.
-SceneDescription parse_scene_string(std::string_view text, const std::string& filename,
-                                    const std::string& search_dir);
+SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir);
 
 // Parses one directive given on the command line, e.g.
 //   Camera "thinlens" "float lensradius" 0.0025 "float focaldistance" 1.5
 // `directive` is the expected directive keyword ("Camera", "Film", "Sampler", ...); its
 // name and parameters are returned (messages refer to `origin`, e.g. "--camera").
-SceneEntity parse_directive_text(std::string_view text, const std::string& directive,
-                                 const std::string& origin);
+SceneEntity parse_directive_text(std::string_view text, const std::string& directive, const std::string& origin);
 
 }  // namespace eyetrace

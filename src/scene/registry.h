@@ -12,11 +12,11 @@
 #include "core/filter.h"
 #include "core/light.h"
 #include "core/material.h"
-#include "scene/params.h"
 #include "core/sampler.h"
 #include "core/shape.h"
 #include "core/texture.h"
 #include "core/transform.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 
@@ -36,8 +36,8 @@ struct CameraContext {
 struct SamplerContext {
   const ParameterList& params;
   IVec2 resolution;
-  int spp_override = 0;   // > 0: --spp from the command line replaces "pixelsamples"
-  uint64_t seed = 0;      // --seed (or the "seed" parameter)
+  int spp_override = 0;  // > 0: --spp from the command line replaces "pixelsamples"
+  uint64_t seed = 0;     // --seed (or the "seed" parameter)
 };
 
 struct ShapeContext {
@@ -111,8 +111,8 @@ void register_builtin_plugins(Registry& r);
 
 // Looks `name` up in `table`; unknown names are errors at `loc` that list the known ones.
 template <typename Map>
-const typename Map::mapped_type& find_plugin(const Map& table, const std::string& kind,
-                                             const std::string& name, const SourceLoc& loc) {
+const typename Map::mapped_type& find_plugin(const Map& table, const std::string& kind, const std::string& name,
+                                             const SourceLoc& loc) {
   auto it = table.find(name);
   if (it != table.end()) return it->second;
   std::vector<std::string> names;

@@ -41,7 +41,8 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   f.bounds = crop_to_pixels(f.resolution, crop);
   std::vector<int> pb = p.get_ints("pixelbounds");
   if (!pb.empty()) {
-    if (pb.size() != 4 || pb[0] < 0 || pb[1] > f.resolution.x || pb[2] < 0 || pb[3] > f.resolution.y || pb[0] >= pb[1] || pb[2] >= pb[3])
+    if (pb.size() != 4 || pb[0] < 0 || pb[1] > f.resolution.x || pb[2] < 0 || pb[3] > f.resolution.y ||
+        pb[0] >= pb[1] || pb[2] >= pb[3])
       p.fail("pixelbounds", "needs x0 < x1 <= xresolution and y0 < y1 <= yresolution");
     if (!o.crop) f.bounds = PixelBounds{IVec2(pb[0], pb[2]), IVec2(pb[1], pb[3])};
   }
@@ -75,8 +76,13 @@ class Builder {
     for (const auto& [name, def] : desc_.instances) {
       // No ray can reach an object that is never instanced: building its shapes and BVH
       // would only cost time and memory.
-      if (used.count(name)) attempt([&] { build_instance(def); });
-      else attempt([&] { warn(def.loc, fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name)); });
+      if (used.count(name))
+        attempt([&] { build_instance(def); });
+      else
+        attempt([&] {
+          warn(def.loc,
+               fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name));
+        });
     }
     for (const InstanceUse& u : desc_.instance_uses)
       attempt([&] {
@@ -195,8 +201,9 @@ class Builder {
           culprit = name;
           break;
         }
-      e->params.fail(culprit, "the light's power overflows the float range (its emission times \"scale\" times its "
-                              "size, or the scene's for a distant or infinite light, is above 3.4e38)");
+      e->params.fail(culprit,
+                     "the light's power overflows the float range (its emission times \"scale\" times its "
+                     "size, or the scene's for a distant or infinite light, is above 3.4e38)");
     }
   }
 
@@ -222,7 +229,8 @@ void check_memory(const FilmSettings& f, const RenderOverrides& o) {
   uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12);
   if (o.max_memory_bytes && bytes > o.max_memory_bytes)
     throw_error(fmt::format("a {}x{} film needs about {:.1f} GiB, more than the limit of {:.1f} GiB (--max-memory)",
-                            f.bounds.width(), f.bounds.height(), bytes / 1073741824.0, o.max_memory_bytes / 1073741824.0));
+                            f.bounds.width(), f.bounds.height(), bytes / 1073741824.0,
+                            o.max_memory_bytes / 1073741824.0));
 }
 
 // pbrt-v4 Options: "seed" seeds the sampler (unless --seed is given); the others change
@@ -240,8 +248,9 @@ std::optional<uint64_t> apply_options(const SceneDescription& desc) {
     }
   }
   if (desc.color_space != "srgb")
-    warn(SourceLoc{}, fmt::format("ColorSpace \"{}\": eyetrace renders in linear sRGB primaries; RGB values are used as given",
-                                  desc.color_space));
+    warn(SourceLoc{},
+         fmt::format("ColorSpace \"{}\": eyetrace renders in linear sRGB primaries; RGB values are used as given",
+                     desc.color_space));
   return seed;
 }
 

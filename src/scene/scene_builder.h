@@ -7,9 +7,9 @@
 #include <string>
 
 #include "core/camera.h"
+#include "core/sampler.h"
 #include "render/film.h"
 #include "render/integrator.h"
-#include "core/sampler.h"
 #include "render/scene.h"
 #include "scene/scene_description.h"
 #include "scene/texture_store.h"
@@ -17,12 +17,12 @@
 namespace eyetrace {
 
 struct RenderOverrides {
-  std::optional<SceneEntity> camera;      // --camera: replaces name and parameters, keeps the transform
-  std::optional<IVec2> resolution;        // --resolution
-  int spp = 0;                            // --spp
-  std::optional<uint64_t> seed;           // --seed
-  std::optional<Vec4> crop;               // --crop
-  uint64_t max_memory_bytes = 0;          // refuse scenes predicted to need more (0: no limit)
+  std::optional<SceneEntity> camera;  // --camera: replaces name and parameters, keeps the transform
+  std::optional<IVec2> resolution;    // --resolution
+  int spp = 0;                        // --spp
+  std::optional<uint64_t> seed;       // --seed
+  std::optional<Vec4> crop;           // --crop
+  uint64_t max_memory_bytes = 0;      // refuse scenes predicted to need more (0: no limit)
 };
 
 struct RenderSetup {
@@ -32,8 +32,8 @@ struct RenderSetup {
   std::unique_ptr<Sampler> sampler;
   std::unique_ptr<Film> film;
   std::unique_ptr<Integrator> integrator;
-  std::string output_filename;  // the Film's "filename" (the command line may override it)
-  std::string description;      // one line per plugin, for --verbose and logs
+  std::string output_filename;          // the Film's "filename" (the command line may override it)
+  std::string description;              // one line per plugin, for --verbose and logs
   std::vector<std::string> files_read;  // every file the plugins read (scene/scene_files.h), sorted
 };
 

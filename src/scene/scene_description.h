@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/params.h"
 #include "core/transform.h"
+#include "scene/params.h"
 
 namespace eyetrace {
 
@@ -65,12 +65,12 @@ struct SceneDescription {
   std::string color_space = "srgb";
   std::vector<SceneEntity> options;  // Option directives, one parameter each
 
-  std::vector<SceneEntity> materials;                   // anonymous, by index
-  std::map<std::string, SceneEntity> named_materials;   // MakeNamedMaterial
-  std::vector<TextureEntity> textures;                  // in file order (later may use earlier)
+  std::vector<SceneEntity> materials;                  // anonymous, by index
+  std::map<std::string, SceneEntity> named_materials;  // MakeNamedMaterial
+  std::vector<TextureEntity> textures;                 // in file order (later may use earlier)
   std::vector<ShapeEntity> shapes;
   std::vector<TransformedEntity> lights;
-  std::vector<TransformedEntity> area_lights;           // AreaLightSource, referenced by shapes
+  std::vector<TransformedEntity> area_lights;  // AreaLightSource, referenced by shapes
   std::map<std::string, InstanceDefinition> instances;
   std::vector<InstanceUse> instance_uses;
 

@@ -129,8 +129,10 @@ void SceneParser::apply(const SourceLoc& loc, const char* directive, const Trans
       fail(loc, "{} makes the current transform singular or non-finite", directive);
     std::string why = overflow_reason(r);
     if (!why.empty())
-      fail(loc, "{} makes the current transform {} (lengths between 1e-18 and 1e18 keep their squares in "
-                "single precision)", directive, why);
+      fail(loc,
+           "{} makes the current transform {} (lengths between 1e-18 and 1e18 keep their squares in "
+           "single precision)",
+           directive, why);
     state_.ctm[i] = r;
   }
 }
@@ -148,8 +150,7 @@ void SceneParser::push_block(const SourceLoc& loc, const char* directive) {
 void SceneParser::pop_block(const SourceLoc& loc, const char* directive, const char* opener) {
   if (blocks_.empty()) fail(loc, "{} without a matching {}", directive, opener);
   const OpenBlock& b = blocks_.back();
-  if (b.directive != opener)
-    fail(loc, "{} does not match the {} at {}", directive, b.directive, b.loc.to_string());
+  if (b.directive != opener) fail(loc, "{} does not match the {} at {}", directive, b.directive, b.loc.to_string());
   if (b.directive == "TransformBegin") {
     // pbrt-v3 semantics: TransformEnd restores the transform only.
     state_.ctm = b.saved.ctm;
@@ -193,7 +194,8 @@ void SceneParser::attribute(Tokenizer& tok, const SourceLoc& loc) {
     return;
   }
   if (!list)
-    fail(target_loc, "Attribute: unknown target \"{}\"; must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\"{}",
+    fail(target_loc,
+         "Attribute: unknown target \"{}\"; must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\"{}",
          target, hint_suffix(target, {"shape", "light", "material", "medium", "texture"}));
   for (const Param& p : params.params()) {
     std::erase_if(*list, [&](const Param& old) { return old.name == p.name; });
@@ -270,10 +272,14 @@ void SceneParser::reverse_orientation(Tokenizer&, const SourceLoc& loc) {
 
 void SceneParser::active_transform(Tokenizer& tok, const SourceLoc&) {
   Token t = tok.next();
-  if (t.kind == TokenKind::Word && t.text == "StartTime") state_.active = {true, false};
-  else if (t.kind == TokenKind::Word && t.text == "EndTime") state_.active = {false, true};
-  else if (t.kind == TokenKind::Word && t.text == "All") state_.active = {true, true};
-  else fail(tok.loc(t), "ActiveTransform: expected StartTime, EndTime or All, got {}", t.describe());
+  if (t.kind == TokenKind::Word && t.text == "StartTime")
+    state_.active = {true, false};
+  else if (t.kind == TokenKind::Word && t.text == "EndTime")
+    state_.active = {false, true};
+  else if (t.kind == TokenKind::Word && t.text == "All")
+    state_.active = {true, true};
+  else
+    fail(tok.loc(t), "ActiveTransform: expected StartTime, EndTime or All, got {}", t.describe());
 }
 
 void SceneParser::transform_times(Tokenizer& tok, const SourceLoc& loc) {
@@ -316,7 +322,8 @@ void SceneParser::color_space(Tokenizer& tok, const SourceLoc& loc) {
   if (std::find(known.begin(), known.end(), name) == known.end())
     fail(name_loc, "ColorSpace: unknown color space \"{}\"{}", name, hint_suffix(name, known));
   if (in_world_ && name != desc_.color_space)
-    warn(loc, fmt::format("per-object color spaces are not supported; ColorSpace \"{}\" applies to the whole scene", name));
+    warn(loc,
+         fmt::format("per-object color spaces are not supported; ColorSpace \"{}\" applies to the whole scene", name));
   desc_.color_space = name;
 }
 
@@ -354,7 +361,8 @@ void SceneParser::light_source(Tokenizer& tok, const SourceLoc& loc) {
   light.reverse_orientation = state_.reverse_orientation;
   if (current_object_)
     warn(loc, fmt::format("LightSource inside ObjectBegin \"{}\" is not instanced; it is placed once, "
-                          "with the transform at its definition", *current_object_));
+                          "with the transform at its definition",
+                          *current_object_));
   desc_.lights.push_back(std::move(light));
 }
 
@@ -483,8 +491,8 @@ void SceneParser::medium_interface(Tokenizer& tok, const SourceLoc& loc) {
   std::string outside = inside;
   if (tok.peek().kind == TokenKind::String) outside = tok.next().string_value();
   if (!inside.empty() || !outside.empty())
-    warn(loc, fmt::format("participating media are not supported; MediumInterface \"{}\" \"{}\" ignored",
-                          inside, outside));
+    warn(loc,
+         fmt::format("participating media are not supported; MediumInterface \"{}\" \"{}\" ignored", inside, outside));
 }
 
 }  // namespace eyetrace::parsing

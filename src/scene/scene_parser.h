@@ -141,7 +141,7 @@ class SceneParser {
   std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;
   std::map<std::string, SourceLoc> named_material_locs_;
   std::optional<std::string> current_object_;
-  DiagnosticList errors_;  // every failed directive, reported together by finish()
+  DiagnosticList errors_;   // every failed directive, reported together by finish()
   bool cut_short_ = false;  // an error ended the parse before the end of the text
   bool in_world_ = false;
   bool warned_transform_begin_ = false;

@@ -35,7 +35,8 @@ const NamedSpectrum& named_of(const Param& p) {
 Pairs pairs_of(const Param& p) {
   const auto& v = p.numbers;
   if (v.size() < 2 || v.size() % 2 != 0)
-    fail(p.loc, "parameter \"{}\": a spectrum is one value or (wavelength, value) pairs; got {} values", p.name, v.size());
+    fail(p.loc, "parameter \"{}\": a spectrum is one value or (wavelength, value) pairs; got {} values", p.name,
+         v.size());
   std::vector<float> lambda, value;
   for (size_t i = 0; i < v.size(); i += 2) {
     if (v[i] <= 0.0 || (!lambda.empty() && float(v[i]) <= lambda.back()))

@@ -85,7 +85,8 @@ const FloatTexture* TextureStore::float_param_or_null(const ParameterList& param
     std::string tex = params.get_texture(name);
     if (const FloatTexture* t = named_float(tex)) return t;
     if (named_spectrum(tex))
-      params.fail(name, fmt::format("texture \"{}\" is a spectrum texture, but \"{}\" needs a float texture", tex, name));
+      params.fail(name,
+                  fmt::format("texture \"{}\" is a spectrum texture, but \"{}\" needs a float texture", tex, name));
     unknown_texture(params, name, tex, "float", names_of(floats_));
   }
   if (!params.has(name)) {
@@ -95,7 +96,8 @@ const FloatTexture* TextureStore::float_param_or_null(const ParameterList& param
   return keep(std::make_unique<ConstantFloatTexture>(params.get_float(name, 0.f)));
 }
 
-const SpectrumTexture* TextureStore::spectrum_param(const ParameterList& params, const std::string& name, const RGB& def) {
+const SpectrumTexture* TextureStore::spectrum_param(const ParameterList& params, const std::string& name,
+                                                    const RGB& def) {
   if (const SpectrumTexture* t = spectrum_param_or_null(params, name)) return t;
   return keep(std::make_unique<ConstantSpectrumTexture>(def));
 }
@@ -115,7 +117,7 @@ const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList&
 void* TextureStore::texture_system() {
   if (!texture_system_) {
     OIIO::TextureSystem* ts = OIIO::TextureSystem::create(true);
-    ts->attribute("automip", 1);      // trilinear/ewa on plain (un-MIPmapped) images
+    ts->attribute("automip", 1);  // trilinear/ewa on plain (un-MIPmapped) images
     ts->attribute("autotile", 64);
     ts->attribute("max_memory_MB", 1024.f);
     texture_system_ = ts;

@@ -9,9 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/params.h"
 #include "core/texture.h"
-
+#include "scene/params.h"
 
 namespace eyetrace {
 
@@ -23,7 +22,7 @@ class TextureStore {
 
   void add_float(const std::string& name, std::unique_ptr<FloatTexture> tex, const SourceLoc& loc);
   void add_spectrum(const std::string& name, std::unique_ptr<SpectrumTexture> tex, const SourceLoc& loc);
-  const FloatTexture* named_float(const std::string& name) const;      // null if unknown
+  const FloatTexture* named_float(const std::string& name) const;  // null if unknown
   const SpectrumTexture* named_spectrum(const std::string& name) const;
 
   // A "float NAME" constant or "texture NAME" reference; `def` when absent.

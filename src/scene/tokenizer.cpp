@@ -15,7 +15,14 @@ bool ends_word(char c) { return is_space(c) || c == '"' || c == '[' || c == ']' 
 
 bool is_known_escape(char c) {
   switch (c) {
-    case 'b': case 'f': case 'n': case 'r': case 't': case '\\': case '\'': case '"': return true;
+    case 'b':
+    case 'f':
+    case 'n':
+    case 'r':
+    case 't':
+    case '\\':
+    case '\'':
+    case '"': return true;
     default: return false;
   }
 }
@@ -63,8 +70,7 @@ std::string Token::describe() const {
   return "end of file";
 }
 
-Tokenizer::Tokenizer(std::string text, std::string filename)
-    : text_(std::move(text)), filename_(std::move(filename)) {
+Tokenizer::Tokenizer(std::string text, std::string filename) : text_(std::move(text)), filename_(std::move(filename)) {
   auto byte = [&](size_t i) { return i < text_.size() ? (unsigned char)text_[i] : 0u; };
   if ((byte(0) == 0xfe && byte(1) == 0xff) || (byte(0) == 0xff && byte(1) == 0xfe))
     throw_error(SourceLoc{filename_, 1, 1}, "file is UTF-16 encoded; save it as UTF-8 or ASCII");

@@ -123,13 +123,9 @@ DRay AnalyticShape::to_object(const Vec3& o, const Vec3& d) const {
   return r;
 }
 
-Vec3 AnalyticShape::point_to_world(const glm::dvec3& p) const {
-  return Vec3(world_from_object_ * glm::dvec4(p, 1.0));
-}
+Vec3 AnalyticShape::point_to_world(const glm::dvec3& p) const { return Vec3(world_from_object_ * glm::dvec4(p, 1.0)); }
 
-Vec3 AnalyticShape::vector_to_world(const glm::dvec3& v) const {
-  return Vec3(world_from_object_ * glm::dvec4(v, 0.0));
-}
+Vec3 AnalyticShape::vector_to_world(const glm::dvec3& v) const { return Vec3(world_from_object_ * glm::dvec4(v, 0.0)); }
 
 Vec3 AnalyticShape::normal_to_world(const glm::dvec3& n) const {
   glm::dvec3 w = glm::normalize(normal_from_object_ * n);

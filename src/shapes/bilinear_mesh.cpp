@@ -53,20 +53,23 @@ std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContex
   if (indices.empty()) {
     if (nv != 4)
       params.fail("indices", fmt::format("vertex indices are required unless the mesh has exactly 4 vertices "
-                                         "(it has {})", nv));
+                                         "(it has {})",
+                                         nv));
     indices = {0, 1, 2, 3};
   }
   if (indices.size() % 4 != 0)
     params.fail("indices", fmt::format("{} vertex indices is not a multiple of 4", indices.size()));
   for (size_t i = 0; i < indices.size(); ++i)
     if (indices[i] < 0 || size_t(indices[i]) >= nv)
-      params.fail("indices", fmt::format("index {} (entry {}) is out of range: there are {} vertices", indices[i], i, nv));
+      params.fail("indices",
+                  fmt::format("index {} (entry {}) is out of range: there are {} vertices", indices[i], i, nv));
   if (!normals.empty() && normals.size() != nv)
     params.fail("N", fmt::format("{} normals given for {} vertices", normals.size(), nv));
   if (!uvs.empty() && uvs.size() != nv)
     params.fail("uv", fmt::format("{} uv values given for {} vertices", uvs.size(), nv));
   if (!face_indices.empty() && face_indices.size() != indices.size() / 4)
-    params.fail("faceIndices", fmt::format("{} face indices given for {} patches", face_indices.size(), indices.size() / 4));
+    params.fail("faceIndices",
+                fmt::format("{} face indices given for {} patches", face_indices.size(), indices.size() / 4));
 
   MeshData mesh = bilinear_patches_to_triangles(positions, indices, normals, uvs);
   std::vector<std::unique_ptr<Shape>> shapes;

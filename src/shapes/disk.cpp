@@ -87,7 +87,8 @@ std::vector<std::unique_ptr<Shape>> create_disk_shapes(const ShapeContext& ctx) 
     params.fail("phimax", fmt::format("must be in (0, 360] degrees, got {}", phimax));
   warn_alpha_unsupported(params, "disk");
   std::vector<std::unique_ptr<Shape>> shapes;
-  shapes.push_back(std::make_unique<Disk>(ctx.world_from_object, ctx.reverse_orientation, height, radius, inner, phimax));
+  shapes.push_back(
+      std::make_unique<Disk>(ctx.world_from_object, ctx.reverse_orientation, height, radius, inner, phimax));
   return shapes;
 }
 

@@ -12,8 +12,8 @@ namespace eyetrace {
 class Disk : public AnalyticShape {
  public:
   // phimax in degrees; 0 <= inner_radius < radius.
-  Disk(const Transform& world_from_object, bool reverse_orientation, double height, double radius,
-       double inner_radius, double phimax_deg);
+  Disk(const Transform& world_from_object, bool reverse_orientation, double height, double radius, double inner_radius,
+       double phimax_deg);
 
   float area() const override { return float(area_); }
   ShapeSample sample_area(Vec2 u) const override;

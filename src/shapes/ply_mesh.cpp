@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "shapes/ply_reader.h"
 #include "scene/scene_files.h"
+#include "shapes/ply_reader.h"
 
 namespace eyetrace {
 
@@ -31,8 +31,7 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
   // Per-vertex data must cover every vertex or none.
   if (mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
   if (mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
-  if (mesh.indices.empty())
-    params.fail("filename", fmt::format("\"{}\" contains no triangles or quads", path));
+  if (mesh.indices.empty()) params.fail("filename", fmt::format("\"{}\" contains no triangles or quads", path));
   return mesh;
 }
 
@@ -55,7 +54,8 @@ std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ct
   source.p = source.indices = source.n = source.uv = "filename";
   source.context = fmt::format("\"{}\": ", path.string());
   std::vector<std::unique_ptr<Shape>> shapes;
-  shapes.push_back(std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source));
+  shapes.push_back(
+      std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source));
   return shapes;
 }
 

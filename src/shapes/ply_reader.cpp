@@ -3,9 +3,9 @@
 #include "shapes/ply_reader.h"
 
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <climits>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -49,8 +49,8 @@ bool parse_scalar(const std::string& type, Scalar* s) {
     const char* name;
     const char* alias;
     Scalar scalar;
-  } kTypes[] = {{"char", "int8", {1, 'i'}},   {"uchar", "uint8", {1, 'u'}},   {"short", "int16", {2, 'i'}},
-                {"ushort", "uint16", {2, 'u'}}, {"int", "int32", {4, 'i'}},   {"uint", "uint32", {4, 'u'}},
+  } kTypes[] = {{"char", "int8", {1, 'i'}},     {"uchar", "uint8", {1, 'u'}},   {"short", "int16", {2, 'i'}},
+                {"ushort", "uint16", {2, 'u'}}, {"int", "int32", {4, 'i'}},     {"uint", "uint32", {4, 'u'}},
                 {"float", "float32", {4, 'f'}}, {"double", "float64", {8, 'f'}}};
   for (const auto& t : kTypes)
     if (type == t.name || type == t.alias) {
@@ -112,7 +112,9 @@ Header parse_header(const std::string& bytes) {
     if (w[0] == "format") {
       if (w.size() != 3 || (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
         throw PlyError(fmt::format("header line {}: unsupported format", line));
-      h.format = w[1] == "ascii" ? Format::Ascii : w[1] == "binary_little_endian" ? Format::LittleEndian : Format::BigEndian;
+      h.format = w[1] == "ascii"                  ? Format::Ascii
+                 : w[1] == "binary_little_endian" ? Format::LittleEndian
+                                                  : Format::BigEndian;
       have_format = true;
     } else if (w[0] == "element") {
       add_element(w, line, h);
@@ -137,9 +139,10 @@ void check_declared_size(const Header& h, size_t available) {
     // An ascii value is at least a character and a separator (the file's last may lack one).
     double needed = double(e.count) * per_element - (h.format == Format::Ascii ? 1.0 : 0.0);
     if (needed > double(available))
-      throw PlyError(fmt::format("the header declares {} {} element(s), which need at least {:.0f} bytes, but the "
-                                 "file holds only {} bytes of data (is the file truncated?)",
-                                 e.count, e.name, needed, available));
+      throw PlyError(
+          fmt::format("the header declares {} {} element(s), which need at least {:.0f} bytes, but the "
+                      "file holds only {} bytes of data (is the file truncated?)",
+                      e.count, e.name, needed, available));
   }
 }
 

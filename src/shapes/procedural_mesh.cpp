@@ -5,8 +5,7 @@
 namespace eyetrace {
 
 ProceduralMesh make_uv_sphere_mesh(int rings, int segments, float radius) {
-  if (rings < 2 || segments < 3)
-    throw std::invalid_argument("make_uv_sphere_mesh: needs rings >= 2 and segments >= 3");
+  if (rings < 2 || segments < 3) throw std::invalid_argument("make_uv_sphere_mesh: needs rings >= 2 and segments >= 3");
   ProceduralMesh m;
   auto vertex = [&](double theta, double phi) {
     glm::dvec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));

@@ -11,8 +11,8 @@ namespace eyetrace {
 
 struct ProceduralMesh {
   std::vector<Vec3> positions;
-  std::vector<int> indices;  // 3 per triangle, counter-clockwise seen from outside
-  std::vector<Vec3> normals; // unit, outward (the exact sphere normals at the vertices)
+  std::vector<int> indices;   // 3 per triangle, counter-clockwise seen from outside
+  std::vector<Vec3> normals;  // unit, outward (the exact sphere normals at the vertices)
 };
 
 // A sphere of `radius` about the origin: `rings` latitude bands (>= 2) between the poles,

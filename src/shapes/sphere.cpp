@@ -9,8 +9,8 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586476925;
 }
 
-Sphere::Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin,
-               double zmax, double phimax_deg)
+Sphere::Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin, double zmax,
+               double phimax_deg)
     : AnalyticShape(world_from_object, reverse_orientation), radius_(radius) {
   zmin_ = std::clamp(std::min(zmin, zmax), -radius, radius);
   zmax_ = std::clamp(std::max(zmin, zmax), -radius, radius);
@@ -119,13 +119,14 @@ std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx
     std::swap(zmin, zmax);
   }
   if (!(std::min(zmax, radius) > std::max(zmin, -radius)))
-    params.fail("zmin", fmt::format("the cut [zmin, zmax] = [{}, {}] leaves nothing of a sphere of radius {}",
-                                    zmin, zmax, radius));
+    params.fail("zmin", fmt::format("the cut [zmin, zmax] = [{}, {}] leaves nothing of a sphere of radius {}", zmin,
+                                    zmax, radius));
   warn_alpha_unsupported(params, "sphere");
   auto sphere = std::make_unique<Sphere>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax, phimax);
   if (!sphere->is_similarity())
-    warn(params.loc(), "sphere: the transform scales non-uniformly; area sampling (for area lights) treats the "
-                       "ellipsoid as if uniformly scaled, so its density is approximate");
+    warn(params.loc(),
+         "sphere: the transform scales non-uniformly; area sampling (for area lights) treats the "
+         "ellipsoid as if uniformly scaled, so its density is approximate");
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(std::move(sphere));
   return shapes;

@@ -13,8 +13,8 @@ namespace eyetrace {
 class Sphere : public AnalyticShape {
  public:
   // zmin/zmax are clamped to [-radius, radius]; phimax in degrees.
-  Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin,
-         double zmax, double phimax_deg);
+  Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin, double zmax,
+         double phimax_deg);
 
   float area() const override { return float(area_); }
   ShapeSample sample_area(Vec2 u) const override;

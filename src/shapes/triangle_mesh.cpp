@@ -33,8 +33,8 @@ void warn_alpha_unsupported(const ParameterList& params, const std::string& shap
   } else if (params.get_float("alpha", 1.f) == 1.f) {
     return;  // fully opaque: nothing is lost
   }
-  warn(p->loc, fmt::format("{}: parameter \"alpha\": alpha cutouts are not supported; the shape is opaque",
-                           shape_name));
+  warn(p->loc,
+       fmt::format("{}: parameter \"alpha\": alpha cutouts are not supported; the shape is opaque", shape_name));
 }
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation,
@@ -57,23 +57,24 @@ void TriangleMesh::validate(MeshData& mesh, const MeshSource& src) const {
   if (mesh.indices.empty()) {
     if (nv != 3)
       params.fail(src.indices, src.context + fmt::format("vertex indices are required unless the mesh has "
-                                                         "exactly 3 vertices (it has {})", nv));
+                                                         "exactly 3 vertices (it has {})",
+                                                         nv));
     mesh.indices = {0, 1, 2};
   }
   if (mesh.indices.size() % 3 != 0)
-    params.fail(src.indices, src.context + fmt::format("{} vertex indices is not a multiple of 3",
-                                                       mesh.indices.size()));
+    params.fail(src.indices,
+                src.context + fmt::format("{} vertex indices is not a multiple of 3", mesh.indices.size()));
   for (size_t i = 0; i < mesh.indices.size(); ++i)
     if (mesh.indices[i] < 0 || size_t(mesh.indices[i]) >= nv)
       params.fail(src.indices, src.context + fmt::format("index {} (entry {}) is out of range: there are {} "
-                                                         "vertices", mesh.indices[i], i, nv));
+                                                         "vertices",
+                                                         mesh.indices[i], i, nv));
   if (!mesh.normals.empty() && mesh.normals.size() != nv)
     params.fail(src.n, src.context + fmt::format("{} normals given for {} vertices", mesh.normals.size(), nv));
   if (!mesh.uvs.empty() && mesh.uvs.size() != nv)
     params.fail(src.uv, src.context + fmt::format("{} uv values given for {} vertices", mesh.uvs.size(), nv));
   for (size_t i = 0; i < nv; ++i)
-    if (!finite3(mesh.positions[i]))
-      params.fail(src.p, src.context + fmt::format("vertex {} is not finite", i));
+    if (!finite3(mesh.positions[i])) params.fail(src.p, src.context + fmt::format("vertex {} is not finite", i));
 }
 
 void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, const MeshSource& src) {
@@ -110,8 +111,8 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
     }
   }
   if (dropped_ > 0)
-    warn(src.params.loc(), src.context + fmt::format("dropped {} degenerate (zero-area) triangle(s) of {}",
-                                                     dropped_, mesh.indices.size() / 3));
+    warn(src.params.loc(), src.context + fmt::format("dropped {} degenerate (zero-area) triangle(s) of {}", dropped_,
+                                                     mesh.indices.size() / 3));
   if (indices_.empty() || !(total > 0.0) || !std::isfinite(total))
     src.params.fail(src.p, src.context + "the mesh has no triangle of nonzero, finite area");
   for (double& c : cdf_) c /= total;
@@ -124,10 +125,10 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
 unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Shared buffers: Embree reads our arrays directly, no second copy of a large mesh.
-  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions_.data(), 0,
-                             sizeof(Vec3), vertex_count_);
-  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices_.data(), 0,
-                             3 * sizeof(uint32_t), indices_.size() / 3);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions_.data(), 0, sizeof(Vec3),
+                             vertex_count_);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices_.data(), 0, 3 * sizeof(uint32_t),
+                             indices_.size() / 3);
   rtcCommitGeometry(geom);
   unsigned id = rtcAttachGeometry(scene, geom);
   rtcReleaseGeometry(geom);
@@ -177,8 +178,7 @@ float TriangleMesh::embree_plane_error(const Corner& c) {
   return gamma(16) * std::sqrt(longest2 * (l1_2 / cross2) * l2_2);
 }
 
-void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n,
-                              Vec3* ns) const {
+void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const {
   // pbrt: n along cross(p0 - p2, p1 - p2) of the world-space corners, flipped when
   // ReverseOrientation XOR the transform swaps handedness; given shading normals instead
   // decide the side the geometric normal faces.

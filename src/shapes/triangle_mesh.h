@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "scene/registry.h"
 #include "core/shape.h"
 #include "core/transform.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 
@@ -36,8 +36,7 @@ class TriangleMesh : public Shape {
   // Validates `mesh` (indices in range and a multiple of 3, per-vertex arrays as long as
   // "P", finite world positions), moves it to world space and drops zero-area triangles
   // with one counted warning. An empty result is an error.
-  TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation,
-               const MeshSource& source);
+  TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation, const MeshSource& source);
 
   unsigned attach(RTCDevice device, RTCScene scene) const override;
   SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
@@ -72,11 +71,11 @@ class TriangleMesh : public Shape {
   std::vector<uint32_t> indices_;
   std::vector<Vec3> normals_;  // world space, reverse orientation applied; may be empty
   std::vector<Vec2> uvs_;
-  std::vector<double> cdf_;    // cumulative triangle area / total, for area sampling
+  std::vector<double> cdf_;        // cumulative triangle area / total, for area sampling
   std::vector<Vec3> point_error_;  // triangle_error of each kept triangle
   float area_ = 0.f;
   Bounds3 bounds_;
-  bool flip_normal_ = false;   // reverse_orientation XOR transform swaps handedness
+  bool flip_normal_ = false;  // reverse_orientation XOR transform swaps handedness
   int dropped_ = 0;
 };
 

@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "render/image_io.h"
+#include "scene/scene_files.h"
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
-#include "scene/scene_files.h"
 
 namespace eyetrace {
 
@@ -24,7 +24,7 @@ struct ImageLookup {
   TextureSystem* ts = nullptr;
   TextureSystem::TextureHandle* handle = nullptr;
   TextureOpt opt;
-  int channels = 0;      // colour channels in the file (alpha excluded when we can tell)
+  int channels = 0;  // colour channels in the file (alpha excluded when we can tell)
   Encoding encoding = Encoding::Linear;
   float gamma = 1.f;
   float scale = 1.f;
@@ -43,8 +43,10 @@ struct ImageLookup {
   }
 
   float finish(float v) const {
-    if (encoding == Encoding::SRGB) v = srgb_to_linear(v);
-    else if (encoding == Encoding::Gamma) v = std::pow(std::max(v, 0.f), gamma);
+    if (encoding == Encoding::SRGB)
+      v = srgb_to_linear(v);
+    else if (encoding == Encoding::Gamma)
+      v = std::pow(std::max(v, 0.f), gamma);
     v *= scale;
     if (invert) v = std::max(0.f, 1.f - v);
     return std::isfinite(v) ? v : 0.f;

@@ -11,8 +11,8 @@
 #pragma once
 #include <memory>
 
-#include "scene/registry.h"
 #include "core/texture.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -9,7 +9,8 @@ namespace {
 template <typename Base, typename Value>
 class MixTexture final : public Base {
  public:
-  MixTexture(const Base* tex1, const Base* tex2, const FloatTexture* amount) : tex1_(tex1), tex2_(tex2), amount_(amount) {}
+  MixTexture(const Base* tex1, const Base* tex2, const FloatTexture* amount)
+      : tex1_(tex1), tex2_(tex2), amount_(amount) {}
   Value evaluate(const TextureEvalContext& ctx) const override {
     float a = amount_->evaluate(ctx);
     // Skip the texture whose weight is zero (it may be expensive).

@@ -21,7 +21,8 @@ TextureMapping2D TextureMapping2D::read(const TextureContext& ctx) {
     m.v1_ = p.get_vector3("v1", m.v1_);
     m.v2_ = p.get_vector3("v2", m.v2_);
   } else {
-    p.fail("mapping", fmt::format("unknown texture mapping \"{}\"; eyetrace supports uv, spherical, cylindrical, planar", kind));
+    p.fail("mapping",
+           fmt::format("unknown texture mapping \"{}\"; eyetrace supports uv, spherical, cylindrical, planar", kind));
   }
   if (m.kind_ == Kind::UV || m.kind_ == Kind::Planar)
     m.delta_ = Vec2(p.get_float("udelta", 0.f), p.get_float("vdelta", 0.f));

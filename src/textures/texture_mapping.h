@@ -4,9 +4,9 @@
 //  "cylindrical": s = (pi + atan2(y, x)) / (2 pi), t = z in texture space;
 //  "planar": s = udelta + dot(p, v1), t = vdelta + dot(p, v2) in texture space.
 #pragma once
-#include "scene/registry.h"
 #include "core/texture.h"
 #include "core/transform.h"
+#include "scene/registry.h"
 
 namespace eyetrace {
 

@@ -38,7 +38,8 @@ const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
 // comes early and the render is far from done when the signal lands.
 std::vector<std::string> render_args(const std::string& output, const std::string& spp = "256",
                                      const std::string& seed = "7", const std::string& threads = "1") {
-  return {"render", kScene, "--resolution", "32x32", "--spp", spp, "--threads", threads, "--seed", seed, "-q", "-o", output};
+  return {"render", kScene,   "--resolution", "32x32", "--spp", spp,   "--threads",
+          threads,  "--seed", seed,           "-q",    "-o",    output};
 }
 
 struct TempDir {

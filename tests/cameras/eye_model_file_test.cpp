@@ -66,8 +66,7 @@ TEST(EyeModelFile, RegisteredModelIsBuiltAnalysedAndRendered) {
   // the aqueous: within 0.2 D).
   const double delta_power = (1.376 - 1.0) * (1.0 / 7.5 - 1.0 / 7.72) * 1000.0;
   o.model = "navarro";
-  EXPECT_NEAR(optics::refraction_D(loaded) - optics::refraction_D(optics::make_eye(o)), -delta_power,
-              0.2);
+  EXPECT_NEAR(optics::refraction_D(loaded) - optics::refraction_D(optics::make_eye(o)), -delta_power, 0.2);
   // Its accommodation law comes from the file like everything else.
   EXPECT_EQ(optics::max_accommodation_D("steep-cornea"), optics::max_accommodation_D("navarro"));
 

@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "cameras/lens_system_camera.h"
-#include "scene/parser.h"
 #include "optics/paraxial.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
@@ -130,15 +130,16 @@ TEST(EyeParams, RealisticCameraFileErrors) {
     std::ofstream f(dir + "/eyecam_ok.dat");
     f << "0 0 0 6\n80 3 1.5 12\n-80 60 0 12\n";
   }
-  const std::string inside = error_of(
-      "Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\" \"float focusdistance\" 0.01", dir);
+  const std::string inside =
+      error_of("Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\" \"float focusdistance\" 0.01", dir);
   EXPECT_TRUE(contains(inside, "parameter \"focusdistance\"")) << inside;
   // pbrt-v4 clamps an aperture wider than the stop (with a warning) rather than failing.
   const optics::Prescription p =
       prescription_of("Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\" \"float aperturediameter\" 9", dir);
   EXPECT_DOUBLE_EQ(p.stop_diameter_mm(), 6.0);
-  EXPECT_DOUBLE_EQ(prescription_of("Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\"", dir).stop_diameter_mm(),
-                   1.0);  // pbrt-v4's default aperturediameter
+  EXPECT_DOUBLE_EQ(
+      prescription_of("Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\"", dir).stop_diameter_mm(),
+      1.0);  // pbrt-v4's default aperturediameter
 }
 
 TEST(EyeParams, OnlyLensCamerasHaveAPrescription) {

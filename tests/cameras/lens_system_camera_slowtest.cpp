@@ -9,8 +9,8 @@
 #include <random>
 
 #include "cameras/lens_system_camera.h"
-#include "scene/parser.h"
 #include "optics/eye_models.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
@@ -19,7 +19,8 @@ struct Counts {
   long samples = 0, rays = 0, reversed = 0, reverse_failures = 0;
 };
 
-void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Counts& counts, const std::string& label) {
+void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Counts& counts,
+            const std::string& label) {
   std::uniform_real_distribution<float> u(0.f, 1.f);
   const double bound = cam.max_weight();
   ASSERT_TRUE(std::isfinite(bound) && bound > 0.0) << label;
@@ -55,7 +56,9 @@ void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Co
     // Rays within float rounding of an aperture edge may flip: counted, bounded below.
     if (!back.ok() || glm::length(back.ray.origin - rp->position) > 1e-4) {
       ++counts.reverse_failures;
-      if (counts.reverse_failures < 20) printf("%s\n  status %s surf %d dist %g arc %g film %g %g\n", label.c_str(), optics::to_string(back.status), back.surface, glm::length(back.ray.origin - rp->position), rp->arc_mm, cs.p_film.x, cs.p_film.y);
+      if (counts.reverse_failures < 20)
+        printf("%s\n  status %s surf %d dist %g arc %g film %g %g\n", label.c_str(), optics::to_string(back.status),
+               back.surface, glm::length(back.ray.origin - rp->position), rp->arc_mm, cs.p_film.x, cs.p_film.y);
     }
   }
 }
@@ -95,10 +98,11 @@ TEST(LensSystemCameraSlow, TenMillionRandomSamplesAreFiniteUnitBoundedAndReal) {
     stress(dynamic_cast<const LensSystemCamera&>(*cam), res, 200'000, rng, counts, text);
     if (HasFailure()) return;
   }
-  std::printf("%d cameras (%d refused a too-wide fov for flat/retina), %ld samples, %ld rays (%.1f%%), %ld reversed, "
-              "%ld not reversible\n",
-              cameras, skipped, counts.samples, counts.rays, 100.0 * counts.rays / counts.samples, counts.reversed,
-              counts.reverse_failures);
+  std::printf(
+      "%d cameras (%d refused a too-wide fov for flat/retina), %ld samples, %ld rays (%.1f%%), %ld reversed, "
+      "%ld not reversible\n",
+      cameras, skipped, counts.samples, counts.rays, 100.0 * counts.rays / counts.samples, counts.reversed,
+      counts.reverse_failures);
   EXPECT_GE(counts.samples, 10'000'000);
   EXPECT_LT(counts.reverse_failures, counts.reversed / 1000 + 1);
 }

@@ -13,12 +13,11 @@
 #include <fmt/format.h>
 
 #include "cameras/perspective_camera.h"
-#include "scene/parser.h"
 #include "optics/paraxial.h"
+#include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
-
 
 std::unique_ptr<LensSystemCamera> eye_camera(const std::string& params, IVec2 res = IVec2(256, 256)) {
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");
@@ -128,9 +127,10 @@ std::vector<Ray> bundle(const Camera& cam, Vec2 p_film, int n) {
 // A uniform white scene: the mean weight at the image centre is the radiance, 1. Tolerance:
 // 5 standard errors (i.i.d. bound) of a 256 x 256 jittered estimate.
 TEST(LensSystemCamera, UniformSceneCentreMeanWeightIsOne) {
-  for (const char* params : {"\"float pupildiameter\" 5", "\"string model\" \"gullstrand\" \"float pupildiameter\" 2",
-                             "\"string model\" \"legrand\" \"float pupildiameter\" 8 \"float accommodation\" 3",
-                             "\"string model\" \"kooijman\"", "\"float accommodation\" 6 \"string mapping\" \"retina\""}) {
+  for (const char* params :
+       {"\"float pupildiameter\" 5", "\"string model\" \"gullstrand\" \"float pupildiameter\" 2",
+        "\"string model\" \"legrand\" \"float pupildiameter\" 8 \"float accommodation\" 3",
+        "\"string model\" \"kooijman\"", "\"float accommodation\" 6 \"string mapping\" \"retina\""}) {
     auto cam = eye_camera(params);
     const Estimate e = mean_weight(*cam, Vec2(128.f, 128.f), 256, 1);
     EXPECT_NEAR(e.mean, 1.0, 5.0 * e.stderr_ + 1e-4) << params;
@@ -203,8 +203,8 @@ TEST(LensSystemCamera, RotatedRetinaPointsGiveRotatedRays) {
 // A scene point up-left of the axis must appear up-left in the image: the ray through an
 // upper-left pixel goes up (+y) and left (-x) in camera space.
 TEST(LensSystemCamera, ImageIsUprightAndNotMirrored) {
-  for (const char* params : {"", "\"string mapping\" \"flat\"", "\"string mapping\" \"retina\"",
-                             "\"string model\" \"gullstrand\""}) {
+  for (const char* params :
+       {"", "\"string mapping\" \"flat\"", "\"string mapping\" \"retina\"", "\"string model\" \"gullstrand\""}) {
     auto cam = eye_camera(params);
     CameraSample cs;
     cs.p_film = Vec2(40.f, 60.f);  // left of and above the centre (raster y grows downwards)

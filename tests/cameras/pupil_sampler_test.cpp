@@ -110,9 +110,10 @@ TEST(PupilSampler, NoPassingRayOutsideTheSampledRegion) {
                                                "\"float accommodation\" 5 \"float fov\" 120"),
                                      "legrand accommodated"),
             0.0);
-  EXPECT_EQ(passing_outside_fraction(*make_eye("\"string model\" \"kooijman\" \"float pupildiameter\" 0.5 \"float fov\" 120"),
-                                     "kooijman 0.5 mm"),
-            0.0);
+  EXPECT_EQ(
+      passing_outside_fraction(*make_eye("\"string model\" \"kooijman\" \"float pupildiameter\" 0.5 \"float fov\" 120"),
+                               "kooijman 0.5 mm"),
+      0.0);
 }
 
 // A multi-element camera lens (pbrt's double Gauss, US patent 2,673,491 at 50 mm) wide open,
@@ -126,7 +127,8 @@ TEST(PupilSampler, NoPassingRayOutsideForDoubleGaussLens) {
          "-20.385 0.19 1 20\n437.065 3.22 1.717 20\n-39.73 40 1 20\n";
   }
   SceneEntity e = parse_directive_text(
-      "Camera \"realistic\" \"string lensfile\" \"eyecam_dgauss2.dat\" \"float aperturediameter\" 17.1", "Camera", "test");
+      "Camera \"realistic\" \"string lensfile\" \"eyecam_dgauss2.dat\" \"float aperturediameter\" 17.1", "Camera",
+      "test");
   CameraContext ctx{e.params, Transform(), IVec2(300, 200), dir};
   std::unique_ptr<Camera> cam = create_realistic_camera(ctx);
   EXPECT_EQ(passing_outside_fraction(dynamic_cast<const LensSystemCamera&>(*cam), "double Gauss"), 0.0);
@@ -138,12 +140,14 @@ TEST(PupilSampler, NoPassingRayOutsideForDoubleGaussLens) {
 // The sampler (a star-shaped region) does not find it; measured: 1e-4 of the passing rays.
 TEST(PupilSampler, GullstrandNucleusRimCrescentIsBelowHalfPerMille) {
   const double f = passing_outside_fraction(
-      *make_eye("\"string model\" \"gullstrand\" \"float pupildiameter\" 7 \"float accommodation\" 8 \"float fov\" 100"),
+      *make_eye(
+          "\"string model\" \"gullstrand\" \"float pupildiameter\" 7 \"float accommodation\" 8 \"float fov\" 100"),
       "gullstrand accommodated 7 mm");
   EXPECT_LT(f, 5e-4);
-  EXPECT_EQ(passing_outside_fraction(*make_eye("\"string model\" \"gullstrand\" \"float pupildiameter\" 5 \"float fov\" 100"),
-                                     "gullstrand relaxed"),
-            0.0);
+  EXPECT_EQ(
+      passing_outside_fraction(*make_eye("\"string model\" \"gullstrand\" \"float pupildiameter\" 5 \"float fov\" 100"),
+                               "gullstrand relaxed"),
+      0.0);
 }
 
 TEST(PupilSampler, SamplesAreUniformOverTheStatedArea) {

@@ -101,7 +101,8 @@ TEST(RetinaMapping, FlatAndRetinaMappingsAreLinearWithFovAtTheEdge) {
     const auto edge = cam->retina_point(Vec2(float(res), 100.f));  // right edge, screen radius 1
     ASSERT_TRUE(edge);
     EXPECT_NEAR(std::acos(chief_ray_direction(*cam, *edge).z) / kDeg, 35.0, 0.01) << mapping;
-    const double edge_value = std::string(mapping) == "flat" ? std::hypot(edge->position.x, edge->position.y) : edge->arc_mm;
+    const double edge_value =
+        std::string(mapping) == "flat" ? std::hypot(edge->position.x, edge->position.y) : edge->arc_mm;
     for (double s : {0.1, 0.4, 0.77, 1.3}) {
       const auto rp = cam->retina_point(Vec2(100.f, float(100.0 - 100.0 * s)));
       ASSERT_TRUE(rp);
@@ -117,8 +118,8 @@ TEST(RetinaMapping, FlatAndRetinaMappingsAreLinearWithFovAtTheEdge) {
 // A field of view the chief ray cannot reach cannot scale "flat"/"retina": a clear error
 // naming "fov" (the "angle" mapping shows such pixels black instead).
 TEST(RetinaMapping, UnreachableFovIsAnErrorForFlatMapping) {
-  SceneEntity e = parse_directive_text(
-      "Camera \"gullstrand\" \"string mapping\" \"flat\" \"float fov\" 179", "Camera", "t");
+  SceneEntity e =
+      parse_directive_text("Camera \"gullstrand\" \"string mapping\" \"flat\" \"float fov\" 179", "Camera", "t");
   CameraContext ctx{e.params, Transform(), IVec2(32, 32), ""};
   try {
     create_named_eye_camera("gullstrand")(ctx);  // its chief ray reaches 86 degrees

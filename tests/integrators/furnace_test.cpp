@@ -22,7 +22,8 @@ double mean_furnace_radiance(float rho, float Le, const std::string& integrator,
     LightSource "infinite" "rgb L" [{} {} {}]
     Material "diffuse" "rgb reflectance" [{} {} {}]
     Shape "sphere" "float radius" 1
-  )", spp, integrator, Le, Le, Le, rho, rho, rho);
+  )",
+                                 spp, integrator, Le, Le, Le, rho, rho, rho);
   SceneDescription desc = parse_scene_string(text, "furnace.pbrt", ".");
   RenderSetup s = build_render_setup(desc, {});
   RenderCounters counters;
@@ -55,9 +56,7 @@ TEST(DirectIntegrator, ConvexDiffuseObjectReflectsAlbedoTimesEnvironment) {
 
 // Energy never grows: with albedo below one every pixel stays below the environment (plus
 // noise, bounded by 5 standard errors of a pixel's 256-sample mean).
-TEST(PathIntegrator, EnergyNeverGrows) {
-  EXPECT_LT(mean_furnace_radiance(0.9f, 1.f, "path", 64), 0.9 + 0.04);
-}
+TEST(PathIntegrator, EnergyNeverGrows) { EXPECT_LT(mean_furnace_radiance(0.9f, 1.f, "path", 64), 0.9 + 0.04); }
 
 }  // namespace
 }  // namespace eyetrace

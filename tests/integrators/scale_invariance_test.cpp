@@ -23,7 +23,9 @@ Image render(const std::string& world, float s, int seed) {
     PixelFilter "box"
     WorldBegin
     Scale {} {} {}
-  )", 0.f, -7.f * s, 3.f * s, 0.8f * s, seed, s, s, s) + world;
+  )",
+                                 0.f, -7.f * s, 3.f * s, 0.8f * s, seed, s, s, s) +
+                     world;
   RenderSetup setup = build_render_setup(parse_scene_string(text, "scale.pbrt", "."), {});
   RenderCounters counters;
   RenderOptions opts;

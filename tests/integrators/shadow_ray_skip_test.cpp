@@ -20,7 +20,8 @@ Counts render(const std::string& lights) {
       "LookAt 0 0 1  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n"
       "Film \"rgb\" \"integer xresolution\" 16 \"integer yresolution\" 16\n"
       "Sampler \"independent\" \"integer pixelsamples\" 4\nIntegrator \"direct\"\nWorldBegin\n" +
-      lights + "Material \"diffuse\"\nShape \"trianglemesh\" \"point3 P\" [-5 -5 0  5 -5 0  5 5 0  -5 5 0]"
+      lights +
+      "Material \"diffuse\"\nShape \"trianglemesh\" \"point3 P\" [-5 -5 0  5 -5 0  5 5 0  -5 5 0]"
       " \"integer indices\" [0 1 2 0 2 3]\n";
   RenderSetup s = build_render_setup(parse_scene_string(text, "skip.pbrt", "."), {});
   RenderCounters c;

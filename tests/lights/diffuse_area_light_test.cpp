@@ -13,9 +13,9 @@
 
 #include "core/error.h"
 #include "core/sampling.h"
-#include "scene/texture_store.h"
-#include "lights/diffuse_area_light.h"
 #include "light_test_util.h"
+#include "lights/diffuse_area_light.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 namespace {
@@ -191,7 +191,8 @@ TEST(DiffuseAreaLight, PowerIsPiLAAndPowerParameterSetsIt) {
 
 // A scratch folder for the images the tests write, removed when the program exits.
 struct ScratchDir {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("eyetrace_area_test_" + std::to_string(getpid()));
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("eyetrace_area_test_" + std::to_string(getpid()));
   ScratchDir() { std::filesystem::create_directories(dir); }
   ~ScratchDir() {
     std::error_code ec;

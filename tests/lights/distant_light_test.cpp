@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "lights/distant_light.h"
 #include "light_test_util.h"
+#include "lights/distant_light.h"
 
 namespace eyetrace {
 namespace {

@@ -122,8 +122,8 @@ TEST(PiecewiseConstant1D, NegativeAndNonFiniteValuesCountAsZero) {
 
 // A 4 x 3 function with a zero row and zero cells.
 std::vector<float> test_function_2d() {
-  return {1.f, 2.f, 0.f, 4.f,   //
-          0.f, 0.f, 0.f, 0.f,   //
+  return {1.f, 2.f,  0.f, 4.f,  //
+          0.f, 0.f,  0.f, 0.f,  //
           3.f, 0.5f, 6.f, 1.f};
 }
 

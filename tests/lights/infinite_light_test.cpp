@@ -15,9 +15,9 @@
 #include "core/error.h"
 #include "core/sampling.h"
 #include "core/transform.h"
+#include "light_test_util.h"
 #include "lights/infinite_light.h"
 #include "lights/sphere_mapping.h"
-#include "light_test_util.h"
 
 namespace eyetrace {
 namespace {
@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 
 // A scratch folder for the images the tests write, removed when the program exits.
 struct ScratchDir {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("eyetrace_lights_test_" + std::to_string(getpid()));
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("eyetrace_lights_test_" + std::to_string(getpid()));
   ScratchDir() { std::filesystem::create_directories(dir); }
   ~ScratchDir() {
     std::error_code ec;
@@ -63,17 +64,15 @@ RGB sky(const Vec3& d) {
 
 std::string write_equal_area_sky(int res) {
   std::string path = temp_path(fmt::format("sky_equal_area_{}.exr", res));
-  write_image(path, res, res, [&](int x, int y) {
-    return sky(equal_area_square_to_sphere(Vec2((x + 0.5f) / res, (y + 0.5f) / res)));
-  });
+  write_image(path, res, res,
+              [&](int x, int y) { return sky(equal_area_square_to_sphere(Vec2((x + 0.5f) / res, (y + 0.5f) / res))); });
   return path;
 }
 
 std::string write_latlong_sky(int h) {
   std::string path = temp_path(fmt::format("sky_latlong_{}.exr", h));
-  write_image(path, 2 * h, h, [&](int x, int y) {
-    return sky(latlong_square_to_sphere(Vec2((x + 0.5f) / (2 * h), (y + 0.5f) / h)));
-  });
+  write_image(path, 2 * h, h,
+              [&](int x, int y) { return sky(latlong_square_to_sphere(Vec2((x + 0.5f) / (2 * h), (y + 0.5f) / h))); });
   return path;
 }
 
@@ -132,8 +131,8 @@ TEST(UniformInfiniteLight, IlluminanceSetsIrradianceAndPowerCoversScene) {
 // Which pixel of the map a direction falls in.
 int pixel_of(const ImageInfiniteLight& light, const Vec3& w) {
   const RGBImage& img = light.map().image();
-  Vec2 uv = light.map().mapping() == SphereMapping::EqualArea ? equal_area_sphere_to_square(w)
-                                                                 : latlong_sphere_to_square(w);
+  Vec2 uv =
+      light.map().mapping() == SphereMapping::EqualArea ? equal_area_sphere_to_square(w) : latlong_sphere_to_square(w);
   int x = std::clamp(int(uv.x * img.width), 0, img.width - 1);
   int y = std::clamp(int(uv.y * img.height), 0, img.height - 1);
   return y * img.width + x;
@@ -297,7 +296,8 @@ TEST(ImageInfiniteLight, TransformOrientsTheMap) {
 
 TEST(ImageInfiniteLight, EightBitImagesAreDecodedFromSrgb) {
   std::string path = temp_path("grey.png");
-  write_image(path, 4, 4, [](int, int) { return RGB(128.f / 255.f); }, OIIO::TypeDesc::UINT8);
+  write_image(
+      path, 4, 4, [](int, int) { return RGB(128.f / 255.f); }, OIIO::TypeDesc::UINT8);
   auto light = make_infinite({string_param("filename", path)});
   // IEC 61966-2-1: ((c + 0.055) / 1.055)^2.4 for c = 128/255.
   EXPECT_NEAR(light->Le(Ray{}).r, 0.2158605f, 1e-5f);

@@ -22,7 +22,9 @@ inline Param num_param(const std::string& type, const std::string& name, std::ve
   return p;
 }
 inline Param float_param(const std::string& name, double v) { return num_param("float", name, {v}); }
-inline Param rgb_param(const std::string& name, double r, double g, double b) { return num_param("rgb", name, {r, g, b}); }
+inline Param rgb_param(const std::string& name, double r, double g, double b) {
+  return num_param("rgb", name, {r, g, b});
+}
 inline Param point_param(const std::string& name, double x, double y, double z) {
   return num_param("point3", name, {x, y, z});
 }

@@ -4,8 +4,8 @@
 // The lat-long map follows pbrt-v3's convention (top row +z, u = phi / 2 pi).
 #include <gtest/gtest.h>
 
-#include "lights/sphere_mapping.h"
 #include "light_test_util.h"
+#include "lights/sphere_mapping.h"
 
 namespace eyetrace {
 namespace {

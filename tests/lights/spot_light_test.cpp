@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "lights/spot_light.h"
 #include "light_test_util.h"
+#include "lights/spot_light.h"
 
 namespace eyetrace {
 namespace {
@@ -36,7 +36,8 @@ TEST(SpotLight, FalloffAtConeEdgesIsSmoothstep) {
   EXPECT_NEAR(intensity_at(*light, apex, 0.f), 7.f, 1e-5f);
   EXPECT_NEAR(intensity_at(*light, apex, 19.9f), 7.f, 1e-5f);
   EXPECT_NEAR(intensity_at(*light, apex, 20.f), 7.f, 1e-3f);
-  for (float theta : {21.f, 23.f, 25.f, 27.f, 29.f}) EXPECT_NEAR(intensity_at(*light, apex, theta), analytic(theta), 1e-4f);
+  for (float theta : {21.f, 23.f, 25.f, 27.f, 29.f})
+    EXPECT_NEAR(intensity_at(*light, apex, theta), analytic(theta), 1e-4f);
   // Half intensity where cos(theta) is midway between the edges (smoothstep is symmetric).
   float mid = std::acos(0.5f * (cs + ce)) * 180.f / kPi;
   EXPECT_NEAR(intensity_at(*light, apex, mid), 3.5f, 1e-3f);
@@ -82,7 +83,8 @@ TEST(SpotLight, PowerMatchesIntegratedIntensity) {
   const auto& spot = dynamic_cast<const SpotLight&>(*light);
   double numeric = integrated_power(spot);
   EXPECT_NEAR(light->power(), numeric, 1e-4 * numeric);
-  auto normalised = make_spot({float_param("power", 50), float_param("coneangle", 40), float_param("conedeltaangle", 15)});
+  auto normalised =
+      make_spot({float_param("power", 50), float_param("coneangle", 40), float_param("conedeltaangle", 15)});
   EXPECT_NEAR(integrated_power(dynamic_cast<const SpotLight&>(*normalised)), 50.0, 5e-3);
 }
 

@@ -5,10 +5,10 @@
 #include <random>
 
 #include "core/arena.h"
-#include "scene/texture_store.h"
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/coated_diffuse_material.h"
 #include "materials/local_bsdf.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 namespace {
@@ -76,7 +76,8 @@ TEST(CoatedDiffuseBxDF, WhiteNonAbsorbingLayerReflectsAllLight) {
   // With R = 1, no absorption and a smooth coat, the model's albedo is F + (1 - F) = 1 for
   // every direction: energy is conserved exactly, not merely bounded.
   ScratchBuffer arena;
-  const BSDF* b = make_local_bsdf(arena, hit(), CoatedDiffuseBxDF(CoatConstants::make(1.5f), TrowbridgeReitz(0.f, 0.f), RGB(1.f), RGB(0.f)));
+  const BSDF* b = make_local_bsdf(
+      arena, hit(), CoatedDiffuseBxDF(CoatConstants::make(1.5f), TrowbridgeReitz(0.f, 0.f), RGB(1.f), RGB(0.f)));
   for (float theta : {0.f, 45.f, 75.f, 89.f}) {
     Vec3 wo(std::sin(radians(theta)), 0.f, std::cos(radians(theta)));
     auto [mean, se] = albedo(*b, wo, 200000, 17);
@@ -88,8 +89,10 @@ TEST(CoatedDiffuseBxDF, AbsorbingLayerIsDarker) {
   ScratchBuffer arena;
   SurfaceInteraction si = hit();
   auto coat = CoatConstants::make(1.5f);
-  const BSDF* clear = make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f)));
-  const BSDF* tinted = make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f, 0.f, 0.5f)));
+  const BSDF* clear =
+      make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f)));
+  const BSDF* tinted =
+      make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f, 0.f, 0.5f)));
   Vec3 wo(0.f, 0.f, 1.f), wi = glm::normalize(Vec3(0.3f, 0.f, 1.f));
   EXPECT_NEAR(tinted->f(wo, wi).r, clear->f(wo, wi).r, 1e-7f);
   EXPECT_LT(tinted->f(wo, wi).b, 0.5f * clear->f(wo, wi).b);

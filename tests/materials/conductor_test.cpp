@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "core/arena.h"
+#include "materials/conductor_material.h"
 #include "scene/spectrum_param.h"
 #include "scene/texture_store.h"
-#include "materials/conductor_material.h"
 
 namespace eyetrace {
 namespace {
@@ -37,9 +37,7 @@ RGB normal_reflectance(const ParameterList& p) {
   return s ? s->f * std::abs(s->wi.z) / s->pdf : RGB(-1.f);
 }
 
-RGB expected_f0(RGB n, RGB k) {
-  return ((n - 1.f) * (n - 1.f) + k * k) / ((n + 1.f) * (n + 1.f) + k * k);
-}
+RGB expected_f0(RGB n, RGB k) { return ((n - 1.f) * (n - 1.f) + k * k) / ((n + 1.f) * (n + 1.f) + k * k); }
 
 TEST(ConductorMaterial, NormalIncidenceReflectance) {
   ParameterList p;

@@ -5,10 +5,10 @@
 #include <random>
 
 #include "core/arena.h"
-#include "scene/texture_store.h"
 #include "materials/dielectric_bxdf.h"
 #include "materials/dielectric_material.h"
 #include "materials/local_bsdf.h"
+#include "scene/texture_store.h"
 
 namespace eyetrace {
 namespace {

@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "core/arena.h"
-#include "scene/texture_store.h"
 #include "materials/diffuse_material.h"
 #include "materials/interface_material.h"
+#include "scene/texture_store.h"
 #include "textures/constant_texture.h"
 
 namespace eyetrace {

@@ -46,12 +46,11 @@ TEST(FresnelComplex, NormalIncidenceOfConductor) {
 }
 
 TEST(FresnelComplex, ZeroAbsorptionIsTheDielectric) {
-  for (float c : {1.f, 0.7f, 0.3f, 0.05f}) EXPECT_NEAR(fresnel_complex(c, 1.5f, 0.f), fresnel_dielectric(c, 1.5f), 1e-5f);
+  for (float c : {1.f, 0.7f, 0.3f, 0.05f})
+    EXPECT_NEAR(fresnel_complex(c, 1.5f, 0.f), fresnel_dielectric(c, 1.5f), 1e-5f);
 }
 
-TEST(FresnelComplex, GrazingIncidenceReflectsEverything) {
-  EXPECT_NEAR(fresnel_complex(0.f, 0.2f, 3.9f), 1.f, 1e-6f);
-}
+TEST(FresnelComplex, GrazingIncidenceReflectsEverything) { EXPECT_NEAR(fresnel_complex(0.f, 0.2f, 3.9f), 1.f, 1e-6f); }
 
 TEST(Refract, SnellsLaw) {
   float n = 1.5f, etap = 0.f;

@@ -4,15 +4,16 @@
 
 #include "core/cie_tables.h"
 #include "core/named_spectra.h"
-#include "scene/params.h"
 #include "core/spectrum.h"
-#include "scene/spectrum_param.h"
 #include "materials/fresnel.h"
+#include "scene/params.h"
+#include "scene/spectrum_param.h"
 
 namespace eyetrace {
 namespace {
 
-Param spectrum_param(std::vector<double> numbers, std::vector<std::string> strings = {}, std::string type = "spectrum") {
+Param spectrum_param(std::vector<double> numbers, std::vector<std::string> strings = {},
+                     std::string type = "spectrum") {
   Param p;
   p.type = std::move(type);
   p.name = "reflectance";

@@ -15,71 +15,75 @@ namespace eyetrace::optics {
 namespace {
 
 std::string preset_table() {
-    std::string out =
-        "| preset | power D | refraction D | axial length | F | F′ | H | H′ | N | N′ | entrance pupil (×) | exit pupil (×) | retina R | RMS spot µm at 0/10/20/30/40° |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    const std::pair<const char*, const char*> presets[] = {{"gullstrand", ""}, {"legrand", ""}, {"kooijman", ""},
-                                                           {"navarro", ""}, {"navarro", "wu2011"},
-                                                           {"escudero-sanz", ""}, {"arizona", ""}};
-    for (auto [model, variant] : presets) {
-        EyeOptions o;
-        o.model = model;
-        o.variant = variant;
-        const Prescription p = make_eye(o);
-        const ParaxialData d = paraxial_analysis(p);
-        std::string spots;
-        for (double f : {0.0, 10.0, 20.0, 30.0, 40.0})
-            spots += (spots.empty() ? "" : " / ") + fmt::format("{:.1f}", trace_spot(p, {f}).rms_radius_um);
-        const Surface& retina = p.surfaces.back();
-        out += fmt::format("| {}{} | {:.3f} | {:+.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} (×{:.3f}) | {:.3f} (×{:.3f}) | {} | {} |\n",
-                           model, *variant ? std::string(" ") + variant : "", d.power_D, d.refraction_D + 0.0,
-                           d.axial_length_mm, d.front_focal_point_mm, d.back_focal_point_mm, d.front_principal_point_mm,
-                           d.back_principal_point_mm, d.front_nodal_point_mm, d.back_nodal_point_mm,
-                           d.entrance_pupil.position_mm, d.entrance_pupil.magnification, d.exit_pupil.position_mm,
-                           d.exit_pupil.magnification,
-                           retina.profile.is_flat() ? std::string("flat") : fmt::format("{:.1f}", 1.0 / retina.profile.curvature),
-                           spots);
-    }
-    return out;
+  std::string out =
+      "| preset | power D | refraction D | axial length | F | F′ | H | H′ | N | N′ | entrance pupil (×) | exit pupil "
+      "(×) | retina R | RMS spot µm at 0/10/20/30/40° |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const std::pair<const char*, const char*> presets[] = {
+      {"gullstrand", ""},    {"legrand", ""},       {"kooijman", ""}, {"navarro", ""},
+      {"navarro", "wu2011"}, {"escudero-sanz", ""}, {"arizona", ""}};
+  for (auto [model, variant] : presets) {
+    EyeOptions o;
+    o.model = model;
+    o.variant = variant;
+    const Prescription p = make_eye(o);
+    const ParaxialData d = paraxial_analysis(p);
+    std::string spots;
+    for (double f : {0.0, 10.0, 20.0, 30.0, 40.0})
+      spots += (spots.empty() ? "" : " / ") + fmt::format("{:.1f}", trace_spot(p, {f}).rms_radius_um);
+    const Surface& retina = p.surfaces.back();
+    out += fmt::format(
+        "| {}{} | {:.3f} | {:+.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} (×{:.3f}) | "
+        "{:.3f} (×{:.3f}) | {} | {} |\n",
+        model, *variant ? std::string(" ") + variant : "", d.power_D, d.refraction_D + 0.0, d.axial_length_mm,
+        d.front_focal_point_mm, d.back_focal_point_mm, d.front_principal_point_mm, d.back_principal_point_mm,
+        d.front_nodal_point_mm, d.back_nodal_point_mm, d.entrance_pupil.position_mm, d.entrance_pupil.magnification,
+        d.exit_pupil.position_mm, d.exit_pupil.magnification,
+        retina.profile.is_flat() ? std::string("flat") : fmt::format("{:.1f}", 1.0 / retina.profile.curvature), spots);
+  }
+  return out;
 }
 
 std::string accommodation_table() {
-    std::string out = "| D | navarro power D | navarro refraction D | wu2011 refraction D | gullstrand A → refraction | legrand A → refraction | arizona A → refraction |\n"
-                      "|---|---|---|---|---|---|---|\n";
-    auto refraction = [](const char* model, const char* variant, double a) {
-        EyeOptions o;
-        o.model = model;
-        o.variant = variant;
-        o.accommodation_D = a;
-        return paraxial_analysis(make_eye(o));
+  std::string out =
+      "| D | navarro power D | navarro refraction D | wu2011 refraction D | gullstrand A → refraction | legrand A → "
+      "refraction | arizona A → refraction |\n"
+      "|---|---|---|---|---|---|---|\n";
+  auto refraction = [](const char* model, const char* variant, double a) {
+    EyeOptions o;
+    o.model = model;
+    o.variant = variant;
+    o.accommodation_D = a;
+    return paraxial_analysis(make_eye(o));
+  };
+  for (double D : {0.0, 1.0, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0}) {
+    const ParaxialData n = refraction("navarro", "", D);
+    auto cell = [&](const char* model) {
+      return D <= max_accommodation_D(model) ? fmt::format("{:+.3f}", refraction(model, "", D).refraction_D + 0.0)
+                                             : std::string("–");
     };
-    for (double D : {0.0, 1.0, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 15.0}) {
-        const ParaxialData n = refraction("navarro", "", D);
-        auto cell = [&](const char* model) {
-            return D <= max_accommodation_D(model) ? fmt::format("{:+.3f}", refraction(model, "", D).refraction_D + 0.0)
-                                                          : std::string("–");
-        };
-        out += fmt::format("| {} | {:.3f} | {:+.3f} | {:+.3f} | {} | {} | {} |\n", D, n.power_D, n.refraction_D + 0.0,
-                           refraction("navarro", "wu2011", D).refraction_D, cell("gullstrand"), cell("legrand"), cell("arizona"));
-    }
-    return out;
+    out += fmt::format("| {} | {:.3f} | {:+.3f} | {:+.3f} | {} | {} | {} |\n", D, n.power_D, n.refraction_D + 0.0,
+                       refraction("navarro", "wu2011", D).refraction_D, cell("gullstrand"), cell("legrand"),
+                       cell("arizona"));
+  }
+  return out;
 }
 
 std::string read_doc() {
-    std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/docs/eye-models.md");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+  std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/docs/eye-models.md");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 TEST(EyeModelsDoc, PresetTableIsCurrent) {
-    const std::string table = preset_table();
-    EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
+  const std::string table = preset_table();
+  EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
 }
 
 TEST(EyeModelsDoc, AccommodationTableIsCurrent) {
-    const std::string table = accommodation_table();
-    EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
+  const std::string table = accommodation_table();
+  EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
 }
 
 }  // namespace

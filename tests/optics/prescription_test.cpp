@@ -12,100 +12,102 @@ namespace eyetrace::optics {
 namespace {
 
 void expect_invalid(const Prescription& p, const std::string& message) {
-    try {
-        validate(p);
-        ADD_FAILURE() << "no error; expected: " << message;
-    } catch (const OpticsError& e) {
-        EXPECT_EQ(std::string(e.what()), message);
-    }
+  try {
+    validate(p);
+    ADD_FAILURE() << "no error; expected: " << message;
+  } catch (const OpticsError& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  }
 }
 
 // One file per model and variant: arizona, escudero-sanz, gullstrand, kooijman, legrand,
 // navarro and navarro's wu2011 variant.
 TEST(EyeDataFiles, AllEmbeddedFilesLoadAndValidate) {
-    const auto& files = embedded::files();
-    EXPECT_EQ(files.size(), 7u);
-    for (const auto& [name, text] : files) {
-        SCOPED_TRACE(name);
-        const Prescription p = prescription_from_json_text(text, name);
-        EXPECT_FALSE(p.source.empty());
-        EXPECT_EQ(p.surfaces.back().role, SurfaceRole::Image);
-        EXPECT_EQ(p.surfaces[p.stop_index()].name, "pupil");
-    }
+  const auto& files = embedded::files();
+  EXPECT_EQ(files.size(), 7u);
+  for (const auto& [name, text] : files) {
+    SCOPED_TRACE(name);
+    const Prescription p = prescription_from_json_text(text, name);
+    EXPECT_FALSE(p.source.empty());
+    EXPECT_EQ(p.surfaces.back().role, SurfaceRole::Image);
+    EXPECT_EQ(p.surfaces[p.stop_index()].name, "pupil");
+  }
 }
 
 TEST(PrescriptionJson, RoundTripKeepsTheSystem) {
-    const Prescription p = load_embedded_prescription("navarro.json");
-    const Prescription q = prescription_from_json(prescription_to_json(p), "round trip");
-    ASSERT_EQ(p.surfaces.size(), q.surfaces.size());
-    for (size_t i = 0; i < p.surfaces.size(); ++i) {
-        EXPECT_EQ(p.surfaces[i].name, q.surfaces[i].name);
-        EXPECT_DOUBLE_EQ(p.surfaces[i].profile.curvature, q.surfaces[i].profile.curvature);
-        EXPECT_DOUBLE_EQ(p.surfaces[i].profile.conic, q.surfaces[i].profile.conic);
-        EXPECT_DOUBLE_EQ(p.surfaces[i].thickness_mm, q.surfaces[i].thickness_mm);
-        EXPECT_DOUBLE_EQ(p.surfaces[i].index_after, q.surfaces[i].index_after);
-    }
-    EXPECT_DOUBLE_EQ(refraction_D(p), refraction_D(q));
+  const Prescription p = load_embedded_prescription("navarro.json");
+  const Prescription q = prescription_from_json(prescription_to_json(p), "round trip");
+  ASSERT_EQ(p.surfaces.size(), q.surfaces.size());
+  for (size_t i = 0; i < p.surfaces.size(); ++i) {
+    EXPECT_EQ(p.surfaces[i].name, q.surfaces[i].name);
+    EXPECT_DOUBLE_EQ(p.surfaces[i].profile.curvature, q.surfaces[i].profile.curvature);
+    EXPECT_DOUBLE_EQ(p.surfaces[i].profile.conic, q.surfaces[i].profile.conic);
+    EXPECT_DOUBLE_EQ(p.surfaces[i].thickness_mm, q.surfaces[i].thickness_mm);
+    EXPECT_DOUBLE_EQ(p.surfaces[i].index_after, q.surfaces[i].index_after);
+  }
+  EXPECT_DOUBLE_EQ(refraction_D(p), refraction_D(q));
 }
 
 TEST(PrescriptionJson, StrictAboutKeysAndTypes) {
-    nlohmann::json j = prescription_to_json(load_embedded_prescription("legrand.json"));
-    j["surfaces"][3]["radius"] = 5.0;
-    try {
-        prescription_from_json(j, "bad.json");
-        FAIL();
-    } catch (const OpticsError& e) {
-        EXPECT_EQ(std::string(e.what()), "bad.json: surface 3: unknown key 'radius'");
-    }
-    j = prescription_to_json(load_embedded_prescription("legrand.json"));
-    j["surfaces"][1]["medium"] = "aqueus";
-    try {
-        prescription_from_json(j, "bad.json");
-        FAIL();
-    } catch (const OpticsError& e) {
-        EXPECT_EQ(std::string(e.what()), "bad.json: surface 1 'cornea posterior': medium 'aqueus' is not in the media table");
-    }
-    EXPECT_THROW(prescription_from_json_text("{ not json", "x.json"), OpticsError);
+  nlohmann::json j = prescription_to_json(load_embedded_prescription("legrand.json"));
+  j["surfaces"][3]["radius"] = 5.0;
+  try {
+    prescription_from_json(j, "bad.json");
+    FAIL();
+  } catch (const OpticsError& e) {
+    EXPECT_EQ(std::string(e.what()), "bad.json: surface 3: unknown key 'radius'");
+  }
+  j = prescription_to_json(load_embedded_prescription("legrand.json"));
+  j["surfaces"][1]["medium"] = "aqueus";
+  try {
+    prescription_from_json(j, "bad.json");
+    FAIL();
+  } catch (const OpticsError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "bad.json: surface 1 'cornea posterior': medium 'aqueus' is not in the media table");
+  }
+  EXPECT_THROW(prescription_from_json_text("{ not json", "x.json"), OpticsError);
 }
 
 TEST(PrescriptionValidation, MessagesNameSurfaceAndParameter) {
-    const Prescription base = load_embedded_prescription("navarro.json");
-    Prescription p = base;
-    p.surfaces[3].semi_diameter_mm = 6.2;
-    p.surfaces[3].profile = SurfaceProfile::from_radius(10.2, 5.0);  // oblate: reach 10.2/sqrt(6)
-    expect_invalid(p, "surface 3 'lens anterior': semi-diameter 6.2 mm is beyond the conic's reach (max 4.16413 mm)");
-    p = base;
-    p.surfaces[1].thickness_mm = -0.1;
-    expect_invalid(p, "surface 1 'cornea posterior': thickness -0.1 mm is negative");
-    p = base;
-    p.surfaces[4].profile.conic = std::nan("");
-    expect_invalid(p, "surface 4 'lens posterior': conic is not a finite number (nan)");
-    p = base;
-    p.surfaces[2].role = SurfaceRole::Refract;
-    expect_invalid(p, "prescription 'navarro': needs exactly one aperture stop (role 'stop'), found 0");
-    p = base;
-    p.surfaces[3].thickness_mm = 0.5;  // lens anterior and posterior cross
-    try {
-        validate(p);
-        FAIL();
-    } catch (const OpticsError& e) {
-        EXPECT_NE(std::string(e.what()).find("surface 3 'lens anterior' and surface 4 'lens posterior' cross at height"),
-                  std::string::npos) << e.what();
-    }
-    p = base;
-    p.surfaces[2].semi_diameter_mm = 0.0;
-    expect_invalid(p, "surface 2 'pupil': the aperture stop needs a finite semi-diameter > 0 (got 0)");
-    p = base;
-    std::swap(p.surfaces[4], p.surfaces[5]);
-    expect_invalid(p, "surface 4 'retina': only the last surface may have role 'image'");
+  const Prescription base = load_embedded_prescription("navarro.json");
+  Prescription p = base;
+  p.surfaces[3].semi_diameter_mm = 6.2;
+  p.surfaces[3].profile = SurfaceProfile::from_radius(10.2, 5.0);  // oblate: reach 10.2/sqrt(6)
+  expect_invalid(p, "surface 3 'lens anterior': semi-diameter 6.2 mm is beyond the conic's reach (max 4.16413 mm)");
+  p = base;
+  p.surfaces[1].thickness_mm = -0.1;
+  expect_invalid(p, "surface 1 'cornea posterior': thickness -0.1 mm is negative");
+  p = base;
+  p.surfaces[4].profile.conic = std::nan("");
+  expect_invalid(p, "surface 4 'lens posterior': conic is not a finite number (nan)");
+  p = base;
+  p.surfaces[2].role = SurfaceRole::Refract;
+  expect_invalid(p, "prescription 'navarro': needs exactly one aperture stop (role 'stop'), found 0");
+  p = base;
+  p.surfaces[3].thickness_mm = 0.5;  // lens anterior and posterior cross
+  try {
+    validate(p);
+    FAIL();
+  } catch (const OpticsError& e) {
+    EXPECT_NE(std::string(e.what()).find("surface 3 'lens anterior' and surface 4 'lens posterior' cross at height"),
+              std::string::npos)
+        << e.what();
+  }
+  p = base;
+  p.surfaces[2].semi_diameter_mm = 0.0;
+  expect_invalid(p, "surface 2 'pupil': the aperture stop needs a finite semi-diameter > 0 (got 0)");
+  p = base;
+  std::swap(p.surfaces[4], p.surfaces[5]);
+  expect_invalid(p, "surface 4 'retina': only the last surface may have role 'image'");
 }
 
 TEST(MeetingHeight, GullstrandAccommodatedNucleusEdge) {
-    // Two spherical caps R = +-2.655 with vertices 2.655 apart meet where
-    // 2.655 - sqrt(R^2 - h^2) = sqrt(R^2 - h^2) - 0, i.e. h = R sqrt(3)/2 = 2.2993 mm.
-    const double R = 2.655;
-    const double h = meeting_height(SurfaceProfile::from_radius(R, 0), 0.0, SurfaceProfile::from_radius(-R, 0), R, R);
-    EXPECT_NEAR(h, R * std::sqrt(3.0) / 2.0, 1e-9);
+  // Two spherical caps R = +-2.655 with vertices 2.655 apart meet where
+  // 2.655 - sqrt(R^2 - h^2) = sqrt(R^2 - h^2) - 0, i.e. h = R sqrt(3)/2 = 2.2993 mm.
+  const double R = 2.655;
+  const double h = meeting_height(SurfaceProfile::from_radius(R, 0), 0.0, SurfaceProfile::from_radius(-R, 0), R, R);
+  EXPECT_NEAR(h, R * std::sqrt(3.0) / 2.0, 1e-9);
 }
 
 }  // namespace

@@ -13,8 +13,8 @@
 #include <thread>
 
 #include "render/film.h"
-#include "scene/parser.h"
 #include "render/render_state.h"
+#include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 #include "../support/unit_box_filter.h"

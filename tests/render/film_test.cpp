@@ -40,7 +40,8 @@ TEST(ImageIO, ExrRoundTripsExactlyAndPngIsSrgb) {
   Image img;
   img.width = 3;
   img.height = 2;
-  img.pixels = {0.f, 0.1f, 0.2f, 0.5f, 1.f, 2.f, 1e-3f, 0.25f, 0.75f, 3.f, 0.04f, 0.9f, 0.f, 0.f, 1.f, 0.18f, 0.18f, 0.18f};
+  img.pixels = {0.f, 0.1f,  0.2f, 0.5f, 1.f, 2.f, 1e-3f, 0.25f, 0.75f,
+                3.f, 0.04f, 0.9f, 0.f,  0.f, 1.f, 0.18f, 0.18f, 0.18f};
   std::string exr = (dir / "a.exr").string();
   write_image(exr, img, {{"eyetrace:samples_per_pixel", "16"}});
   Image back = read_image(exr);

@@ -75,8 +75,8 @@ std::unique_ptr<Shape> make_disk(const Transform& t) {
 }
 
 void expect_near(const Vec3& a, const Vec3& b, float tol, const char* what) {
-  EXPECT_LE(glm::distance(a, b), tol) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs ("
-                                      << b.x << ", " << b.y << ", " << b.z << ")";
+  EXPECT_LE(glm::distance(a, b), tol) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", "
+                                      << b.y << ", " << b.z << ")";
 }
 
 TEST(Scene, InstanceHitEqualsSameGeometryTransformed) {
@@ -160,7 +160,8 @@ std::unique_ptr<Scene> plane_scene(const Material* mat = nullptr, const Light* l
   pl.add(param("point3", "P", {-5, -5, 2, 5, -5, 2, 5, 5, 2, -5, 5, 2}));
   pl.add(param("integer", "indices", {0, 1, 2, 0, 2, 3}));
   auto scene = std::make_unique<Scene>();
-  scene->add_primitive(Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pl, Transform(), false, ""})[0]), mat, light});
+  scene->add_primitive(
+      Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pl, Transform(), false, ""})[0]), mat, light});
   scene->commit();
   return scene;
 }
@@ -174,7 +175,8 @@ TEST(Scene, OccludedAndIntersectRespectTmaxInUnitsOfD) {
   EXPECT_FALSE(scene->occluded(Ray{Vec3(0), Vec3(0, 0, 2), 0.9f}));
   EXPECT_TRUE(scene->occluded(Ray{Vec3(0), Vec3(0, 0, 2), 1.1f}));
   // spawn_ray_to stops short of its target: a target on the plane is not occluded by it.
-  EXPECT_FALSE(scene->occluded(spawn_ray_to(Vec3(0), Vec3(1e-6f), Vec3(0, 0, 1), 0.f, Vec3(1, 1, 2), Vec3(0), Vec3(0))));
+  EXPECT_FALSE(
+      scene->occluded(spawn_ray_to(Vec3(0), Vec3(1e-6f), Vec3(0, 0, 1), 0.f, Vec3(1, 1, 2), Vec3(0), Vec3(0))));
   SurfaceInteraction si;
   EXPECT_FALSE(scene->intersect(Ray{Vec3(0), Vec3(0, 0, 2), 0.9f}, &si));
   ASSERT_TRUE(scene->intersect(Ray{Vec3(0), Vec3(0, 0, 2), 1.1f}, &si));
@@ -186,9 +188,8 @@ TEST(Scene, UntraceableRaysReturnNoHit) {
   auto scene = plane_scene();
   float nan = std::numeric_limits<float>::quiet_NaN();
   SurfaceInteraction si;
-  for (Ray r : {Ray{Vec3(nan, 0, 0), Vec3(0, 0, 1)}, Ray{Vec3(0), Vec3(0, kInfinity, 1)},
-                Ray{Vec3(0), Vec3(0, 0, nan)}, Ray{Vec3(0), Vec3(0)}, Ray{Vec3(0), Vec3(0, 0, 1), nan},
-                Ray{Vec3(0), Vec3(0, 0, 1), -1.f}}) {
+  for (Ray r : {Ray{Vec3(nan, 0, 0), Vec3(0, 0, 1)}, Ray{Vec3(0), Vec3(0, kInfinity, 1)}, Ray{Vec3(0), Vec3(0, 0, nan)},
+                Ray{Vec3(0), Vec3(0)}, Ray{Vec3(0), Vec3(0, 0, 1), nan}, Ray{Vec3(0), Vec3(0, 0, 1), -1.f}}) {
     EXPECT_FALSE(scene->intersect(r, &si));
     EXPECT_FALSE(scene->occluded(r));
   }
@@ -291,13 +292,15 @@ TEST(Scene, SpawnedRaysDoNotSelfIntersect) {
       Scene sphere_scene, plane_scene;
       ParameterList sp;
       sp.add(param("float", "radius", {1.0}));
-      sphere_scene.add_primitive(Primitive{std::move(create_sphere_shapes(ShapeContext{sp, t, false, ""})[0]), nullptr, nullptr});
+      sphere_scene.add_primitive(
+          Primitive{std::move(create_sphere_shapes(ShapeContext{sp, t, false, ""})[0]), nullptr, nullptr});
       sphere_scene.commit();
       ParameterList pp;
       pp.add(param("point3", "P", {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}));
       pp.add(param("integer", "indices", {0, 1, 2, 0, 2, 3}));
       Transform tilt = t * rotate(20.f, Vec3(1, 1, 0));
-      plane_scene.add_primitive(Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pp, tilt, false, ""})[0]), nullptr, nullptr});
+      plane_scene.add_primitive(
+          Primitive{std::move(create_trianglemesh_shapes(ShapeContext{pp, tilt, false, ""})[0]), nullptr, nullptr});
       plane_scene.commit();
 
       Vec3 centre = t.point(Vec3(0));

@@ -208,7 +208,8 @@ TEST(HostileInput, TruncatedBeforeEveryDirectiveBuildsOrFailsCleanly) {
     // A prefix is a scene of its own; it may be valid, but an error names the file.
     if (!message.empty()) EXPECT_EQ(message.rfind("hostile.pbrt", 0), 0u) << message;
   }
-  EXPECT_ERROR(std::string(full.substr(0, full.find("WorldBegin"))), "hostile.pbrt: error: the scene ends before WorldBegin");
+  EXPECT_ERROR(std::string(full.substr(0, full.find("WorldBegin"))),
+               "hostile.pbrt: error: the scene ends before WorldBegin");
   EXPECT_ERROR(std::string(full.substr(0, full.find("AttributeEnd"))),
                "hostile.pbrt:13:1: error: AttributeBegin has no matching AttributeEnd before the end of the scene");
 }
@@ -230,12 +231,15 @@ TEST(HostileInput, UnbalancedBlocksAndBrackets) {
                "hostile.pbrt:9:1: error: AttributeEnd does not match the TransformBegin at hostile.pbrt:8:1");
   EXPECT_ERROR(in_world("ObjectBegin \"a\"\n"), "hostile.pbrt:8:1: error: ObjectBegin has no matching ObjectEnd");
   EXPECT_ERROR(in_world("ObjectEnd\n"), "hostile.pbrt:8:1: error: ObjectEnd without a matching ObjectBegin");
-  EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" 1 ]\n"), "hostile.pbrt:8:33: error: unexpected ']' where a directive (Shape, AttributeBegin, ...) was expected");
+  EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" 1 ]\n"),
+               "hostile.pbrt:8:33: error: unexpected ']' where a directive (Shape, AttributeBegin, ...) was expected");
   EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" ]\n"),
                "hostile.pbrt:8:31: error: parameter \"float radius\": unexpected ']' (no matching '[')");
-  EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" [ [ 1 ] ]\n"),
-               "hostile.pbrt:8:33: error: parameter \"float radius\": unexpected '[' (is the ']' for the '[' at 8:31 missing?)");
-  EXPECT_ERROR(std::string(kOptions) + "AttributeBegin\nWorldBegin\n", "hostile.pbrt:7:1: error: AttributeBegin is only allowed after WorldBegin");
+  EXPECT_ERROR(
+      in_world("Shape \"sphere\" \"float radius\" [ [ 1 ] ]\n"),
+      "hostile.pbrt:8:33: error: parameter \"float radius\": unexpected '[' (is the ']' for the '[' at 8:31 missing?)");
+  EXPECT_ERROR(std::string(kOptions) + "AttributeBegin\nWorldBegin\n",
+               "hostile.pbrt:7:1: error: AttributeBegin is only allowed after WorldBegin");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -245,7 +249,7 @@ struct Kind {
   const char* type;
   int tuple;
 };
-constexpr Kind kNumericKinds[] = {{"float", 1},  {"integer", 1}, {"point2", 2}, {"vector2", 2}, {"point3", 3},
+constexpr Kind kNumericKinds[] = {{"float", 1},   {"integer", 1}, {"point2", 2}, {"vector2", 2},  {"point3", 3},
                                   {"vector3", 3}, {"normal", 3},  {"rgb", 3},    {"spectrum", 1}, {"blackbody", 1}};
 
 TEST(HostileInput, NonFiniteNumbersInEveryParameterKindAreParseErrors) {
@@ -262,7 +266,8 @@ TEST(HostileInput, NonFiniteNumbersInEveryParameterKindAreParseErrors) {
   EXPECT_ERROR(in_world("Translate nan 0 0\n"), "hostile.pbrt:8:11: error: Translate: \"nan\" is not a finite number");
   EXPECT_ERROR(in_world("Rotate 10 0 inf 0\n"), "hostile.pbrt:8:13: error: Rotate: \"inf\" is not a finite number");
   EXPECT_ERROR(in_world("Scale 1 1 1e999\n"), "hostile.pbrt:8:11: error: Scale: value 1e999 is out of range");
-  EXPECT_ERROR("LookAt 0 0 0  0 0 nan  0 1 0\nWorldBegin\n", "hostile.pbrt:1:19: error: LookAt: \"nan\" is not a finite number");
+  EXPECT_ERROR("LookAt 0 0 0  0 0 nan  0 1 0\nWorldBegin\n",
+               "hostile.pbrt:1:19: error: LookAt: \"nan\" is not a finite number");
   EXPECT_ERROR(in_world("ConcatTransform [ 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 -inf ]\n"),
                "error: ConcatTransform: \"-inf\" is not a finite number");
 }
@@ -278,15 +283,21 @@ TEST(HostileInput, NumbersBeyondFloatRangeInEveryParameterKindAreErrors) {
                "parameter \"uv\" value 1e+308 is out of the float range");
   EXPECT_ERROR(in_world("LightSource \"point\" \"point3 from\" [1e308 0 0]\n"),
                "hostile.pbrt:8:21: error: parameter \"from\" value 1e+308 is out of the float range");
-  EXPECT_ERROR(in_world("Texture \"t\" \"spectrum\" \"checkerboard\" \"string mapping\" \"planar\" \"vector3 v1\" [1e308 0 0]\n"),
-               "parameter \"v1\" value 1e+308 is out of the float range");
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [1e308 0 0 0 0 1 0 0 1]\n"),
-               "parameter \"N\" value 1e+308 is out of the float range");
-  EXPECT_ERROR(in_world("LightSource \"point\" \"rgb I\" [1e308 1 1]\n"), "parameter \"I\" value 1e+308 is out of the float range");
+  EXPECT_ERROR(
+      in_world(
+          "Texture \"t\" \"spectrum\" \"checkerboard\" \"string mapping\" \"planar\" \"vector3 v1\" [1e308 0 0]\n"),
+      "parameter \"v1\" value 1e+308 is out of the float range");
+  EXPECT_ERROR(
+      in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [1e308 0 0 0 0 1 0 0 1]\n"),
+      "parameter \"N\" value 1e+308 is out of the float range");
+  EXPECT_ERROR(in_world("LightSource \"point\" \"rgb I\" [1e308 1 1]\n"),
+               "parameter \"I\" value 1e+308 is out of the float range");
   EXPECT_ERROR(in_world("LightSource \"point\" \"spectrum I\" [400 1e308 700 1]\n"),
                "parameter \"I\" value 1e+308 is out of the float range");
-  EXPECT_ERROR(in_world("LightSource \"point\" \"blackbody I\" 1e308\n"), "parameter \"I\" value 1e+308 is out of the float range");
-  EXPECT_ERROR(in_world("LightSource \"point\" \"blackbody I\" 1e9\n"), "parameter \"I\": blackbody temperature 1000000000 K is outside [100, 1e7] K");
+  EXPECT_ERROR(in_world("LightSource \"point\" \"blackbody I\" 1e308\n"),
+               "parameter \"I\" value 1e+308 is out of the float range");
+  EXPECT_ERROR(in_world("LightSource \"point\" \"blackbody I\" 1e9\n"),
+               "parameter \"I\": blackbody temperature 1000000000 K is outside [100, 1e7] K");
   // A vector2 parameter is read by no plugin: it is reported as unused.
   EXPECT_ERROR(in_world("Shape \"sphere\" \"vector2 x\" [1e308 0]\n" + light), "unused parameter \"vector2 x\"");
   EXPECT_ERROR(in_world("Translate 1e308 0 0\n"), "hostile.pbrt:8:11: error: Translate: value 1e308 is out of range");
@@ -316,13 +327,15 @@ TEST(HostileInput, OverflowingLightPowerIsAnErrorNamingTheParameter) {
 TEST(HostileInput, OverflowingOrDegenerateTransformNamesTheDirective) {
   EXPECT_ERROR(in_world("Scale 1e20 1e20 1e20\nLightSource \"distant\"\n"),
                "hostile.pbrt:8:1: error: Scale makes the current transform overflow: it scales lengths by up to 1e+20");
-  EXPECT_ERROR(in_world("Scale 1e-20 1e-20 1e-20\nShape \"sphere\"\n"),
-               "hostile.pbrt:8:1: error: Scale makes the current transform degenerate: it scales lengths by as little as 1e-20");
+  EXPECT_ERROR(
+      in_world("Scale 1e-20 1e-20 1e-20\nShape \"sphere\"\n"),
+      "hostile.pbrt:8:1: error: Scale makes the current transform degenerate: it scales lengths by as little as 1e-20");
   // Each factor is fine; the product overflows at the second directive.
   EXPECT_ERROR(in_world("Scale 1e10 1e10 1e10\nScale 1e10 1 1\n"),
                "hostile.pbrt:9:1: error: Scale makes the current transform overflow: it scales lengths by up to 1e+20");
-  EXPECT_ERROR(in_world("Translate 1e19 0 0\n"), "hostile.pbrt:8:1: error: Translate makes the current transform "
-                                                "overflow: it moves the origin 1e+19 away");
+  EXPECT_ERROR(in_world("Translate 1e19 0 0\n"),
+               "hostile.pbrt:8:1: error: Translate makes the current transform "
+               "overflow: it moves the origin 1e+19 away");
   EXPECT_ERROR(in_world("ConcatTransform [1e20 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1]\n"),
                "hostile.pbrt:8:1: error: ConcatTransform makes the current transform overflow");
   EXPECT_EQ(build_error(in_world("Scale 1e15 1e15 1e15\nLightSource \"distant\"\nShape \"sphere\"\n")), "");
@@ -332,8 +345,9 @@ TEST(HostileInput, OverflowingOrDegenerateTransformNamesTheDirective) {
 TEST(HostileInput, NegativeRoughnessIsAnErrorNamingTheParameter) {
   EXPECT_ERROR(in_world("Material \"conductor\" \"float roughness\" -1\nShape \"sphere\"\n"),
                "hostile.pbrt:8:22: error: parameter \"roughness\": roughness -1 must not be negative");
-  EXPECT_ERROR(in_world("Material \"conductor\" \"float uroughness\" 0.1 \"float vroughness\" -0.5\nShape \"sphere\"\n"),
-               "error: parameter \"vroughness\": roughness -0.5 must not be negative");
+  EXPECT_ERROR(
+      in_world("Material \"conductor\" \"float uroughness\" 0.1 \"float vroughness\" -0.5\nShape \"sphere\"\n"),
+      "error: parameter \"vroughness\": roughness -0.5 must not be negative");
   EXPECT_ERROR(in_world("Material \"dielectric\" \"float uroughness\" -0.01\nShape \"sphere\"\n"),
                "error: parameter \"uroughness\": roughness -0.01 must not be negative");
   EXPECT_EQ(build_error(in_world("Material \"conductor\" \"float roughness\" 0\nShape \"sphere\"\n")), "");
@@ -346,7 +360,9 @@ TEST(HostileInput, ConductorOpticalConstantsAndHugeSpectrumValues) {
                "error: parameter \"eta\": must be positive (its smallest value here is");
   EXPECT_ERROR(in_world("Material \"conductor\" \"rgb k\" [1 -0.5 1]\nShape \"sphere\"\n"),
                "error: parameter \"k\": must be non-negative (its smallest value here is -0.5)");
-  EXPECT_EQ(build_error(in_world("Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [0 3 3]\nShape \"sphere\"\n")), "");
+  EXPECT_EQ(
+      build_error(in_world("Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [0 3 3]\nShape \"sphere\"\n")),
+      "");
   EXPECT_ERROR(in_world("Material \"dielectric\" \"spectrum eta\" [400 1e308 700 1e308]\nShape \"sphere\"\n"),
                "error: parameter \"eta\" value 1e+308 is out of the float range");
 }
@@ -355,53 +371,64 @@ TEST(HostileInput, ConductorOpticalConstantsAndHugeSpectrumValues) {
 // Shapes: negative sizes and indices, degenerate and empty meshes
 
 TEST(HostileInput, NegativeRadiiAndIndices) {
-  EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" -1\n"), "hostile.pbrt:8:16: error: parameter \"radius\": must be positive, got -1");
-  EXPECT_ERROR(in_world("Shape \"disk\" \"float radius\" -1\n"), "hostile.pbrt:8:14: error: parameter \"radius\": must be positive, got -1");
+  EXPECT_ERROR(in_world("Shape \"sphere\" \"float radius\" -1\n"),
+               "hostile.pbrt:8:16: error: parameter \"radius\": must be positive, got -1");
+  EXPECT_ERROR(in_world("Shape \"disk\" \"float radius\" -1\n"),
+               "hostile.pbrt:8:14: error: parameter \"radius\": must be positive, got -1");
   EXPECT_ERROR(in_world("Shape \"disk\" \"float radius\" 1 \"float innerradius\" -1\n"),
                "parameter \"innerradius\": must be in [0, radius = 1), got -1");
   EXPECT_ERROR(in_world("Material \"dielectric\" \"float eta\" -1.5\nShape \"sphere\"\n"),
                "hostile.pbrt:8:23: error: parameter \"eta\": index of refraction -1.5 must be positive");
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 -1 2]\n"),
-               "hostile.pbrt:8:53: error: parameter \"indices\": index -1 (entry 1) is out of range: there are 3 vertices");
+  EXPECT_ERROR(
+      in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 -1 2]\n"),
+      "hostile.pbrt:8:53: error: parameter \"indices\": index -1 (entry 1) is out of range: there are 3 vertices");
   EXPECT_ERROR(std::string("Camera \"thinlens\" \"float lensradius\" -1\nWorldBegin\n"),
                "parameter \"lensradius\": must not be negative");
 }
 
 TEST(HostileInput, ZeroAreaTrianglesAndDegenerateMeshes) {
   const char* error = "error: parameter \"P\": the mesh has no triangle of nonzero, finite area";
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 2 0 0]\n"), error);   // collinear
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [1 1 1 1 1 1 1 1 1]\n"), error);   // one point
+  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 2 0 0]\n"), error);        // collinear
+  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [1 1 1 1 1 1 1 1 1]\n"), error);        // one point
   EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 3e38 0 0 0 3e38 0]\n"), error);  // area overflows
   EXPECT_ERROR(in_world("Shape \"bilinearmesh\" \"point3 P\" [0 0 0 0 0 0 0 0 0 0 0 0]\n"), error);
   // Some degenerate triangles among good ones: dropped with a warning, the rest renders.
   int warnings = warning_count();
   EXPECT_EQ(build_error(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 2 0 0]\n"
-                                 "  \"integer indices\" [0 1 2 0 1 3]\n")), "");
+                                 "  \"integer indices\" [0 1 2 0 1 3]\n")),
+            "");
   EXPECT_GT(warning_count(), warnings);
   // Zero shading normals fall back to the geometric normal.
-  RenderResult r = render(in_world("LightSource \"distant\"\nShape \"trianglemesh\" \"point3 P\" [-5 -5 0 5 -5 0 0 5 0]\n"
-                                   "  \"normal N\" [0 0 0 0 0 0 0 0 0]\n"));
+  RenderResult r =
+      render(in_world("LightSource \"distant\"\nShape \"trianglemesh\" \"point3 P\" [-5 -5 0 5 -5 0 0 5 0]\n"
+                      "  \"normal N\" [0 0 0 0 0 0 0 0 0]\n"));
   EXPECT_EQ(r.nonfinite_samples, 0u);
 }
 
 TEST(HostileInput, IndicesOutOfRange) {
   const std::string tri = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] ";
-  EXPECT_ERROR(in_world(tri + "\"integer indices\" [0 1 3]\n"),
-               "hostile.pbrt:8:53: error: parameter \"indices\": index 3 (entry 2) is out of range: there are 3 vertices");
-  EXPECT_ERROR(in_world(tri + "\"integer indices\" [0 1]\n"), "parameter \"indices\": 2 vertex indices is not a multiple of 3");
+  EXPECT_ERROR(
+      in_world(tri + "\"integer indices\" [0 1 3]\n"),
+      "hostile.pbrt:8:53: error: parameter \"indices\": index 3 (entry 2) is out of range: there are 3 vertices");
+  EXPECT_ERROR(in_world(tri + "\"integer indices\" [0 1]\n"),
+               "parameter \"indices\": 2 vertex indices is not a multiple of 3");
   EXPECT_ERROR(in_world(tri + "\"integer indices\" [0 1 2147483647]\n"), "index 2147483647 (entry 2) is out of range");
   EXPECT_ERROR(in_world(tri + "\"normal N\" [0 0 1 0 0 1]\n"), "parameter \"N\": 2 normals given for 3 vertices");
   EXPECT_ERROR(in_world(tri + "\"point2 uv\" [0 0]\n"), "parameter \"uv\": 1 uv values given for 3 vertices");
-  EXPECT_ERROR(in_world("Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0] \"integer indices\" [0 1 2 4]\n"),
-               "parameter \"indices\": index 4 (entry 3) is out of range: there are 4 vertices");
+  EXPECT_ERROR(
+      in_world("Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0] \"integer indices\" [0 1 2 4]\n"),
+      "parameter \"indices\": index 4 (entry 3) is out of range: there are 4 vertices");
 }
 
 TEST(HostileInput, EmptyMeshes) {
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" []\n"), "hostile.pbrt:8:22: error: parameter \"point3 P\" has no values");
+  EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" []\n"),
+               "hostile.pbrt:8:22: error: parameter \"point3 P\" has no values");
   EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" []\n"),
                "parameter \"integer indices\" has no values");
-  EXPECT_ERROR(in_world("Shape \"trianglemesh\"\n"), "hostile.pbrt:8:1: error: parameter \"P\": the mesh has no vertex positions");
-  EXPECT_ERROR(in_world("Shape \"bilinearmesh\"\n"), "hostile.pbrt:8:1: error: parameter \"P\": the mesh has no vertex positions");
+  EXPECT_ERROR(in_world("Shape \"trianglemesh\"\n"),
+               "hostile.pbrt:8:1: error: parameter \"P\": the mesh has no vertex positions");
+  EXPECT_ERROR(in_world("Shape \"bilinearmesh\"\n"),
+               "hostile.pbrt:8:1: error: parameter \"P\": the mesh has no vertex positions");
   EXPECT_ERROR(in_world("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 1]\n"),
                "parameter \"indices\": vertex indices are required unless the mesh has exactly 3 vertices (it has 4)");
 }
@@ -423,18 +450,22 @@ TEST(HostileInput, RecursiveInclude) {
     return "";
   };
   std::string message = error_of(dir.file("a.pbrt"));
-  EXPECT_NE(message.find("b.pbrt:3:1: error: recursive Include of \"" + dir.file("a.pbrt") + "\" (a.pbrt -> b.pbrt -> a.pbrt)"),
-            std::string::npos) << message;
+  EXPECT_NE(message.find("b.pbrt:3:1: error: recursive Include of \"" + dir.file("a.pbrt") +
+                         "\" (a.pbrt -> b.pbrt -> a.pbrt)"),
+            std::string::npos)
+      << message;
   message = error_of(dir.file("self.pbrt"));
   EXPECT_NE(message.find("self.pbrt:1:1: error: recursive Include of"), std::string::npos) << message;
   EXPECT_ERROR(in_world("Include \"/\"\n"), "hostile.pbrt:8:1: error: cannot read scene file \"/\": it is a directory");
-  EXPECT_ERROR(in_world("Include \"no-such-file.pbrt\"\n"), "hostile.pbrt:8:1: error: Include \"no-such-file.pbrt\": file not found");
+  EXPECT_ERROR(in_world("Include \"no-such-file.pbrt\"\n"),
+               "hostile.pbrt:8:1: error: Include \"no-such-file.pbrt\": file not found");
 }
 
 std::string ply_header(const char* format, int64_t vertices, int faces) {
-  return fmt::format("ply\nformat {} 1.0\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
-                     "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
-                     format, vertices, faces);
+  return fmt::format(
+      "ply\nformat {} 1.0\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
+      format, vertices, faces);
 }
 
 TEST(HostileInput, PlyThatLiesAboutItsSize) {
@@ -465,9 +496,10 @@ TEST(HostileInput, PlyThatLiesAboutItsSize) {
   };
   for (const Case& c : cases) {
     write_file(dir.file(c.name), c.content);
-    std::string message = build_error(in_world(fmt::format("Shape \"plymesh\" \"string filename\" \"{}\"\n", c.name)), {},
-                                      dir.path().string());
-    EXPECT_NE(message.find("hostile.pbrt:8:17: error: parameter \"filename\""), std::string::npos) << c.name << ": " << message;
+    std::string message = build_error(in_world(fmt::format("Shape \"plymesh\" \"string filename\" \"{}\"\n", c.name)),
+                                      {}, dir.path().string());
+    EXPECT_NE(message.find("hostile.pbrt:8:17: error: parameter \"filename\""), std::string::npos)
+        << c.name << ": " << message;
     EXPECT_NE(message.find(dir.file(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.message), std::string::npos) << c.name << ": " << message;
   }
@@ -482,10 +514,13 @@ TEST(HostileInput, TextureThatIsNotAnImage) {
   ASSERT_GT(png.size(), 200u);
   write_file(dir.file("truncated.png"), png.substr(0, 100));
   for (const char* name : {"text.png", "empty.exr", "truncated.png"}) {
-    std::string world = fmt::format("Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"{}\"\n"
-                                    "Material \"diffuse\" \"texture reflectance\" \"t\"\nShape \"sphere\"\n", name);
+    std::string world = fmt::format(
+        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"{}\"\n"
+        "Material \"diffuse\" \"texture reflectance\" \"t\"\nShape \"sphere\"\n",
+        name);
     std::string message = build_error(in_world(world), {}, dir.path().string());
-    EXPECT_NE(message.find("hostile.pbrt:8:35: error: parameter \"filename\""), std::string::npos) << name << ": " << message;
+    EXPECT_NE(message.find("hostile.pbrt:8:35: error: parameter \"filename\""), std::string::npos)
+        << name << ": " << message;
     EXPECT_NE(message.find(name), std::string::npos) << name << ": " << message;
   }
 }
@@ -517,11 +552,13 @@ TEST(HostileInput, ResolutionsAndSamplesPerPixel) {
     return fmt::format("Sampler \"zsobol\" \"integer pixelsamples\" {}\nWorldBegin\n", spp);
   };
   EXPECT_ERROR(sampler("0"), "hostile.pbrt:1:18: error: parameter \"pixelsamples\": value 0 is outside [1, 16777216]");
-  EXPECT_ERROR(sampler("1099511627776"),  // 2^40
-               "hostile.pbrt:1:41: error: parameter \"integer pixelsamples\": value 1099511627776 is not a 32-bit integer");
+  EXPECT_ERROR(
+      sampler("1099511627776"),  // 2^40
+      "hostile.pbrt:1:41: error: parameter \"integer pixelsamples\": value 1099511627776 is not a 32-bit integer");
   EXPECT_ERROR(sampler("-5"), "parameter \"pixelsamples\": value -5 is outside [1, 16777216]");
-  EXPECT_ERROR(std::string("Sampler \"stratified\" \"integer xsamples\" 100000 \"integer ysamples\" 100000\nWorldBegin\n"),
-               "parameter \"xsamples\": xsamples x ysamples = 10000000000 is more than 16777216");
+  EXPECT_ERROR(
+      std::string("Sampler \"stratified\" \"integer xsamples\" 100000 \"integer ysamples\" 100000\nWorldBegin\n"),
+      "parameter \"xsamples\": xsamples x ysamples = 10000000000 is more than 16777216");
   RenderOverrides too_many;
   too_many.spp = 1 << 30;
   EXPECT_PRED_FORMAT2(contains, build_error(in_world(""), too_many),
@@ -622,7 +659,8 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
       {base + " --camera " + shell_quote("Camera \"navarro\" \"float pupildiameter\" 20"),
        "--camera:1:18: error: parameter \"pupildiameter\": 20 mm is outside (0, 10] mm", 1},
       {base + " --camera " + shell_quote("Camera \"navarro\" \"float accommodation\" 1000"),
-       "--camera:1:18: error: parameter \"accommodation\": 1000 D is outside the range of model 'navarro' [0, 15] D", 1},
+       "--camera:1:18: error: parameter \"accommodation\": 1000 D is outside the range of model 'navarro' [0, 15] D",
+       1},
       {"render -q " + shell_quote(truncated) + out,
        "truncated.pbrt:8:33: error: parameter \"point3 P\": '[' has no matching ']' before the end of the file", 1},
       {base + " --spp 0", "--spp: Value 0 not in range 1 to 16777216", 2},
@@ -636,14 +674,16 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
       {base + " --checkpoint -1", "--checkpoint: Value -1 not in range", 2},
       {"render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("out.bmp")),
        "--output: \"" + dir.file("out.bmp") + "\": the extension must be .exr (linear float) or .png (sRGB 8-bit)", 2},
-      {"render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("blocker/out.png")), "blocker/out.png", 1},
+      {"render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("blocker/out.png")),
+       "blocker/out.png", 1},
   };
   std::vector<std::string> args;
   for (const Case& c : cases) args.push_back(c.args);
   std::vector<RunResult> results = run_eyetrace_all(args);
   for (size_t i = 0; i < cases.size(); ++i) {
     EXPECT_EQ(results[i].exit_code, cases[i].exit_code) << cases[i].args << "\n" << results[i].output;
-    EXPECT_NE(results[i].output.find(cases[i].message), std::string::npos) << cases[i].args << "\n" << results[i].output;
+    EXPECT_NE(results[i].output.find(cases[i].message), std::string::npos) << cases[i].args << "\n"
+                                                                           << results[i].output;
   }
   EXPECT_FALSE(fs::exists(dir.file("out.exr")));
   EXPECT_FALSE(fs::exists(dir.file("out.bmp")));
@@ -652,7 +692,8 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
 // A missing output directory is created (documented in docs/robustness.md).
 TEST(HostileProgram, MissingOutputDirectoryIsCreated) {
   TempDir dir;
-  RunResult r = run_eyetrace("render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("new/sub/out.png")));
+  RunResult r =
+      run_eyetrace("render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("new/sub/out.png")));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir.file("new/sub/out.png")));
 }
@@ -667,13 +708,15 @@ TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
   write_file(bad_scene, in_world("Shape \"sphere\" \"float radius\" -1\n"));
   const std::string runs[] = {
       "render -q " + shell_quote(bad_scene) + " -o " + shell_quote(output),
-      "render -q " + shell_quote(scene) + " -o " + shell_quote(output) + " --camera " + shell_quote("Camera \"navarro\" \"float pupildiameter\" 20"),
+      "render -q " + shell_quote(scene) + " -o " + shell_quote(output) + " --camera " +
+          shell_quote("Camera \"navarro\" \"float pupildiameter\" 20"),
       "render -q " + shell_quote(scene) + " -o " + shell_quote(output) + " --resolution 0x0",
       "render -q " + shell_quote(dir.file("missing.pbrt")) + " -o " + shell_quote(output),
   };
   const int exit_codes[] = {1, 1, 2, 1};  // 2: a bad command line
   std::vector<RunResult> results = run_eyetrace_all(std::vector<std::string>(std::begin(runs), std::end(runs)));
-  for (size_t i = 0; i < results.size(); ++i) EXPECT_EQ(results[i].exit_code, exit_codes[i]) << runs[i] << "\n" << results[i].output;
+  for (size_t i = 0; i < results.size(); ++i)
+    EXPECT_EQ(results[i].exit_code, exit_codes[i]) << runs[i] << "\n" << results[i].output;
   EXPECT_EQ(read_file(output), precious);
   // Nothing else (no temporary file) is left behind.
   int files = 0;

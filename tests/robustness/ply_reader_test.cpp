@@ -30,7 +30,8 @@ std::string binary_quad(bool big_endian) {
   data += bytes_of(uint8_t(4), big_endian);
   for (int32_t i : {0, 1, 2, 3}) data += bytes_of(i, big_endian);
   return header(big_endian ? "binary_big_endian" : "binary_little_endian",
-                std::string(kXYZ) + "element face 1\nproperty list uchar int vertex_indices\n") + data;
+                std::string(kXYZ) + "element face 1\nproperty list uchar int vertex_indices\n") +
+         data;
 }
 
 std::string ply_error(const std::string& bytes) {
@@ -83,7 +84,8 @@ TEST(PlyReader, MalformedFilesSayWhatIsWrong) {
             "header line 3: element needs a name and a count (a whole number >= 0)");
   EXPECT_EQ(ply_error(header("ascii", "element vertex 1\nproperty float x\nproperty float y\n") + "0 0\n"),
             "the vertex element has no x, y and z properties");
-  EXPECT_EQ(ply_error(header("ascii", std::string(kXYZ)) + "0 0 0\n1 0 0\n0 1 0\n0 0 zero\n"), "\"zero\" is not a number");
+  EXPECT_EQ(ply_error(header("ascii", std::string(kXYZ)) + "0 0 0\n1 0 0\n0 1 0\n0 0 zero\n"),
+            "\"zero\" is not a number");
   EXPECT_EQ(ply_error(header("ascii", std::string(kXYZ) + "element face 1\nproperty list uchar int vertex_indices\n") +
                       "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1.5 2\n"),
             "face 0: vertex index 1.5 is not an integer");

@@ -14,16 +14,18 @@ namespace {
 Image render(const std::string& lens_dimensions, uint64_t seed, double accommodation = 0) {
   SceneDescription desc = parse_scene_file(std::string(EYETRACE_SOURCE_DIR) + "/scenes/peripheral.pbrt");
   desc.sampler = parse_directive_text(
-      "Sampler \"zsobol\" \"integer pixelsamples\" 64 \"string lensdimensions\" \"" + lens_dimensions + "\"",
-      "Sampler", "test");
+      "Sampler \"zsobol\" \"integer pixelsamples\" 64 \"string lensdimensions\" \"" + lens_dimensions + "\"", "Sampler",
+      "test");
   RenderOverrides o;
   // The centre of a 480x320 view (96x64 pixels): fine enough that 1 D of defocus shows.
   o.resolution = IVec2(480, 320);
   o.crop = Vec4(0.4f, 0.6f, 0.4f, 0.6f);
   o.seed = seed;
-  o.camera = parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 50 "
-                                  "\"float accommodation\" " + std::to_string(accommodation),
-                                  "Camera", "test");
+  o.camera = parse_directive_text(
+      "Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 50 "
+      "\"float accommodation\" " +
+          std::to_string(accommodation),
+      "Camera", "test");
   RenderSetup s = build_render_setup(desc, o);
   RenderCounters counters;
   RenderOptions opts;

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "../support/chi2.h"
-#include "scene/params.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/sobol_sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "samplers/zsobol_sampler.h"
+#include "scene/params.h"
 
 namespace {
 

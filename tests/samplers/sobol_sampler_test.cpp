@@ -10,8 +10,8 @@
 #include <set>
 
 #include "core/error.h"
-#include "scene/params.h"
 #include "samplers/lowdiscrepancy.h"
+#include "scene/params.h"
 
 namespace {
 

@@ -40,9 +40,9 @@ void expect_at(const Diagnostic& d, int line, int column, const std::string& fra
 TEST(Diagnostics, ParserReportsEveryIndependentError) {
   const std::vector<Diagnostic> e = parse_errors(
       "WorldBegin\n"
-      "Shpae \"sphere\"\n"                        // line 2: unknown directive
-      "Shape \"sphere\" \"flaot radius\" 2\n"     // line 3: unknown parameter type
-      "Translate 1 2\n"                           // line 4: too few numbers
+      "Shpae \"sphere\"\n"                     // line 2: unknown directive
+      "Shape \"sphere\" \"flaot radius\" 2\n"  // line 3: unknown parameter type
+      "Translate 1 2\n"                        // line 4: too few numbers
       "AttributeBegin\n"
       "Shape \"sphere\"\n"
       "AttributeEnd\n");
@@ -54,9 +54,9 @@ TEST(Diagnostics, ParserReportsEveryIndependentError) {
 
 TEST(Diagnostics, BuilderReportsEveryIndependentError) {
   const std::vector<Diagnostic> e = build_errors(
-      "Camera \"perspective\" \"float fov\" 200\n"    // line 1: out of range
+      "Camera \"perspective\" \"float fov\" 200\n"  // line 1: out of range
       "WorldBegin\n"
-      "Shape \"spere\"\n"                            // line 3: unknown shape
+      "Shape \"spere\"\n"                                              // line 3: unknown shape
       "LightSource \"point\" \"rgb I\" [1 1 1] \"float scael\" 2\n");  // line 4: unused parameter
   ASSERT_EQ(e.size(), 3u);
   expect_at(e[0], 1, 22, "parameter \"fov\"");

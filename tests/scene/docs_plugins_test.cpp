@@ -119,10 +119,10 @@ NameSet keys_of(const Map& table) {
 std::map<std::string, NameSet> registered_by_directive(const Registry& r) {
   NameSet textures = keys_of(r.float_textures);
   textures.merge(keys_of(r.spectrum_textures));
-  return {{"Camera", keys_of(r.cameras)},         {"Sampler", keys_of(r.samplers)},
-          {"PixelFilter", keys_of(r.filters)},    {"Shape", keys_of(r.shapes)},
-          {"Material", keys_of(r.materials)},     {"Texture", textures},
-          {"LightSource", keys_of(r.lights)},     {"AreaLightSource", keys_of(r.area_lights)},
+  return {{"Camera", keys_of(r.cameras)},        {"Sampler", keys_of(r.samplers)},
+          {"PixelFilter", keys_of(r.filters)},   {"Shape", keys_of(r.shapes)},
+          {"Material", keys_of(r.materials)},    {"Texture", textures},
+          {"LightSource", keys_of(r.lights)},    {"AreaLightSource", keys_of(r.area_lights)},
           {"Integrator", keys_of(r.integrators)}};
 }
 

@@ -18,9 +18,7 @@ namespace fs = std::filesystem;
 
 const fs::path kDataDir = fs::path(EYETRACE_SOURCE_DIR) / "tests" / "data" / "parser";
 
-SceneDescription parse(const std::string& text) {
-  return parse_scene_string(text, "test.pbrt", kDataDir.string());
-}
+SceneDescription parse(const std::string& text) { return parse_scene_string(text, "test.pbrt", kDataDir.string()); }
 
 const Param& param_of(const ParameterList& list, const std::string& name) {
   const Param* p = list.find(name);
@@ -219,8 +217,7 @@ TEST(ParserFiles, BasicSceneRoundTrips) {
     EXPECT_EQ(d.shapes[i].area_light, area_light[i]);
   }
   EXPECT_EQ(d.shapes[0].loc.line, 18);
-  EXPECT_EQ(param_of(d.shapes[0].params, "radius").loc.to_string(),
-            (kDataDir / "basic.pbrt").string() + ":18:16");
+  EXPECT_EQ(param_of(d.shapes[0].params, "radius").loc.to_string(), (kDataDir / "basic.pbrt").string() + ":18:16");
   EXPECT_TRUE(d.shapes[0].world_from_object.is_identity());
   expect_vec_near(d.shapes[1].world_from_object.point(Vec3(0.f)), Vec3(1, 0, 0));
   EXPECT_EQ(d.shapes[1].params.get_ints("indices"), (std::vector<int>{0, 1, 2}));

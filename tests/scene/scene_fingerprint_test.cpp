@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "render/render_state.h"
-#include "scene/scene_fingerprint.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
+#include "scene/scene_fingerprint.h"
 
 namespace eyetrace {
 namespace {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/parser.h"
 #include "render/scene.h"
+#include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {

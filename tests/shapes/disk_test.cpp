@@ -12,9 +12,8 @@
 namespace eyetrace {
 namespace {
 
-
-std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats,
-                                 const Transform& t = Transform(), bool reverse = false) {
+std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),
+                                 bool reverse = false) {
   ParameterList pl(SourceLoc{"disk.pbrt", 2, 1});
   for (auto& [name, value] : floats) {
     Param p;
@@ -88,11 +87,11 @@ TEST(Disk, HitFromBelowKeepsNormalAndCentreHasFrame) {
 TEST(Disk, MissesOutsideInsideAndParallel) {
   OneShape s(make_disk({{"radius", 2}, {"innerradius", 1}, {"phimax", 90}}));
   EXPECT_TRUE(s.hit(Vec3(1, 1, 1), Vec3(0, 0, -1)));
-  EXPECT_FALSE(s.hit(Vec3(0.5f, 0.5f, 1), Vec3(0, 0, -1)));   // in the hole
-  EXPECT_FALSE(s.hit(Vec3(1.5f, 1.5f, 1), Vec3(0, 0, -1)));   // beyond the rim (r = 2.12)
-  EXPECT_FALSE(s.hit(Vec3(-1, 1, 1), Vec3(0, 0, -1)));        // phi = 135 > 90 degrees
-  EXPECT_FALSE(s.hit(Vec3(-3, 1, 0), Vec3(1, 0, 0)));         // in the plane: grazes
-  EXPECT_FALSE(s.hit(Vec3(-3, 1, 0.5f), Vec3(1, 0, 0)));      // parallel above
+  EXPECT_FALSE(s.hit(Vec3(0.5f, 0.5f, 1), Vec3(0, 0, -1)));  // in the hole
+  EXPECT_FALSE(s.hit(Vec3(1.5f, 1.5f, 1), Vec3(0, 0, -1)));  // beyond the rim (r = 2.12)
+  EXPECT_FALSE(s.hit(Vec3(-1, 1, 1), Vec3(0, 0, -1)));       // phi = 135 > 90 degrees
+  EXPECT_FALSE(s.hit(Vec3(-3, 1, 0), Vec3(1, 0, 0)));        // in the plane: grazes
+  EXPECT_FALSE(s.hit(Vec3(-3, 1, 0.5f), Vec3(1, 0, 0)));     // parallel above
 }
 
 TEST(Disk, ReverseOrientationAndMirror) {

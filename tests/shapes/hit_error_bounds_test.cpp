@@ -51,7 +51,8 @@ TEST(HitErrorBounds, TriangleExactPointInsideBox) {
   for (float s : kScales)
     for (float off : kOffsetsInRadii) {
       Vec3 base = s * off * Vec3(1.f, -0.7f, 0.4f);
-      Vec3 p[3] = {base + s * Vec3(-1.f, -1.f, 0.1f), base + s * Vec3(1.3f, -0.8f, -0.2f), base + s * Vec3(0.f, 1.2f, 0.3f)};
+      Vec3 p[3] = {base + s * Vec3(-1.f, -1.f, 0.1f), base + s * Vec3(1.3f, -0.8f, -0.2f),
+                   base + s * Vec3(0.f, 1.2f, 0.3f)};
       ParameterList pl(SourceLoc{"bounds.pbrt", 1, 1});
       pl.add(param("point3", "P", {p[0].x, p[0].y, p[0].z, p[1].x, p[1].y, p[1].z, p[2].x, p[2].y, p[2].z}));
       pl.add(param("integer", "indices", {0, 1, 2}));

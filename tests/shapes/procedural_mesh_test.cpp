@@ -9,7 +9,6 @@
 namespace eyetrace {
 namespace {
 
-
 double mesh_area(const ProceduralMesh& m) {
   double area = 0.0;
   for (size_t i = 0; i < m.indices.size(); i += 3) {

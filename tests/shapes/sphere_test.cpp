@@ -12,7 +12,6 @@
 namespace eyetrace {
 namespace {
 
-
 ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) {
   ParameterList pl(SourceLoc{"sphere.pbrt", 5, 1});
   for (auto& [name, value] : floats) {
@@ -26,8 +25,8 @@ ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) 
   return pl;
 }
 
-std::unique_ptr<Shape> make_sphere(std::vector<std::pair<std::string, double>> floats,
-                                   const Transform& t = Transform(), bool reverse = false) {
+std::unique_ptr<Shape> make_sphere(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),
+                                   bool reverse = false) {
   ParameterList pl = sphere_params(std::move(floats));
   auto shapes = create_sphere_shapes(ShapeContext{pl, t, reverse, ""});
   EXPECT_NO_THROW(pl.check_unused("Shape \"sphere\""));
@@ -111,8 +110,8 @@ TEST(Sphere, GrazingRaysMissOrHitByDistance) {
   OneShape s(make_sphere({}));
   EXPECT_FALSE(s.hit(Vec3(1.001f, 0, -5), Vec3(0, 0, 1)));
   EXPECT_TRUE(s.hit(Vec3(0.999f, 0, -5), Vec3(0, 0, 1)));
-  EXPECT_FALSE(s.hit(Vec3(0, 0, -5), Vec3(0, 0, -1)));      // pointing away
-  EXPECT_FALSE(s.hit(Vec3(0, 0, -5), Vec3(0, 0, 1), 3.9f)); // tmax before the sphere
+  EXPECT_FALSE(s.hit(Vec3(0, 0, -5), Vec3(0, 0, -1)));       // pointing away
+  EXPECT_FALSE(s.hit(Vec3(0, 0, -5), Vec3(0, 0, 1), 3.9f));  // tmax before the sphere
 }
 
 TEST(Sphere, OccludedRespectsTmax) {

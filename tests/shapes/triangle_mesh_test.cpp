@@ -86,8 +86,8 @@ TEST(TriangleMesh, RaysOutsideOrParallelMiss) {
   SurfaceInteraction si;
   EXPECT_FALSE(s.scene->intersect(Ray{Vec3(0.6f, 0.6f, -1.f), Vec3(0, 0, 1)}, &si));  // beyond the hypotenuse
   EXPECT_FALSE(s.scene->intersect(Ray{Vec3(-0.01f, 0.5f, -1.f), Vec3(0, 0, 1)}, &si));
-  EXPECT_FALSE(s.scene->intersect(Ray{Vec3(-1.f, 0.2f, 1.f), Vec3(1, 0, 0)}, &si));   // in the plane
-  EXPECT_FALSE(s.scene->intersect(Ray{Vec3(0.2f, 0.3f, 2.f), Vec3(0, 0, 1)}, &si));   // pointing away
+  EXPECT_FALSE(s.scene->intersect(Ray{Vec3(-1.f, 0.2f, 1.f), Vec3(1, 0, 0)}, &si));         // in the plane
+  EXPECT_FALSE(s.scene->intersect(Ray{Vec3(0.2f, 0.3f, 2.f), Vec3(0, 0, 1)}, &si));         // pointing away
   EXPECT_FALSE(s.scene->intersect(Ray{Vec3(0.2f, 0.3f, -1.f), Vec3(0, 0, 1), 1.9f}, &si));  // tmax short
 }
 

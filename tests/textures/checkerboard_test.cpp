@@ -2,8 +2,8 @@
 // parameters, the solid (3D) checker and the closed-form filtered average.
 #include <gtest/gtest.h>
 
-#include "scene/texture_store.h"
 #include "core/transform.h"
+#include "scene/texture_store.h"
 #include "textures/checkerboard_texture.h"
 
 namespace eyetrace {

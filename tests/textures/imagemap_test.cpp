@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/texture_store.h"
 #include "core/transform.h"
+#include "scene/texture_store.h"
 #include "textures/imagemap_texture.h"
 
 namespace eyetrace {

@@ -2,8 +2,8 @@
 // named textures.
 #include <gtest/gtest.h>
 
-#include "scene/texture_store.h"
 #include "core/transform.h"
+#include "scene/texture_store.h"
 #include "textures/checkerboard_texture.h"
 #include "textures/constant_texture.h"
 #include "textures/mix_texture.h"
@@ -35,7 +35,8 @@ TEST(ConstantTexture, ValueAndDefault) {
   EXPECT_EQ(create_constant_spectrum_texture(TextureContext{empty, Transform(), store, ""})->evaluate({}), RGB(1.f));
   ParameterList p;
   p.add(number("rgb", "value", {0.1, 0.2, 0.3}));
-  EXPECT_EQ(create_constant_spectrum_texture(TextureContext{p, Transform(), store, ""})->evaluate({}), RGB(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(create_constant_spectrum_texture(TextureContext{p, Transform(), store, ""})->evaluate({}),
+            RGB(0.1f, 0.2f, 0.3f));
 }
 
 TEST(ScaleTexture, MultipliesTexByScale) {
@@ -71,7 +72,8 @@ TEST(MixTexture, LinearBlend) {
   s.add(number("rgb", "tex1", {1, 0, 0}));
   s.add(number("rgb", "tex2", {0, 0, 1}));
   s.add(number("float", "amount", {0.75}));
-  EXPECT_EQ(create_mix_spectrum_texture(TextureContext{s, Transform(), store, ""})->evaluate({}), RGB(0.25f, 0.f, 0.75f));
+  EXPECT_EQ(create_mix_spectrum_texture(TextureContext{s, Transform(), store, ""})->evaluate({}),
+            RGB(0.25f, 0.f, 0.75f));
 }
 
 TEST(MixTexture, AmountFromATexture) {

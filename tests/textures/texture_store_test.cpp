@@ -79,7 +79,8 @@ TEST(TextureStore, SpectrumTextureIsNotAFloat) {
 TEST(TextureStore, RedefinitionIsAnError) {
   TextureStore store;
   store.add_float("a", std::make_unique<ConstantFloatTexture>(1.f), SourceLoc{});
-  EXPECT_THROW(store.add_float("a", std::make_unique<ConstantFloatTexture>(2.f), SourceLoc{"s.pbrt", 7, 1}), SceneError);
+  EXPECT_THROW(store.add_float("a", std::make_unique<ConstantFloatTexture>(2.f), SourceLoc{"s.pbrt", 7, 1}),
+               SceneError);
 }
 
 TEST(TextureStore, WrongParameterTypeIsAnError) {
