@@ -1,4 +1,5 @@
 // The one registration list: every built-in plugin, one line each.
+#include "cameras/eye_params.h"
 #include "cameras/lens_system_camera.h"
 #include "cameras/perspective_camera.h"
 #include "filters/box_filter.h"
@@ -23,6 +24,7 @@
 #include "samplers/stratified_sampler.h"
 #include "samplers/zsobol_sampler.h"
 #include "scene/registry.h"
+#include "scene/scene_builder.h"
 #include "shapes/bilinear_mesh.h"
 #include "shapes/disk.h"
 #include "shapes/ply_mesh.h"
@@ -37,56 +39,78 @@
 namespace eyetrace {
 
 void register_builtin_plugins(Registry& r) {
-  r.cameras["perspective"] = create_perspective_camera;
-  r.cameras["pinhole"] = create_pinhole_camera;
-  r.cameras["thinlens"] = create_thinlens_camera;
-  r.cameras["eye"] = create_eye_camera;
-  for (const std::string& model : optics::eye_model_names()) r.cameras[model] = create_named_eye_camera(model);
-  r.cameras["realistic"] = create_realistic_camera;
+  r.cameras.add("perspective", create_perspective_camera, perspective_camera_spec());
+  r.cameras.add("thinlens", create_thinlens_camera, perspective_camera_spec());
+  r.cameras.add("pinhole", create_pinhole_camera, perspective_camera_spec());
+  r.cameras.add("eye", create_eye_camera, eye_camera_spec("eye"));
+  for (const std::string& model : optics::eye_model_names())
+    r.cameras.add(model, create_named_eye_camera(model), eye_camera_spec(model));
+  r.cameras.add("realistic", create_realistic_camera, realistic_camera_spec());
 
-  r.samplers["independent"] = create_independent_sampler;
-  r.samplers["stratified"] = create_stratified_sampler;
-  r.samplers["halton"] = create_halton_sampler;
-  r.samplers["sobol"] = create_sobol_sampler;
-  r.samplers["zsobol"] = create_zsobol_sampler;
+  r.samplers.add("independent", create_independent_sampler, independent_sampler_spec());
+  r.samplers.add("stratified", create_stratified_sampler, stratified_sampler_spec());
+  r.samplers.add("halton", create_halton_sampler, halton_sampler_spec());
+  r.samplers.add("sobol", create_sobol_sampler, sobol_sampler_spec());
+  r.samplers.add("zsobol", create_zsobol_sampler, zsobol_sampler_spec());
 
-  r.filters["box"] = create_box_filter;
-  r.filters["gaussian"] = create_gaussian_filter;
-  r.filters["triangle"] = create_triangle_filter;
-  r.filters["mitchell"] = create_mitchell_filter;
+  r.filters.add("box", create_box_filter, box_filter_spec());
+  r.filters.add("gaussian", create_gaussian_filter, gaussian_filter_spec());
+  r.filters.add("triangle", create_triangle_filter, triangle_filter_spec());
+  r.filters.add("mitchell", create_mitchell_filter, mitchell_filter_spec());
 
-  r.shapes["trianglemesh"] = create_trianglemesh_shapes;
-  r.shapes["plymesh"] = create_plymesh_shapes;
-  r.shapes["bilinearmesh"] = create_bilinearmesh_shapes;
-  r.shapes["sphere"] = create_sphere_shapes;
-  r.shapes["disk"] = create_disk_shapes;
+  r.shapes.add("trianglemesh", create_trianglemesh_shapes, trianglemesh_shape_spec());
+  r.shapes.add("plymesh", create_plymesh_shapes, plymesh_shape_spec());
+  r.shapes.add("bilinearmesh", create_bilinearmesh_shapes, bilinearmesh_shape_spec());
+  r.shapes.add("sphere", create_sphere_shapes, sphere_shape_spec());
+  r.shapes.add("disk", create_disk_shapes, disk_shape_spec());
 
-  r.materials["diffuse"] = create_diffuse_material;
-  r.materials["coateddiffuse"] = create_coateddiffuse_material;
-  r.materials["conductor"] = create_conductor_material;
-  r.materials["dielectric"] = create_dielectric_material;
-  r.materials["interface"] = create_interface_material;
+  r.materials.add("diffuse", create_diffuse_material, diffuse_material_spec());
+  r.materials.add("coateddiffuse", create_coateddiffuse_material, coateddiffuse_material_spec());
+  r.materials.add("conductor", create_conductor_material, conductor_material_spec());
+  r.materials.add("dielectric", create_dielectric_material, dielectric_material_spec());
+  r.materials.add("interface", create_interface_material, interface_material_spec());
 
-  r.float_textures["imagemap"] = create_imagemap_float_texture;
-  r.float_textures["checkerboard"] = create_checkerboard_float_texture;
-  r.float_textures["constant"] = create_constant_float_texture;
-  r.float_textures["scale"] = create_scale_float_texture;
-  r.float_textures["mix"] = create_mix_float_texture;
-  r.spectrum_textures["imagemap"] = create_imagemap_spectrum_texture;
-  r.spectrum_textures["checkerboard"] = create_checkerboard_spectrum_texture;
-  r.spectrum_textures["constant"] = create_constant_spectrum_texture;
-  r.spectrum_textures["scale"] = create_scale_spectrum_texture;
-  r.spectrum_textures["mix"] = create_mix_spectrum_texture;
+  r.float_textures.add("constant", create_constant_float_texture, constant_texture_spec());
+  r.float_textures.add("scale", create_scale_float_texture, scale_texture_spec());
+  r.float_textures.add("mix", create_mix_float_texture, mix_texture_spec());
+  r.float_textures.add("checkerboard", create_checkerboard_float_texture, checkerboard_texture_spec());
+  r.float_textures.add("imagemap", create_imagemap_float_texture, imagemap_texture_spec());
+  r.spectrum_textures.add("constant", create_constant_spectrum_texture, constant_texture_spec());
+  r.spectrum_textures.add("scale", create_scale_spectrum_texture, scale_texture_spec());
+  r.spectrum_textures.add("mix", create_mix_spectrum_texture, mix_texture_spec());
+  r.spectrum_textures.add("checkerboard", create_checkerboard_spectrum_texture, checkerboard_texture_spec());
+  r.spectrum_textures.add("imagemap", create_imagemap_spectrum_texture, imagemap_texture_spec());
 
-  r.lights["point"] = create_point_light;
-  r.lights["spot"] = create_spot_light;
-  r.lights["distant"] = create_distant_light;
-  r.lights["infinite"] = create_infinite_light;
-  r.area_lights["diffuse"] = create_diffuse_area_light;
+  r.lights.add("point", create_point_light, point_light_spec());
+  r.lights.add("spot", create_spot_light, spot_light_spec());
+  r.lights.add("distant", create_distant_light, distant_light_spec());
+  r.lights.add("infinite", create_infinite_light, infinite_light_spec());
+  r.area_lights.add("diffuse", create_diffuse_area_light, diffuse_area_light_spec());
 
-  r.integrators["path"] = create_path_integrator;
-  r.integrators["direct"] = create_direct_integrator;
-  r.integrators["volpath"] = create_volpath_integrator;
+  r.integrators.add("path", create_path_integrator, path_integrator_spec());
+  r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());
+  r.integrators.add("direct", create_direct_integrator, direct_integrator_spec());
+
+  r.built_in.push_back({"film", "rgb", &film_spec()});
+}
+
+std::vector<PluginListing> Registry::listing() const {
+  std::vector<PluginListing> out;
+  auto add = [&out](const auto& table) {
+    for (const auto& e : table.entries) out.push_back({table.kind, e.name, e.spec});
+  };
+  add(cameras);
+  add(samplers);
+  add(filters);
+  add(shapes);
+  add(materials);
+  add(float_textures);
+  add(spectrum_textures);
+  add(lights);
+  add(area_lights);
+  add(integrators);
+  out.insert(out.end(), built_in.begin(), built_in.end());
+  return out;
 }
 
 const Registry& Registry::builtin() {

@@ -57,7 +57,7 @@ double parse_distance(const std::string& text) {
 }
 
 // The prescription of the --camera directive. Its view parameters (fov, mapping, ...) are read
-// too, so every parameter is checked and a misspelt one is reported, as render would.
+// too; both check the directive against the camera's declared parameters, as render does.
 optics::Prescription camera_prescription(const std::string& text) {
   SceneEntity e = parse_directive_text(text, "Camera", "--camera");
   optics::Prescription p = prescription_from_camera_params(e.name, e.params, ".");
@@ -65,7 +65,6 @@ optics::Prescription camera_prescription(const std::string& text) {
     realistic_view_settings(e.params, IVec2(1, 1));
   else
     eye_view_settings(e.name, e.params);
-  e.params.check_unused("Camera");
   return p;
 }
 

@@ -15,13 +15,79 @@ namespace eyetrace {
 
 namespace {
 
-// A float parameter in full double precision (the parser keeps doubles; get_float marks the
-// parameter used and checks its type).
-double get_double(const ParameterList& params, const std::string& name, double def) {
-  params.get_float(name, static_cast<float>(def));
-  const Param* p = params.find(name);
-  return p && !p->numbers.empty() ? p->numbers[0] : def;
+std::string model_list() {
+  std::string list;
+  for (const std::string& m : optics::eye_model_names()) list += (list.empty() ? "`" : "`, `") + m;
+  return list + "`";
 }
+
+// The eye cameras' table; `eye` also takes the model's name. Ranges that depend on the model
+// (accommodation, variant, retina) are checked by the optics library, which names the
+// parameter too.
+PluginSpec make_eye_spec(bool with_model) {
+  std::vector<ParamSpec> params;
+  if (with_model)
+    params.push_back(
+        param::string("model", "navarro").describe("`eye` only: " + model_list() + ". The named cameras fix it."));
+  params =
+      params +
+      std::vector<ParamSpec>{
+          param::string("variant", "")
+              .describe("`\"wu2011\"` (navarro only): the paper's Table 1 and Eq. 1 as printed (cornea index 1.367, "
+                        "retina at "
+                        "24.4 mm, lens-index law with ln(D+1)); see eye-models.md §5a."),
+          param::real("accommodation", 0)
+              .with_unit("D")
+              .describe(
+                  "In the model's own sense (Navarro's parameter D, 0–15 with 10–15 extrapolated; Le Grand 0–7.05 "
+                  "and Gullstrand 0–10.87 as produced accommodation; Arizona's A, 0–8; Kooijman none). `eyetrace "
+                  "optics` prints the refraction it produces."),
+          param::real("pupildiameter", kDefaultPupilDiameter_mm)
+              .left_open_range(0, optics::kMaxPupilDiameter_mm)
+              .with_unit("mm")
+              .describe("Iris (aperture stop) diameter. The paper's figures use 5."),
+          param::real("refractiveerror", 0)
+              .range(-optics::kMaxRefractiveError_D, optics::kMaxRefractiveError_D)
+              .with_unit("D")
+              .describe(
+                  "Ametropia built in by changing the axial length: −2 is a myope whose relaxed far point is 0.5 m."),
+          param::real("fov", kDefaultEyeFov_deg)
+              .open_range(0, 180)
+              .with_unit("deg")
+              .describe("The full field across the **shorter** image axis."),
+          param::string("mapping", "angle")
+              .in({"angle", "flat", "retina"})
+              .describe("How pixels map to the retina, below."),
+          param::string("retina")
+              .in({"curved", "flat"})
+              .shown_default("model's")
+              .describe("Default: curved where the model has a retinal radius (Navarro/Escudero-Sanz −12 mm, Le Grand "
+                        "and Arizona −13.4, Kooijman −10.8), flat otherwise (Gullstrand, navarro `wu2011`). "
+                        "`\"curved\"` on a flat-retina model needs `retinaradius`."),
+          param::real("retinaradius")
+              .shown_default("model's")
+              .with_unit("mm")
+              .describe("The retina's radius of curvature, magnitude in [1, 1000] (a retina always curves towards the "
+                        "lens). Implies a curved retina."),
+          param::real("wavelength")
+              .range(optics::kMinWavelength_nm, optics::kMaxWavelength_nm)
+              .shown_default("model's reference")
+              .with_unit("nm")
+              .describe("Indices follow each model's dispersion law (Navarro, Le Grand's Cornu, Arizona's Abbe line); "
+                        "Gullstrand and Kooijman have none."),
+          param::real("sceneunit", 1)
+              .above(0)
+              .with_unit("m")
+              .describe("Metres per scene unit (1: the scene is in metres; 0.001: in mm)."),
+      };
+  return PluginSpec{"Camera", "a ray-traced schematic eye: the image on its retina",
+                    "eyetrace's own: a ray-traced schematic eye. No shutter or screen-window parameters (they are "
+                    "unused-parameter errors).",
+                    std::move(params)};
+}
+
+// A float parameter in full double precision.
+double get_double(const PluginParams& p, const std::string& name) { return p.get_double(name); }
 
 bool has_curved_retina(const optics::EyeOptions& o) {
   optics::EyeOptions relaxed = o;
@@ -31,13 +97,11 @@ bool has_curved_retina(const optics::EyeOptions& o) {
   return !optics::make_eye(relaxed).surfaces.back().profile.is_flat();
 }
 
-void read_retina(const ParameterList& params, optics::EyeOptions& o) {
-  const std::string shape = params.get_string("retina", "");
-  if (shape != "" && shape != "curved" && shape != "flat")
-    params.fail("retina", fmt::format("\"{}\" is not a retina shape; use \"curved\" or \"flat\"", shape));
+void read_retina(const PluginParams& params, optics::EyeOptions& o) {
+  const std::string shape = params.has("retina") ? params.get_string("retina") : "";
   if (params.has("retinaradius")) {
-    const double r = get_double(params, "retinaradius", 0.0);
-    if (!std::isfinite(r) || std::abs(r) < 1.0 || std::abs(r) > 1000.0)
+    const double r = get_double(params, "retinaradius");
+    if (std::abs(r) < 1.0 || std::abs(r) > 1000.0)
       params.fail("retinaradius", fmt::format("{} mm is not a retina radius; give its magnitude in [1, 1000] mm "
                                               "(the retina always curves towards the lens)",
                                               r));
@@ -52,18 +116,47 @@ void read_retina(const ParameterList& params, optics::EyeOptions& o) {
                                       o.model));
 }
 
+const PluginSpec& realistic_spec() {
+  static const PluginSpec spec{
+      "Camera",
+      "a lens system read from a lens file, as pbrt-v4's realistic camera",
+      "The film diagonal is a camera parameter here (pbrt-v4: `Film \"diagonal\"`); pbrt-v4's `string aperture` "
+      "(a built-in diaphragm shape or an image) is not read, so it is an unused-parameter error; weights are "
+      "normalised relative illumination; an optional 5th lens-file column gives a conic constant.",
+      {
+          param::string("lensfile").shown_default("required").describe("the lens file, relative to the scene"),
+          param::real("aperturediameter", kDefaultApertureDiameter_mm)
+              .above(0)
+              .with_unit("mm")
+              .describe("clamped, with a warning, to the lens's stop"),
+          param::real("focusdistance", kDefaultFocusDistance)
+              .above(0)
+              .with_unit("m")
+              .describe("distance in focus, measured from the film as pbrt does"),
+          param::real("filmdiagonal", kDefaultFilmDiagonal_mm).above(0).with_unit("mm"),
+      }};
+  return spec;
+}
+
 }  // namespace
 
-optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params) {
+const PluginSpec& eye_camera_spec(const std::string& camera_name) {
+  static const PluginSpec eye = make_eye_spec(true);
+  static const PluginSpec named = make_eye_spec(false);
+  return camera_name == "eye" ? eye : named;
+}
+
+const PluginSpec& realistic_camera_spec() { return realistic_spec(); }
+
+optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& list) {
+  const PluginParams params(list, eye_camera_spec(camera_name), camera_name);
   optics::EyeOptions o;
-  o.model = camera_name == "eye" ? params.get_string("model", "navarro") : camera_name;
-  o.variant = params.get_string("variant", "");
-  o.accommodation_D = get_double(params, "accommodation", 0.0);
-  o.pupil_diameter_mm = get_double(params, "pupildiameter", kDefaultPupilDiameter_mm);
-  o.refractive_error_D = get_double(params, "refractiveerror", 0.0);
-  o.wavelength_nm = get_double(params, "wavelength", 0.0);
-  if (params.has("wavelength") && o.wavelength_nm == 0.0)
-    params.fail("wavelength", "0 nm is not a wavelength (omit it for the model's reference wavelength)");
+  o.model = camera_name == "eye" ? params.get_string("model") : camera_name;
+  o.variant = params.get_string("variant");
+  o.accommodation_D = get_double(params, "accommodation");
+  o.pupil_diameter_mm = get_double(params, "pupildiameter");
+  o.refractive_error_D = get_double(params, "refractiveerror");
+  o.wavelength_nm = params.has("wavelength") ? get_double(params, "wavelength") : 0.0;
   try {
     optics::eye_model_variants(o.model);  // unknown model first, before anything depends on it
     read_retina(params, o);
@@ -75,31 +168,22 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
   }
 }
 
-LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, const ParameterList& params) {
+LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, const ParameterList& list) {
+  const PluginParams params(list, eye_camera_spec(camera_name), camera_name);
   LensSystemCamera::Settings s;
   s.name = camera_name;
-  s.fov_deg = get_double(params, "fov", kDefaultEyeFov_deg);
-  if (!(s.fov_deg > 0.0 && s.fov_deg < 180.0))
-    params.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_deg));
-  const std::string mapping = params.get_string("mapping", "angle");
-  if (!parse_field_mapping(mapping, &s.mapping))
-    params.fail("mapping", fmt::format("\"{}\" is not a mapping; use \"angle\", \"flat\" or \"retina\"", mapping));
-  const double metres_per_unit = get_double(params, "sceneunit", 1.0);
-  if (!(metres_per_unit > 0.0 && std::isfinite(metres_per_unit)))
-    params.fail("sceneunit", fmt::format("{} metres per scene unit must be positive", metres_per_unit));
-  s.scene_units_per_mm = 1e-3 / metres_per_unit;
+  s.fov_deg = get_double(params, "fov");
+  parse_field_mapping(params.get_string("mapping"), &s.mapping);  // the table admits only known names
+  s.scene_units_per_mm = 1e-3 / get_double(params, "sceneunit");
   return s;
 }
 
-optics::Prescription realistic_prescription_from_params(const ParameterList& params, const std::string& search_dir) {
-  const std::string file = params.get_string("lensfile", "");
-  if (file.empty()) params.fail("lensfile", "the realistic camera needs a lens file (\"string lensfile\")");
-  const double aperture = get_double(params, "aperturediameter", kDefaultApertureDiameter_mm);
-  if (!(aperture > 0.0 && std::isfinite(aperture)))
-    params.fail("aperturediameter", fmt::format("{} mm must be positive", aperture));
-  const double focus_m = get_double(params, "focusdistance", kDefaultFocusDistance);
-  if (!(focus_m > 0.0 && std::isfinite(focus_m)))
-    params.fail("focusdistance", fmt::format("{} must be positive", focus_m));
+optics::Prescription realistic_prescription_from_params(const ParameterList& list, const std::string& search_dir) {
+  const PluginParams params(list, realistic_spec(), "realistic");
+  if (!params.has("lensfile")) params.fail("lensfile", "the realistic camera needs a lens file (\"string lensfile\")");
+  const std::string file = params.get_string("lensfile");
+  const double aperture = get_double(params, "aperturediameter");
+  const double focus_m = get_double(params, "focusdistance");
   std::filesystem::path path(resolve_scene_file(search_dir, file));
 
   optics::Prescription p;
@@ -110,9 +194,9 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& par
   }
   // pbrt-v4 clamps an aperture wider than the lens's stop, with a warning; so do we.
   if (aperture > p.stop_diameter_mm()) {
-    warn(params.find("aperturediameter") ? params.find("aperturediameter")->loc : params.loc(),
-         fmt::format("aperture diameter {} mm is larger than the stop of {} ({} mm); clamped", aperture, file,
-                     p.stop_diameter_mm()));
+    params.warn_param("aperturediameter", fmt::format("aperture diameter {} mm is larger than the stop of {} ({} mm); "
+                                                      "clamped",
+                                                      aperture, file, p.stop_diameter_mm()));
   } else {
     optics::set_stop_diameter(p, aperture);
   }
@@ -134,13 +218,12 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& par
   return p;
 }
 
-LensSystemCamera::Settings realistic_view_settings(const ParameterList& params, IVec2 resolution) {
+LensSystemCamera::Settings realistic_view_settings(const ParameterList& list, IVec2 resolution) {
+  const PluginParams params(list, realistic_spec(), "realistic");
   LensSystemCamera::Settings s;
   s.name = "realistic";
   s.mapping = FieldMapping::Flat;
-  const double diagonal = get_double(params, "filmdiagonal", kDefaultFilmDiagonal_mm);
-  if (!(diagonal > 0.0 && std::isfinite(diagonal)))
-    params.fail("filmdiagonal", fmt::format("{} mm must be positive", diagonal));
+  const double diagonal = get_double(params, "filmdiagonal");
   const double pixels = std::sqrt(double(resolution.x) * resolution.x + double(resolution.y) * resolution.y);
   s.film_half_mm = 0.5 * std::min(resolution.x, resolution.y) * diagonal / pixels;
   s.scene_units_per_mm = 1e-3;  // pbrt: scene units are metres

@@ -8,6 +8,7 @@
 #include "cameras/lens_system_camera.h"
 #include "optics/eye_models.h"
 #include "optics/prescription.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -18,6 +19,10 @@ inline constexpr double kDefaultEyeFov_deg = 60.0;
 inline constexpr double kDefaultApertureDiameter_mm = 1.0;  // pbrt-v4 "realistic"
 inline constexpr double kDefaultFocusDistance = 10.0;       // pbrt-v4 "realistic", scene units (m)
 inline constexpr double kDefaultFilmDiagonal_mm = 35.0;     // pbrt-v4 Film "diagonal"
+
+// Declared parameters of the eye cameras ("eye" adds "model") and of "realistic".
+const PluginSpec& eye_camera_spec(const std::string& camera_name);
+const PluginSpec& realistic_camera_spec();
 
 // The eye of camera `camera_name` ("eye" reads "string model"; "navarro" etc. are the model).
 optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params);

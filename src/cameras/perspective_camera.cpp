@@ -45,39 +45,63 @@ std::string PerspectiveCamera::to_string() const {
                      s_.focal_distance);
 }
 
-static PerspectiveCamera::Settings read_settings(const CameraContext& ctx) {
-  const ParameterList& p = ctx.params;
+const PluginSpec& perspective_camera_spec() {
+  static const PluginSpec spec{
+      "Camera",
+      "a perspective projection, with an optional thin lens",
+      "`perspective` as pbrt-v4. `thinlens` is another name for it; `pinhole` is the same camera with "
+      "`lensradius` 0 (any other value is an error). Neither exists in pbrt-v4.",
+      {
+          param::real("fov", 90).open_range(0, 180).with_unit("deg").describe("across the shorter image axis"),
+          param::real("lensradius", 0).at_least(0).with_unit("scene units").describe("thin-lens aperture radius"),
+          param::real("focaldistance", 1e6)
+              .above(0)
+              .with_unit("scene units")
+              .describe("distance of the plane in focus"),
+          param::reals("screenwindow")
+              .size(4)
+              .shown_default("shorter axis spans [−1, 1]")
+              .describe("x0 x1 y0 y1 of the image plane"),
+          param::real("frameaspectratio")
+              .above(0)
+              .describe("aspect for the default screen window instead of the image's"),
+          param::real("shutteropen", 0).describe("other values warn (no motion blur)"),
+          param::real("shutterclose", 1).describe("other values warn (no motion blur)"),
+      }};
+  return spec;
+}
+
+static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const std::string& name) {
+  const PluginParams p(ctx.params, perspective_camera_spec(), name);
   PerspectiveCamera::Settings s;
-  s.fov_deg = p.get_float("fov", 90.f);
-  if (!(s.fov_deg > 0.f && s.fov_deg < 180.f)) p.fail("fov", fmt::format("{} degrees is not in (0, 180)", s.fov_deg));
-  s.lens_radius = p.get_float("lensradius", 0.f);
-  if (s.lens_radius < 0.f) p.fail("lensradius", "must not be negative");
-  s.focal_distance = p.get_float("focaldistance", 1e6f);
-  if (!(s.focal_distance > 0.f)) p.fail("focaldistance", "must be positive");
+  s.fov_deg = p.get_float("fov");
+  s.lens_radius = p.get_float("lensradius");
+  s.focal_distance = p.get_float("focaldistance");
   std::vector<float> sw = p.get_floats("screenwindow");
   if (!sw.empty()) {
-    if (sw.size() != 4 || sw[0] >= sw[1] || sw[2] >= sw[3]) p.fail("screenwindow", "needs 4 values x0 < x1, y0 < y1");
+    if (sw[0] >= sw[1] || sw[2] >= sw[3]) p.fail("screenwindow", "needs x0 < x1, y0 < y1");
     s.screen_window = Vec4(sw[0], sw[1], sw[2], sw[3]);
   }
-  float frame = p.get_float("frameaspectratio", 0.f);
-  if (frame < 0.f) p.fail("frameaspectratio", "must be positive");
-  if (frame > 0.f && sw.empty()) s.screen_window = default_screen_window(ctx.resolution, frame);
+  if (p.has("frameaspectratio") && sw.empty())
+    s.screen_window = default_screen_window(ctx.resolution, p.get_float("frameaspectratio"));
   // Motion blur is not supported: shutter times are accepted only as the instant default.
-  float open = p.get_float("shutteropen", 0.f), close = p.get_float("shutterclose", 1.f);
-  if (open != 0.f || close != 1.f) warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; ignored");
+  if (p.get_float("shutteropen") != 0.f || p.get_float("shutterclose") != 1.f)
+    warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; ignored");
   return s;
 }
 
 std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx) {
-  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx));
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "perspective"));
 }
 
 std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx) {
-  PerspectiveCamera::Settings s = read_settings(ctx);
+  PerspectiveCamera::Settings s = read_settings(ctx, "pinhole");
   if (s.lens_radius != 0.f) ctx.params.fail("lensradius", "a pinhole camera has no lens; use \"thinlens\"");
   return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, s);
 }
 
-std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) { return create_perspective_camera(ctx); }
+std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) {
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "thinlens"));
+}
 
 }  // namespace eyetrace

@@ -29,6 +29,7 @@ class PerspectiveCamera : public Camera {
   float tan_half_fov_;
 };
 
+const PluginSpec& perspective_camera_spec();  // perspective, thinlens, pinhole
 std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx);
 std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx);
 std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx);

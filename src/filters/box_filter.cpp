@@ -15,8 +15,13 @@ std::string BoxFilter::to_string() const {
   return fmt::format("BoxFilter[xradius={} yradius={}]", radius_.x, radius_.y);
 }
 
-std::unique_ptr<Filter> create_box_filter(const ParameterList& params) {
-  return std::make_unique<BoxFilter>(read_filter_radius(params, 0.5f));
+const PluginSpec& box_filter_spec() {
+  static const PluginSpec spec{"PixelFilter", "equal weight over the radius", "—", filter_radius_params(0.5)};
+  return spec;
+}
+
+std::unique_ptr<Filter> create_box_filter(const ParameterList& list) {
+  return std::make_unique<BoxFilter>(read_filter_radius(PluginParams(list, box_filter_spec(), "box")));
 }
 
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/filter.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -22,6 +23,7 @@ class BoxFilter : public Filter {
 };
 
 // pbrt-v4 "box": float xradius, yradius (0.5).
+const PluginSpec& box_filter_spec();
 std::unique_ptr<Filter> create_box_filter(const ParameterList& params);
 
 }  // namespace eyetrace

@@ -1,20 +1,20 @@
-// The radius every pixel filter reads ("xradius", "yradius" in pixels, pbrt-v4's names).
+// The radius every pixel filter reads ("xradius", "yradius" in pixels, pbrt-v4's names),
+// declared once here and added to each filter's table.
 #pragma once
-#include <fmt/format.h>
+#include <vector>
 
-#include "scene/params.h"
+#include "scene/param_spec.h"
 
 namespace eyetrace {
 
-inline Vec2 read_filter_radius(const ParameterList& params, float default_radius) {
-  // Below 1e-3 pixel a filter is no filter at all; beyond 64 pixels it blurs the image away.
-  auto read = [&](const char* name) {
-    float v = params.get_float(name, default_radius);
-    if (!(v >= 1e-3f && v <= 64.f)) params.fail(name, fmt::format("value {} is outside [0.001, 64] pixels", v));
-    return v;
-  };
-  float rx = read("xradius");
-  return Vec2(rx, read("yradius"));
+// Below 1e-3 pixel a filter is no filter at all; beyond 64 pixels it blurs the image away.
+inline std::vector<ParamSpec> filter_radius_params(double default_radius) {
+  return {param::real("xradius", default_radius).range(1e-3, 64).with_unit("pixels"),
+          param::real("yradius", default_radius).range(1e-3, 64).with_unit("pixels")};
+}
+
+inline Vec2 read_filter_radius(const PluginParams& params) {
+  return Vec2(params.get_float("xradius"), params.get_float("yradius"));
 }
 
 }  // namespace eyetrace

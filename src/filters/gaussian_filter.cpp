@@ -54,9 +54,19 @@ std::string GaussianFilter::to_string() const {
 
 float GaussianFilter::min_sigma(Vec2 radius) { return std::max(radius.x, radius.y) / 256.f; }
 
-std::unique_ptr<Filter> create_gaussian_filter(const ParameterList& params) {
-  Vec2 radius = read_filter_radius(params, 1.5f);
-  float sigma = params.get_float("sigma", 0.5f);
+const PluginSpec& gaussian_filter_spec() {
+  static const PluginSpec spec{
+      "PixelFilter", "a Gaussian, shifted to reach zero at the radius", "—",
+      filter_radius_params(1.5) +
+          std::vector<ParamSpec>{
+              param::real("sigma", 0.5).with_unit("pixels").describe("standard deviation, at least radius/256")}};
+  return spec;
+}
+
+std::unique_ptr<Filter> create_gaussian_filter(const ParameterList& list) {
+  const PluginParams params(list, gaussian_filter_spec(), "gaussian");
+  Vec2 radius = read_filter_radius(params);
+  float sigma = params.get_float("sigma");
   if (!(sigma >= GaussianFilter::min_sigma(radius)))
     params.fail("sigma", fmt::format("value {} must be at least radius / 256 = {} (for a narrower filter use a "
                                      "smaller radius or the box filter)",

@@ -6,6 +6,7 @@
 
 #include "core/filter.h"
 #include "filters/filter_sampler.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -33,6 +34,7 @@ class GaussianFilter : public Filter {
 };
 
 // pbrt-v4 "gaussian": float xradius, yradius (1.5), sigma (0.5).
+const PluginSpec& gaussian_filter_spec();
 std::unique_ptr<Filter> create_gaussian_filter(const ParameterList& params);
 
 }  // namespace eyetrace

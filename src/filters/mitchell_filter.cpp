@@ -34,10 +34,20 @@ std::string MitchellFilter::to_string() const {
   return fmt::format("MitchellFilter[xradius={} yradius={} B={} C={}]", radius_.x, radius_.y, b_, c_);
 }
 
-std::unique_ptr<Filter> create_mitchell_filter(const ParameterList& params) {
-  Vec2 radius = read_filter_radius(params, 2.f);
-  float b = params.get_float_in("B", 1.f / 3.f, -10.f, 10.f);
-  float c = params.get_float_in("C", 1.f / 3.f, -10.f, 10.f);
+const PluginSpec& mitchell_filter_spec() {
+  static const PluginSpec spec{
+      "PixelFilter", "the Mitchell-Netravali cubic", "—",
+      filter_radius_params(2) +
+          std::vector<ParamSpec>{param::real("B", 1.0 / 3.0).range(-10, 10).shown_default("1/3"),
+                                 param::real("C", 1.0 / 3.0).range(-10, 10).shown_default("1/3")}};
+  return spec;
+}
+
+std::unique_ptr<Filter> create_mitchell_filter(const ParameterList& list) {
+  const PluginParams params(list, mitchell_filter_spec(), "mitchell");
+  Vec2 radius = read_filter_radius(params);
+  float b = params.get_float("B");
+  float c = params.get_float("C");
   return std::make_unique<MitchellFilter>(radius, b, c);
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/filter.h"
 #include "filters/filter_sampler.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -32,6 +33,7 @@ class MitchellFilter : public Filter {
 };
 
 // pbrt-v4 "mitchell": float xradius, yradius (2), B, C (1/3).
+const PluginSpec& mitchell_filter_spec();
 std::unique_ptr<Filter> create_mitchell_filter(const ParameterList& params);
 
 }  // namespace eyetrace

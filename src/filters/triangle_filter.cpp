@@ -24,8 +24,14 @@ std::string TriangleFilter::to_string() const {
   return fmt::format("TriangleFilter[xradius={} yradius={}]", radius_.x, radius_.y);
 }
 
-std::unique_ptr<Filter> create_triangle_filter(const ParameterList& params) {
-  return std::make_unique<TriangleFilter>(read_filter_radius(params, 2.f));
+const PluginSpec& triangle_filter_spec() {
+  static const PluginSpec spec{"PixelFilter", "weight falling linearly to zero at the radius", "—",
+                               filter_radius_params(2)};
+  return spec;
+}
+
+std::unique_ptr<Filter> create_triangle_filter(const ParameterList& list) {
+  return std::make_unique<TriangleFilter>(read_filter_radius(PluginParams(list, triangle_filter_spec(), "triangle")));
 }
 
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/filter.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -27,6 +28,7 @@ class TriangleFilter : public Filter {
 float sample_tent(float u, float r);
 
 // pbrt-v4 "triangle": float xradius, yradius (2).
+const PluginSpec& triangle_filter_spec();
 std::unique_ptr<Filter> create_triangle_filter(const ParameterList& params);
 
 }  // namespace eyetrace

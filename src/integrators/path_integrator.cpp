@@ -107,31 +107,59 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
   return L;
 }
 
-static int read_max_depth(const IntegratorContext& ctx, int def) {
-  int d = ctx.params.get_int("maxdepth", def);
-  if (d < 0 || d > 10000) ctx.params.fail("maxdepth", fmt::format("{} is not in [0, 10000]", d));
-  return d;
+namespace {
+
+PluginSpec make_path_spec(int default_depth, const std::string& summary, const std::string& differences) {
+  return PluginSpec{"Integrator",
+                    summary,
+                    differences,
+                    {param::integer("maxdepth", default_depth).range(0, 10000).describe("bounces"),
+                     param::string("lightsampler", "bvh")
+                         .in({"bvh", "power", "uniform"})
+                         .describe("eyetrace always samples lights in proportion to their power"),
+                     param::boolean("regularize", false).describe("`true` warns and is ignored")}};
 }
 
-static void read_common(const IntegratorContext& ctx) {
-  const ParameterList& p = ctx.params;
-  bool given = p.has("lightsampler");
-  std::string ls = p.get_string("lightsampler", "bvh");
-  if (ls != "power" && ls != "uniform" && ls != "bvh")
-    p.fail("lightsampler", "must be \"bvh\", \"power\" or \"uniform\"");
+// The options pbrt-v4's path integrators share; eyetrace has one light sampler.
+int read_path_params(const IntegratorContext& ctx, const PluginSpec& spec, const std::string& name) {
+  const PluginParams p(ctx.params, spec, name);
   // pbrt-v4's default "bvh" is unbiased like ours; only an explicit request is worth a note.
-  if (given && ls != "power") warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
-  if (p.get_bool("regularize", false)) warn(p.loc(), "\"regularize\" is not supported; ignored");
+  const std::string ls = p.get_string("lightsampler");
+  if (p.has("lightsampler") && ls != "power")
+    warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
+  if (p.get_bool("regularize")) warn(p.loc(), "\"regularize\" is not supported; ignored");
+  return p.get_int("maxdepth");
+}
+
+}  // namespace
+
+const PluginSpec& path_integrator_spec() {
+  static const PluginSpec spec = make_path_spec(
+      5, "unidirectional path tracing with next-event estimation and multiple importance sampling",
+      "Lights are always sampled in proportion to their power; asking for `bvh` or `uniform` explicitly warns. "
+      "`regularize` true warns and is ignored.");
+  return spec;
+}
+
+const PluginSpec& volpath_integrator_spec() {
+  static const PluginSpec spec =
+      make_path_spec(5, "as `path` (no participating media)", "Renders exactly as `path`, with a warning.");
+  return spec;
+}
+
+const PluginSpec& direct_integrator_spec() {
+  static const PluginSpec spec = make_path_spec(1, "direct lighting: the path estimator stopped after the first bounce",
+                                                "eyetrace's own; pbrt-v4 has no `direct`.");
+  return spec;
 }
 
 std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx) {
-  read_common(ctx);
-  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 5), "path");
+  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, path_integrator_spec(), "path"), "path");
 }
 
 std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ctx) {
-  read_common(ctx);
-  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 1), "direct");
+  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, direct_integrator_spec(), "direct"),
+                                          "direct");
 }
 
 std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx) {
@@ -139,8 +167,8 @@ std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& c
   // line 0); only a scene that asks for it by name is told that it gets "path".
   if (ctx.params.loc().line > 0)
     warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
-  read_common(ctx);
-  return std::make_unique<PathIntegrator>(ctx.scene, read_max_depth(ctx, 5), "path");
+  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, volpath_integrator_spec(), "volpath"),
+                                          "path");
 }
 
 }  // namespace eyetrace

@@ -29,6 +29,9 @@ class PathIntegrator : public Integrator {
   bool hittable_lights_;
 };
 
+const PluginSpec& path_integrator_spec();
+const PluginSpec& direct_integrator_spec();
+const PluginSpec& volpath_integrator_spec();
 std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx);
 std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ctx);
 std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx);

@@ -61,16 +61,28 @@ float DiffuseAreaLight::power() const {
   return (two_sided_ ? 2.f : 1.f) * kPi * std::max(area_, 0.f) * scale_ * channel_mean(L);
 }
 
+const PluginSpec& diffuse_area_light_spec() {
+  static const PluginSpec spec{
+      "AreaLightSource",
+      "emission from a shape's surface, equal in every direction",
+      "—",
+      {emission_param_spec("L", "emitted radiance"),
+       param::string("filename").describe("an RGB image indexed by the shape's (u, v), instead of `L`"),
+       scale_param_spec(), param::boolean("twosided", false).describe("emit from both sides"),
+       photometric_param_spec("power", "total emitted power")}};
+  return spec;
+}
+
 std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, diffuse_area_light_spec(), "diffuse");
   std::optional<RGB> L = emission_param_or_null(params, "L");
   float scale = scale_param(params);
-  bool two_sided = params.get_bool("twosided", false);
-  std::optional<float> phi = positive_param(params, "power");
-  std::string filename = params.get_string("filename", "");
+  bool two_sided = params.get_bool("twosided");
+  std::optional<float> phi = photometric_param(params, "power");
+  const std::string filename = params.has("filename") ? params.get_string("filename") : "";
 
   std::optional<RGBImage> image;
-  RGB mean_emission = L.value_or(RGB(1.f));
+  RGB mean_emission = L.value_or(params.get_rgb("L"));
   if (!filename.empty()) {
     if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
     std::string path = resolve_scene_file(ctx.search_dir, filename);
@@ -83,7 +95,8 @@ std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   }
   float k_e = (two_sided ? 2.f : 1.f) * kPi * ctx.shape.area() * luminance(mean_emission);
   scale *= photometric_factor(phi, k_e);
-  return std::make_unique<DiffuseAreaLight>(ctx.shape, L.value_or(RGB(1.f)), scale, two_sided, std::move(image));
+  return std::make_unique<DiffuseAreaLight>(ctx.shape, L.value_or(params.get_rgb("L")), scale, two_sided,
+                                            std::move(image));
 }
 
 }  // namespace eyetrace

@@ -49,6 +49,7 @@ class DiffuseAreaLight : public Light {
   float area_;
 };
 
+const PluginSpec& diffuse_area_light_spec();
 std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx);
 
 }  // namespace eyetrace

@@ -23,13 +23,25 @@ void DistantLight::preprocess(const Bounds3& scene_bounds) {
   scene_radius_ = std::isfinite(r) ? r : 0.f;
 }
 
+const PluginSpec& distant_light_spec() {
+  static const PluginSpec spec{
+      "LightSource",
+      "parallel light from one direction (the sun)",
+      "—",
+      {emission_param_spec("L", "radiance"), scale_param_spec(),
+       photometric_param_spec("illuminance", "at a surface facing the light (replaces L's luminance)"),
+       param::point3("from", Vec3(0.f)).describe("the light travels from `from` to `to`"),
+       param::point3("to", Vec3(0.f, 0.f, 1.f))}};
+  return spec;
+}
+
 std::unique_ptr<Light> create_distant_light(const LightContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, distant_light_spec(), "distant");
   RGB L = emission_param(params, "L");
   float scale = scale_param(params);
-  std::optional<float> E = positive_param(params, "illuminance");
-  Vec3 from = params.get_point3("from", Vec3(0.f));
-  Vec3 to = params.get_point3("to", Vec3(0.f, 0.f, 1.f));
+  std::optional<float> E = photometric_param(params, "illuminance");
+  Vec3 from = params.get_point3("from");
+  Vec3 to = params.get_point3("to");
   Vec3 w = ctx.world_from_light.vector(from - to);
   float len = glm::length(w);
   if (!(len > 0.f) || !std::isfinite(len))

@@ -31,6 +31,7 @@ class DistantLight : public Light {
   float scene_radius_ = 0.f;
 };
 
+const PluginSpec& distant_light_spec();
 std::unique_ptr<Light> create_distant_light(const LightContext& ctx);
 
 }  // namespace eyetrace

@@ -83,14 +83,13 @@ void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_
 
 namespace {
 
-EnvironmentMap read_environment_map(const ParameterList& params, const std::string& path) {
+EnvironmentMap read_environment_map(const PluginParams& params, const std::string& path) {
   std::string error;
   size_t non_finite = 0;
   std::optional<RGBImage> image = read_rgb_image(path, &error, &non_finite);
   if (!image) params.fail("filename", fmt::format("cannot read environment image \"{}\": {}", path, error));
   if (non_finite > 0)
-    warn(params.find("filename")->loc,
-         fmt::format("parameter \"filename\": \"{}\" has {} non-finite value(s), read as 0", path, non_finite));
+    params.warn_param("filename", fmt::format("\"{}\" has {} non-finite value(s), read as 0", path, non_finite));
   SphereMapping mapping;
   if (image->width == image->height) {
     mapping = SphereMapping::EqualArea;
@@ -106,18 +105,31 @@ EnvironmentMap read_environment_map(const ParameterList& params, const std::stri
 
 }  // namespace
 
+const PluginSpec& infinite_light_spec() {
+  static const PluginSpec spec{
+      "LightSource",
+      "light from every direction at infinity: uniform, or an environment image",
+      "Latitude-longitude images are accepted; portals are not supported (the whole sphere is sampled).",
+      {emission_param_spec("L", "radiance (default 1 when there is no file)"), scale_param_spec(),
+       photometric_param_spec("illuminance", "the illuminance it gives an upward-facing surface"),
+       param::string("filename")
+           .describe("environment image, square (pbrt-v4's equal-area octahedral map) or 2:1 (latitude-longitude); not "
+                     "with `L`"),
+       param::point3s("portal").describe("warns and is ignored")}};
+  return spec;
+}
+
 std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, infinite_light_spec(), "infinite");
   std::optional<RGB> L = emission_param_or_null(params, "L");
   float scale = scale_param(params);
-  std::optional<float> E = positive_param(params, "illuminance");
-  std::string filename = params.get_string("filename", "");
-  if (!params.get_point3s("portal").empty())
-    warn(params.find("portal")->loc,
-         "parameter \"portal\": portals are not supported by eyetrace; the whole environment is sampled");
+  std::optional<float> E = photometric_param(params, "illuminance");
+  const std::string filename = params.has("filename") ? params.get_string("filename") : "";
+  if (params.has("portal"))
+    params.warn_param("portal", "portals are not supported by eyetrace; the whole environment is sampled");
 
   if (filename.empty()) {
-    RGB Lc = L.value_or(RGB(1.f));
+    RGB Lc = L.value_or(params.get_rgb("L"));
     scale *= photometric_factor(E, kPi * luminance(Lc));
     return std::make_unique<UniformInfiniteLight>(Lc * scale);
   }

@@ -61,6 +61,7 @@ class ImageInfiniteLight : public Light {
   float scene_radius_ = 0.f;
 };
 
+const PluginSpec& infinite_light_spec();
 std::unique_ptr<Light> create_infinite_light(const LightContext& ctx);
 
 }  // namespace eyetrace

@@ -4,29 +4,33 @@
 
 namespace eyetrace {
 
-std::optional<RGB> emission_param_or_null(const ParameterList& params, const std::string& name) {
-  std::optional<RGB> c = params.get_rgb(name);
-  if (c && (c->r < 0.f || c->g < 0.f || c->b < 0.f))
-    params.fail(name, fmt::format("emission ({}, {}, {}) has a negative component", c->r, c->g, c->b));
+ParamSpec emission_param_spec(const std::string& name, const std::string& doc) {
+  return param::spectrum(name, 1).describe(doc);
+}
+
+ParamSpec scale_param_spec() { return param::real("scale", 1).at_least(0).describe("multiplies the emission"); }
+
+ParamSpec photometric_param_spec(const std::string& name, const std::string& doc) {
+  return param::real(name).above(0).describe(doc);
+}
+
+std::optional<RGB> emission_param_or_null(const PluginParams& params, const std::string& name) {
+  if (!params.has(name)) return std::nullopt;
+  const RGB c = params.get_rgb(name);
+  if (c.r < 0.f || c.g < 0.f || c.b < 0.f)
+    params.fail(name, fmt::format("emission ({}, {}, {}) has a negative component", c.r, c.g, c.b));
   return c;
 }
 
-RGB emission_param(const ParameterList& params, const std::string& name) {
-  return emission_param_or_null(params, name).value_or(RGB(1.f));
+RGB emission_param(const PluginParams& params, const std::string& name) {
+  return emission_param_or_null(params, name).value_or(params.get_rgb(name));
 }
 
-float scale_param(const ParameterList& params) {
-  return params.get_float_in("scale", 1.f, 0.f, std::numeric_limits<float>::max());
-}
+float scale_param(const PluginParams& params) { return params.get_float("scale"); }
 
-std::optional<float> positive_param(const ParameterList& params, const std::string& name) {
-  if (!params.has(name)) {
-    params.get_float(name, 0.f);  // records the query, for "did you mean" hints
-    return std::nullopt;
-  }
-  float v = params.get_float(name, 0.f);
-  if (!(v > 0.f)) params.fail(name, fmt::format("value {} must be positive", v));
-  return v;
+std::optional<float> photometric_param(const PluginParams& params, const std::string& name) {
+  if (!params.has(name)) return std::nullopt;
+  return params.get_float(name);
 }
 
 float photometric_factor(std::optional<float> target, float emitted_luminance) {

@@ -2,24 +2,28 @@
 // emission spectrum defaulting to white, a non-negative "scale", and the photometric
 // normalisations "power" / "illuminance", which rescale the emission so that the luminance
 // of the emitted quantity equals the value given, "scale" then multiplying on top (pbrt-v4:
-// a scene with "scale" 2 and "power" 100 emits 200).
+// a scene with "scale" 2 and "power" 100 emits 200). Declared here once, for every light's table.
 #pragma once
 #include <optional>
 #include <string>
 
-#include "scene/params.h"
+#include "scene/param_spec.h"
 
 namespace eyetrace {
 
-// An "rgb"/"spectrum"/"blackbody" emission parameter; white (the colour space's illuminant,
-// as pbrt-v4 defaults) when absent. Negative components are errors naming the parameter.
-RGB emission_param(const ParameterList& params, const std::string& name);
+// An emission spectrum, default white (the colour space's illuminant, as pbrt-v4 defaults).
+ParamSpec emission_param_spec(const std::string& name, const std::string& doc);
+ParamSpec scale_param_spec();
+// A photometric target ("power", "illuminance"), > 0 when given.
+ParamSpec photometric_param_spec(const std::string& name, const std::string& doc);
+
+// The emission; negative components are errors naming the parameter.
+RGB emission_param(const PluginParams& params, const std::string& name);
 // The same, nullopt when absent (for lights where "L" competes with an image).
-std::optional<RGB> emission_param_or_null(const ParameterList& params, const std::string& name);
-// "scale", default 1, must be finite and >= 0.
-float scale_param(const ParameterList& params);
-// A photometric target ("power", "illuminance"): nullopt when absent, an error unless > 0.
-std::optional<float> positive_param(const ParameterList& params, const std::string& name);
+std::optional<RGB> emission_param_or_null(const PluginParams& params, const std::string& name);
+float scale_param(const PluginParams& params);
+// nullopt when absent.
+std::optional<float> photometric_param(const PluginParams& params, const std::string& name);
 // The factor that makes `emitted_luminance` (> 0) equal `target`; 1 when there is no
 // target, or when nothing is emitted (a black light cannot be normalised: stays black).
 float photometric_factor(std::optional<float> target, float emitted_luminance);

@@ -19,12 +19,22 @@ std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext& ctx
 
 float PointLight::power() const { return 4.f * kPi * channel_mean(I_); }
 
+const PluginSpec& point_light_spec() {
+  static const PluginSpec spec{"LightSource",
+                               "light from a point, equal in every direction",
+                               "—",
+                               {emission_param_spec("I", "intensity"), scale_param_spec(),
+                                photometric_param_spec("power", "total power (replaces I's luminance)"),
+                                param::point3("from", Vec3(0.f)).describe("position")}};
+  return spec;
+}
+
 std::unique_ptr<Light> create_point_light(const LightContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, point_light_spec(), "point");
   RGB I = emission_param(params, "I");
   float scale = scale_param(params);
-  std::optional<float> phi = positive_param(params, "power");
-  Vec3 from = params.get_point3("from", Vec3(0.f));
+  std::optional<float> phi = photometric_param(params, "power");
+  Vec3 from = params.get_point3("from");
   scale *= photometric_factor(phi, 4.f * kPi * luminance(I));
   return std::make_unique<PointLight>(ctx.world_from_light.point(from), I * scale);
 }

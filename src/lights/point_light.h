@@ -27,6 +27,7 @@ class PointLight : public Light {
   RGB I_;  // scale folded in
 };
 
+const PluginSpec& point_light_spec();
 std::unique_ptr<Light> create_point_light(const LightContext& ctx);
 
 }  // namespace eyetrace

@@ -51,23 +51,36 @@ float SpotLight::power() const {
   return channel_mean(I_) * 2.f * kPi * (1.f - 0.5f * (cos_falloff_start_ + cos_falloff_end_));
 }
 
+const PluginSpec& spot_light_spec() {
+  static const PluginSpec spec{
+      "LightSource",
+      "a point light limited to a cone, with a smooth falloff at its edge",
+      "`conedeltaangle` larger than `coneangle` warns and makes the falloff start at the axis.",
+      {emission_param_spec("I", "intensity on the axis"), scale_param_spec(),
+       photometric_param_spec("power", "total power (replaces I's luminance)"),
+       param::point3("from", Vec3(0.f)).describe("position"),
+       param::point3("to", Vec3(0.f, 0.f, 1.f)).describe("a point on the axis"),
+       param::real("coneangle", 30).range(0, 180).with_unit("deg").describe("half-angle of the cone"),
+       param::real("conedeltaangle", 5).range(0, 180).with_unit("deg").describe("width of the falloff")}};
+  return spec;
+}
+
 std::unique_ptr<Light> create_spot_light(const LightContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, spot_light_spec(), "spot");
   RGB I = emission_param(params, "I");
   float scale = scale_param(params);
-  std::optional<float> phi = positive_param(params, "power");
-  Vec3 from = params.get_point3("from", Vec3(0.f));
-  Vec3 to = params.get_point3("to", Vec3(0.f, 0.f, 1.f));
-  float cone = params.get_float_in("coneangle", 30.f, 0.f, 180.f);
-  float delta = params.get_float_in("conedeltaangle", 5.f, 0.f, 180.f);
+  std::optional<float> phi = photometric_param(params, "power");
+  Vec3 from = params.get_point3("from");
+  Vec3 to = params.get_point3("to");
+  float cone = params.get_float("coneangle");
+  float delta = params.get_float("conedeltaangle");
   if (from == to)
     params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the spot has no direction");
   if (delta > cone) {
     // pbrt-v4 would take cos of a negative start angle; a falloff across the whole cone is
     // what such a scene means.
-    warn(params.find("conedeltaangle") ? params.find("conedeltaangle")->loc : params.loc(),
-         fmt::format("parameter \"conedeltaangle\": {} exceeds \"coneangle\" {}; the falloff starts at the axis", delta,
-                     cone));
+    params.warn_param("conedeltaangle",
+                      fmt::format("{} exceeds \"coneangle\" {}; the falloff starts at the axis", delta, cone));
     delta = cone;
   }
   float cos_start = std::cos(radians(cone - delta)), cos_end = std::cos(radians(cone));

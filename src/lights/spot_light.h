@@ -39,6 +39,7 @@ class SpotLight : public Light {
   float cos_falloff_start_, cos_falloff_end_;
 };
 
+const PluginSpec& spot_light_spec();
 std::unique_ptr<Light> create_spot_light(const LightContext& ctx);
 
 }  // namespace eyetrace

@@ -40,19 +40,32 @@ class CoatedDiffuseMaterial final : public Material {
 
 }  // namespace
 
+const PluginSpec& coateddiffuse_material_spec() {
+  static const PluginSpec spec{
+      "Material", "a diffuse base under a dielectric coat",
+      "A closed-form two-lobe model (coat reflection + diffuse base with the coat's Fresnel transmission and "
+      "absorption), not pbrt-v4's stochastic layered random walk; hence `g`, `maxdepth`, `nsamples` do nothing.",
+      std::vector<ParamSpec>{param::spectrum_texture("reflectance", 0.5).describe("of the base"),
+                             param::float_texture("thickness", 0.01).describe("of the coat"),
+                             param::spectrum_texture("albedo", 0).describe("of the coat's medium"),
+                             eta_at_550_param()} +
+          RoughnessParams::declared() +
+          std::vector<ParamSpec>{normal_map_param(), param::float_texture("g", 0).describe("read and unused"),
+                                 param::integer("maxdepth", 10).range(1, 1 << 20).describe("read and unused"),
+                                 param::integer("nsamples", 1).range(1, 1 << 20).describe("read and unused")}};
+  return spec;
+}
+
 std::unique_ptr<Material> create_coateddiffuse_material(const MaterialContext& ctx) {
-  const ParameterList& p = ctx.params;
+  const PluginParams p(ctx.params, coateddiffuse_material_spec(), "coateddiffuse");
   CoatedDiffuseMaterial::Inputs in;
-  in.coat = CoatConstants::make(read_eta_at_550(p, 1.5f));
-  in.roughness = RoughnessParams::read(ctx);
-  in.reflectance = ctx.textures.spectrum_param(p, "reflectance", RGB(0.5f));
-  in.thickness = ctx.textures.float_param(p, "thickness", 0.01f);
-  in.albedo = ctx.textures.spectrum_param(p, "albedo", RGB(0.f));
-  in.normal_map = read_normal_map(ctx);
-  // Read so that they are not reported as unused; the closed-form model has no use for them.
-  ctx.textures.float_param(p, "g", 0.f);
-  p.get_int_in("maxdepth", 10, 1, 1 << 20);
-  p.get_int_in("nsamples", 1, 1, 1 << 20);
+  in.coat = CoatConstants::make(read_eta_at_550(p));
+  in.roughness = RoughnessParams::read(ctx, p);
+  in.reflectance = ctx.textures.spectrum_param(p, "reflectance");
+  in.thickness = ctx.textures.float_param(p, "thickness");
+  in.albedo = ctx.textures.spectrum_param(p, "albedo");
+  in.normal_map = read_normal_map(ctx, p);
+  ctx.textures.float_param(p, "g");  // a texture it names must exist, though the model has no use for it
   return std::make_unique<CoatedDiffuseMaterial>(in);
 }
 

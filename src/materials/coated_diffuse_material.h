@@ -11,6 +11,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& coateddiffuse_material_spec();
 std::unique_ptr<Material> create_coateddiffuse_material(const MaterialContext& ctx);
 
 }  // namespace eyetrace

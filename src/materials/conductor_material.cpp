@@ -66,19 +66,32 @@ void check_constant(const ParameterList& params, const char* name, bool zero_all
 
 }  // namespace
 
+const PluginSpec& conductor_material_spec() {
+  static const PluginSpec spec{
+      "Material", "a metal: Fresnel reflection of a complex index of refraction",
+      "Complex index in RGB, not per wavelength.",
+      std::vector<ParamSpec>{
+          param::spectrum_texture("eta").shown_default("\"metal-Cu-eta\"").describe("real part of the index"),
+          param::spectrum_texture("k").shown_default("\"metal-Cu-k\"").describe("imaginary part of the index"),
+          param::spectrum_texture("reflectance").describe("instead of `eta` and `k` (not with them)")} +
+          RoughnessParams::declared() + std::vector<ParamSpec>{normal_map_param()}};
+  return spec;
+}
+
 std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) {
+  const PluginParams p(ctx.params, conductor_material_spec(), "conductor");
   check_constant(ctx.params, "eta", false);
   check_constant(ctx.params, "k", true);
-  const SpectrumTexture* eta = ctx.textures.spectrum_param_or_null(ctx.params, "eta");
-  const SpectrumTexture* k = ctx.textures.spectrum_param_or_null(ctx.params, "k");
-  const SpectrumTexture* reflectance = ctx.textures.spectrum_param_or_null(ctx.params, "reflectance");
-  if (reflectance && (eta || k))
-    ctx.params.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
+  const SpectrumTexture* eta = ctx.textures.spectrum_param(p, "eta");
+  const SpectrumTexture* k = ctx.textures.spectrum_param(p, "k");
+  const SpectrumTexture* reflectance = ctx.textures.spectrum_param(p, "reflectance");
+  if (reflectance && (eta || k)) p.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
   if (!reflectance) {
-    if (!eta) eta = ctx.textures.spectrum_param(ctx.params, "eta", named_rgb("metal-Cu-eta"));
-    if (!k) k = ctx.textures.spectrum_param(ctx.params, "k", named_rgb("metal-Cu-k"));
+    if (!eta) eta = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named_rgb("metal-Cu-eta")));
+    if (!k) k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named_rgb("metal-Cu-k")));
   }
-  return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx), read_normal_map(ctx));
+  return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx, p),
+                                             read_normal_map(ctx, p));
 }
 
 }  // namespace eyetrace

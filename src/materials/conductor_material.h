@@ -9,6 +9,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& conductor_material_spec();
 std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx);
 
 }  // namespace eyetrace

@@ -28,18 +28,29 @@ class DielectricMaterial final : public Material {
 
 }  // namespace
 
-float read_eta_at_550(const ParameterList& params, float def) {
-  const Param* p = params.find("eta");
-  float eta =
-      p && p->canonical_type() != "float" ? params.get_spectrum_at("eta", 550.f, def) : params.get_float("eta", def);
+ParamSpec eta_at_550_param() {
+  return param::float_or_spectrum("eta", 1.5).above(0).describe("index of refraction (a spectrum is taken at 550 nm)");
+}
+
+float read_eta_at_550(const PluginParams& params) {
+  const float eta = params.get_spectrum_at("eta", 550.f);
   if (!(eta > 0.f) || !std::isfinite(eta))
     params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
   return eta;
 }
 
+const PluginSpec& dielectric_material_spec() {
+  static const PluginSpec spec{"Material", "a smooth or rough boundary of glass, water and the like",
+                               "No dispersion: a spectral `eta` (e.g. `\"glass-BK7\"`) is used at 550 nm.",
+                               std::vector<ParamSpec>{eta_at_550_param()} + RoughnessParams::declared() +
+                                   std::vector<ParamSpec>{normal_map_param()}};
+  return spec;
+}
+
 std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx) {
-  float eta = read_eta_at_550(ctx.params, 1.5f);
-  return std::make_unique<DielectricMaterial>(eta, RoughnessParams::read(ctx), read_normal_map(ctx));
+  const PluginParams p(ctx.params, dielectric_material_spec(), "dielectric");
+  return std::make_unique<DielectricMaterial>(read_eta_at_550(p), RoughnessParams::read(ctx, p),
+                                              read_normal_map(ctx, p));
 }
 
 }  // namespace eyetrace

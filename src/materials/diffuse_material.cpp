@@ -26,9 +26,15 @@ class DiffuseMaterial final : public Material {
 
 }  // namespace
 
+const PluginSpec& diffuse_material_spec() {
+  static const PluginSpec spec{
+      "Material", "Lambertian reflection", "—", {param::spectrum_texture("reflectance", 0.5), normal_map_param()}};
+  return spec;
+}
+
 std::unique_ptr<Material> create_diffuse_material(const MaterialContext& ctx) {
-  return std::make_unique<DiffuseMaterial>(ctx.textures.spectrum_param(ctx.params, "reflectance", RGB(0.5f)),
-                                           read_normal_map(ctx));
+  const PluginParams p(ctx.params, diffuse_material_spec(), "diffuse");
+  return std::make_unique<DiffuseMaterial>(ctx.textures.spectrum_param(p, "reflectance"), read_normal_map(ctx, p));
 }
 
 }  // namespace eyetrace

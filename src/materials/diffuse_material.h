@@ -7,6 +7,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& diffuse_material_spec();
 std::unique_ptr<Material> create_diffuse_material(const MaterialContext& ctx);
 
 }  // namespace eyetrace

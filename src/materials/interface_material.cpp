@@ -11,7 +11,13 @@ class InterfaceMaterial final : public Material {
 
 }  // namespace
 
-std::unique_ptr<Material> create_interface_material(const MaterialContext&) {
+const PluginSpec& interface_material_spec() {
+  static const PluginSpec spec{"Material", "no surface: a boundary between media (rays pass through)", "—", {}};
+  return spec;
+}
+
+std::unique_ptr<Material> create_interface_material(const MaterialContext& ctx) {
+  PluginParams(ctx.params, interface_material_spec(), "interface");
   return std::make_unique<InterfaceMaterial>();
 }
 

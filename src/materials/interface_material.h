@@ -8,6 +8,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& interface_material_spec();
 std::unique_ptr<Material> create_interface_material(const MaterialContext& ctx);
 
 }  // namespace eyetrace

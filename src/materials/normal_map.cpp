@@ -8,10 +8,14 @@
 
 namespace eyetrace {
 
-const SpectrumTexture* read_normal_map(const MaterialContext& ctx) {
+ParamSpec normal_map_param() {
+  return param::string("normalmap").describe("image of tangent-space normals (read linear, wrapped by repetition)");
+}
+
+const SpectrumTexture* read_normal_map(const MaterialContext& ctx, const PluginParams& params) {
+  if (!params.has("normalmap")) return nullptr;
   const Param* p = ctx.params.find("normalmap");
-  std::string file = ctx.params.get_string("normalmap", "");
-  if (!p) return nullptr;
+  std::string file = params.get_string("normalmap");
   std::filesystem::path path(resolve_scene_file(ctx.search_dir, file));
   if (!std::filesystem::is_regular_file(path))
     ctx.params.fail("normalmap", fmt::format("image file \"{}\" not found", path.string()));

@@ -4,29 +4,25 @@
 
 namespace eyetrace {
 
-namespace {
-
 // pbrt-v4 takes roughness >= 0; a negative constant is a mistake in the scene, not a surface
 // (textures may still dip below 0 and count as 0 at the hit).
-void check_not_negative(const ParameterList& params, const char* name) {
-  const Param* p = params.find(name);
-  if (p && p->canonical_type() == "float" && !p->numbers.empty() && p->numbers[0] < 0)
-    params.fail(name, fmt::format("roughness {} must not be negative", p->numbers[0]));
+std::vector<ParamSpec> RoughnessParams::declared() {
+  return {param::float_texture("roughness", 0).at_least(0).describe("microfacet roughness (0: smooth)"),
+          param::float_texture("uroughness").at_least(0).shown_default("roughness").describe("roughness along u"),
+          param::float_texture("vroughness").at_least(0).shown_default("roughness").describe("roughness along v"),
+          param::boolean("remaproughness", true).describe("roughness → Trowbridge-Reitz alpha, as pbrt-v4")};
 }
 
-}  // namespace
-
-RoughnessParams RoughnessParams::read(const MaterialContext& ctx) {
-  for (const char* name : {"roughness", "uroughness", "vroughness"}) check_not_negative(ctx.params, name);
+RoughnessParams RoughnessParams::read(const MaterialContext& ctx, const PluginParams& params) {
   RoughnessParams r;
-  r.u = ctx.textures.float_param_or_null(ctx.params, "uroughness");
-  r.v = ctx.textures.float_param_or_null(ctx.params, "vroughness");
+  r.u = ctx.textures.float_param(params, "uroughness");
+  r.v = ctx.textures.float_param(params, "vroughness");
   if (!r.u || !r.v) {
-    const FloatTexture* both = ctx.textures.float_param(ctx.params, "roughness", 0.f);
+    const FloatTexture* both = ctx.textures.float_param(params, "roughness");
     if (!r.u) r.u = both;
     if (!r.v) r.v = both;
   }
-  r.remap = ctx.params.get_bool("remaproughness", true);
+  r.remap = params.get_bool("remaproughness");
   return r;
 }
 

@@ -12,7 +12,9 @@ struct RoughnessParams {
   const FloatTexture* v = nullptr;
   bool remap = true;
 
-  static RoughnessParams read(const MaterialContext& ctx);
+  // "roughness", "uroughness", "vroughness", "remaproughness": every rough material's table has them.
+  static std::vector<ParamSpec> declared();
+  static RoughnessParams read(const MaterialContext& ctx, const PluginParams& params);
   // The distribution at a hit; negative roughness values count as 0.
   TrowbridgeReitz distribution(const TextureEvalContext& tc) const;
 };

@@ -127,16 +127,17 @@ Prescription make_eye(const EyeOptions& o) {
   check_finite("wavelength", o.wavelength_nm);
   if (o.retina_radius_mm) check_finite("retinaradius", *o.retina_radius_mm);
 
-  if (!(o.pupil_diameter_mm > 0.0 && o.pupil_diameter_mm <= 10.0))
-    bad_option("pupildiameter", fmt::format("{} mm is outside (0, 10] mm", o.pupil_diameter_mm));
+  if (!(o.pupil_diameter_mm > 0.0 && o.pupil_diameter_mm <= kMaxPupilDiameter_mm))
+    bad_option("pupildiameter", fmt::format("{} mm is outside (0, {}] mm", o.pupil_diameter_mm, kMaxPupilDiameter_mm));
   const double max_a = model.max_accommodation_D;
   if (o.accommodation_D < 0.0 || o.accommodation_D > max_a)
     bad_option("accommodation", max_a == 0.0 ? fmt::format("model '{}' has no accommodation model (only 0 D); got {} D",
                                                            o.model, o.accommodation_D)
                                              : fmt::format("{} D is outside the range of model '{}' [0, {:.5g}] D",
                                                            o.accommodation_D, o.model, max_a));
-  if (std::abs(o.refractive_error_D) > 30.0)
-    bad_option("refractiveerror", fmt::format("{} D is outside [-30, 30] D", o.refractive_error_D));
+  if (std::abs(o.refractive_error_D) > kMaxRefractiveError_D)
+    bad_option("refractiveerror", fmt::format("{} D is outside [-{}, {}] D", o.refractive_error_D,
+                                              kMaxRefractiveError_D, kMaxRefractiveError_D));
   if (o.retina_radius_mm && *o.retina_radius_mm > 0.0)
     bad_option("retinaradius", fmt::format("{} mm must be negative (centre of curvature in "
                                            "front of the retina) or 0 for flat",

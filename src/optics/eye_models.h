@@ -14,6 +14,10 @@
 
 namespace eyetrace::optics {
 
+// Limits of the options every model shares (make_eye checks them; the eye cameras declare them).
+inline constexpr double kMaxPupilDiameter_mm = 10.0;
+inline constexpr double kMaxRefractiveError_D = 30.0;
+
 struct EyeOptions {
   std::string model;    // one of eye_model_names()
   std::string variant;  // "" = the model's default; see eye_model_variants()

@@ -97,10 +97,20 @@ std::string HaltonSampler::to_string() const {
                      randomization_name(randomization_), base_scales_.x, base_scales_.y);
 }
 
+const PluginSpec& halton_sampler_spec() {
+  static const PluginSpec spec{
+      "Sampler", "the Halton sequence over the image plane", "—",
+      pixel_sample_params(16) +
+          std::vector<ParamSpec>{randomization_param(
+              Randomization::PermuteDigits, {Randomization::None, Randomization::PermuteDigits, Randomization::Owen})}};
+  return spec;
+}
+
 std::unique_ptr<Sampler> create_halton_sampler(const SamplerContext& ctx) {
-  int spp = read_pixel_samples(ctx, 16);
-  uint64_t seed = read_seed(ctx);
-  Randomization r = read_randomization(ctx.params, Randomization::PermuteDigits, false);
+  const PluginParams p(ctx.params, halton_sampler_spec(), "halton");
+  int spp = read_pixel_samples(ctx, p);
+  uint64_t seed = read_seed(ctx, p);
+  Randomization r = read_randomization(p);
   return std::make_unique<HaltonSampler>(spp, ctx.resolution, r, seed);
 }
 

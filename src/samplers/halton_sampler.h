@@ -40,6 +40,7 @@ class HaltonSampler : public Sampler {
 
 // pbrt-v4 "halton": integer pixelsamples (16), integer seed, string randomization
 // ("permutedigits"; also "none", "owen").
+const PluginSpec& halton_sampler_spec();
 std::unique_ptr<Sampler> create_halton_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace

@@ -17,9 +17,14 @@ std::string IndependentSampler::to_string() const {
   return fmt::format("IndependentSampler[pixelsamples={} seed={}]", spp_, int64_t(seed_));
 }
 
+const PluginSpec& independent_sampler_spec() {
+  static const PluginSpec spec{"Sampler", "independent uniform random samples", "—", pixel_sample_params(4)};
+  return spec;
+}
+
 std::unique_ptr<Sampler> create_independent_sampler(const SamplerContext& ctx) {
-  int spp = read_pixel_samples(ctx, 4);
-  return std::make_unique<IndependentSampler>(spp, read_seed(ctx));
+  const PluginParams p(ctx.params, independent_sampler_spec(), "independent");
+  return std::make_unique<IndependentSampler>(read_pixel_samples(ctx, p), read_seed(ctx, p));
 }
 
 }  // namespace eyetrace

@@ -31,6 +31,7 @@ class IndependentSampler : public Sampler {
 };
 
 // pbrt-v4 "independent": integer pixelsamples (4), integer seed.
+const PluginSpec& independent_sampler_spec();
 std::unique_ptr<Sampler> create_independent_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace

@@ -4,6 +4,25 @@
 
 namespace eyetrace {
 
+ParamSpec seed_param() {
+  return param::integer("seed")
+      .shown_default("--seed, else 0")
+      .describe("seeds the sample values (pbrt-v4 Option \"seed\" too)");
+}
+
+std::vector<ParamSpec> pixel_sample_params(int default_spp) {
+  return {param::integer("pixelsamples", default_spp)
+              .range(1, kMaxPixelSamples)
+              .describe("samples per pixel (--spp replaces it)"),
+          seed_param()};
+}
+
+ParamSpec randomization_param(Randomization def, std::vector<Randomization> choices) {
+  std::vector<std::string> names;
+  for (Randomization r : choices) names.push_back(randomization_name(r));
+  return param::string("randomization", randomization_name(def)).in(names).describe("scrambling of the points");
+}
+
 int spp_override(const SamplerContext& ctx) {
   if (ctx.spp_override <= 0) return 0;
   if (ctx.spp_override > kMaxPixelSamples)
@@ -12,30 +31,21 @@ int spp_override(const SamplerContext& ctx) {
   return ctx.spp_override;
 }
 
-int read_pixel_samples(const SamplerContext& ctx, int default_spp) {
-  int spp = ctx.params.get_int("pixelsamples", default_spp);
-  if (spp < 1 || spp > kMaxPixelSamples)
-    ctx.params.fail("pixelsamples", fmt::format("value {} is outside [1, {}]", spp, kMaxPixelSamples));
-  int over = spp_override(ctx);
-  return over > 0 ? over : spp;
+int read_pixel_samples(const SamplerContext& ctx, const PluginParams& params) {
+  const int over = spp_override(ctx);
+  return over > 0 ? over : params.get_int("pixelsamples");
 }
 
-uint64_t read_seed(const SamplerContext& ctx) {
-  int seed = ctx.params.get_int("seed", 0);
-  return ctx.params.has("seed") ? uint64_t(int64_t(seed)) : ctx.seed;
+uint64_t read_seed(const SamplerContext& ctx, const PluginParams& params) {
+  return params.has("seed") ? uint64_t(int64_t(params.get_int("seed"))) : ctx.seed;
 }
 
-Randomization read_randomization(const ParameterList& params, Randomization def, bool allow_fastowen) {
-  std::string s = params.get_string("randomization", randomization_name(def));
-  if (s == "none") return Randomization::None;
+Randomization read_randomization(const PluginParams& params) {
+  const std::string s = params.get_string("randomization");  // one of the declared choices
   if (s == "permutedigits") return Randomization::PermuteDigits;
   if (s == "owen") return Randomization::Owen;
-  if (s == "fastowen") {
-    if (!allow_fastowen) params.fail("randomization", "\"fastowen\" is not supported by this sampler (use \"owen\")");
-    return Randomization::FastOwen;
-  }
-  params.fail("randomization",
-              fmt::format("unknown value \"{}\"; expected \"none\", \"permutedigits\", \"fastowen\" or \"owen\"", s));
+  if (s == "fastowen") return Randomization::FastOwen;
+  return Randomization::None;
 }
 
 }  // namespace eyetrace

@@ -91,10 +91,24 @@ std::string SobolSampler::to_string() const {
                      randomization_name(randomization_), 1 << indexer_->log2_scale());
 }
 
+const PluginSpec& sobol_sampler_spec() {
+  static const PluginSpec spec{"Sampler",
+                               "the Sobol' sequence over the image plane (a count that is not a power of two warns)",
+                               "Images wider or taller than 65536 pixels are an error (use `zsobol`).",
+                               pixel_sample_params(16) + std::vector<ParamSpec>{sobol_randomization_param()}};
+  return spec;
+}
+
+ParamSpec sobol_randomization_param() {
+  return randomization_param(Randomization::FastOwen, {Randomization::None, Randomization::PermuteDigits,
+                                                       Randomization::FastOwen, Randomization::Owen});
+}
+
 std::unique_ptr<Sampler> create_sobol_sampler(const SamplerContext& ctx) {
-  int spp = read_pixel_samples(ctx, 16);
-  uint64_t seed = read_seed(ctx);
-  Randomization r = read_randomization(ctx.params, Randomization::FastOwen, true);
+  const PluginParams p(ctx.params, sobol_sampler_spec(), "sobol");
+  int spp = read_pixel_samples(ctx, p);
+  uint64_t seed = read_seed(ctx, p);
+  Randomization r = read_randomization(p);
   if (std::max(ctx.resolution.x, ctx.resolution.y) > 65536)
     fail(ctx.params.loc(), "the sobol sampler supports resolutions up to 65536 pixels; use \"zsobol\"");
   if (!std::has_single_bit(uint32_t(spp)))

@@ -52,6 +52,8 @@ class SobolSampler : public Sampler {
 
 // pbrt-v4 "sobol": integer pixelsamples (16), integer seed, string randomization ("fastowen";
 // also "none", "permutedigits", "owen").
+const PluginSpec& sobol_sampler_spec();
+ParamSpec sobol_randomization_param();  // shared with zsobol
 std::unique_ptr<Sampler> create_sobol_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace

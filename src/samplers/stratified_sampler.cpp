@@ -56,11 +56,22 @@ std::string StratifiedSampler::to_string() const {
                      int64_t(seed_));
 }
 
+const PluginSpec& stratified_sampler_spec() {
+  static const PluginSpec spec{
+      "Sampler",
+      "one jittered sample per cell of an xsamples × ysamples grid",
+      "—",
+      {param::integer("xsamples", 4).range(1, kMaxPixelSamples).describe("strata across"),
+       param::integer("ysamples", 4).range(1, kMaxPixelSamples).describe("strata down"),
+       param::boolean("jitter", true).describe("random position within each stratum"), seed_param()}};
+  return spec;
+}
+
 std::unique_ptr<Sampler> create_stratified_sampler(const SamplerContext& ctx) {
-  const ParameterList& params = ctx.params;
-  bool jitter = params.get_bool("jitter", true);
-  int xs = params.get_int_in("xsamples", 4, 1, kMaxPixelSamples);
-  int ys = params.get_int_in("ysamples", 4, 1, kMaxPixelSamples);
+  const PluginParams params(ctx.params, stratified_sampler_spec(), "stratified");
+  bool jitter = params.get_bool("jitter");
+  int xs = params.get_int("xsamples");
+  int ys = params.get_int("ysamples");
   if (int64_t(xs) * ys > kMaxPixelSamples)
     params.fail("xsamples",
                 fmt::format("xsamples x ysamples = {} is more than {}", int64_t(xs) * ys, kMaxPixelSamples));
@@ -70,7 +81,7 @@ std::unique_ptr<Sampler> create_stratified_sampler(const SamplerContext& ctx) {
     xs = n / div;
     ys = div;
   }
-  return std::make_unique<StratifiedSampler>(xs, ys, jitter, read_seed(ctx));
+  return std::make_unique<StratifiedSampler>(xs, ys, jitter, read_seed(ctx, params));
 }
 
 }  // namespace eyetrace

@@ -36,6 +36,7 @@ class StratifiedSampler : public Sampler {
 
 // pbrt-v4 "stratified": integer xsamples (4), ysamples (4), bool jitter (true), integer seed.
 // --spp N replaces xsamples x ysamples by the most nearly square factorisation of N.
+const PluginSpec& stratified_sampler_spec();
 std::unique_ptr<Sampler> create_stratified_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace

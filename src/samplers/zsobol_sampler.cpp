@@ -6,6 +6,7 @@
 #include <bit>
 
 #include "samplers/sampler_params.h"
+#include "samplers/sobol_sampler.h"
 
 namespace eyetrace {
 
@@ -111,12 +112,26 @@ std::string ZSobolSampler::to_string() const {
                      lens_ == LensDimensions::Joint ? "joint" : "padded");
 }
 
+const PluginSpec& zsobol_sampler_spec() {
+  static const PluginSpec spec{
+      "Sampler", "Sobol' points in Morton (Z) order of the pixels; a count that is not a power of two is rounded up",
+      "eyetrace addition `lensdimensions`: `joint` (default) draws the lens/pupil sample from Sobol' dimensions 2–3 "
+      "of the film sample's own index, so a pixel's samples form a 4-D net over film position and pupil; `padded` "
+      "is pbrt-v4's behaviour (every 2-D sample from its own shuffled index). See docs/performance.md.",
+      pixel_sample_params(16) +
+          std::vector<ParamSpec>{sobol_randomization_param(),
+                                 param::string("lensdimensions", "joint")
+                                     .in({"joint", "padded"})
+                                     .describe("how the lens sample is drawn (see differences)")}};
+  return spec;
+}
+
 std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx) {
-  int spp = read_pixel_samples(ctx, 16);
-  uint64_t seed = read_seed(ctx);
-  Randomization r = read_randomization(ctx.params, Randomization::FastOwen, true);
-  const std::string lens = ctx.params.get_string("lensdimensions", "joint");
-  if (lens != "joint" && lens != "padded") ctx.params.fail("lensdimensions", "must be \"joint\" or \"padded\"");
+  const PluginParams p(ctx.params, zsobol_sampler_spec(), "zsobol");
+  int spp = read_pixel_samples(ctx, p);
+  uint64_t seed = read_seed(ctx, p);
+  Randomization r = read_randomization(p);
+  const std::string lens = p.get_string("lensdimensions");
   if (!std::has_single_bit(uint32_t(spp)))
     warn(ctx.params.loc(), fmt::format("zsobol sampler: {} samples per pixel rounded up to the power of two {}", spp,
                                        std::bit_ceil(uint32_t(spp))));

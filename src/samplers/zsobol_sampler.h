@@ -58,6 +58,7 @@ class ZSobolSampler : public Sampler {
 // pbrt-v4 "zsobol": integer pixelsamples (16; rounded up to a power of two), integer seed,
 // string randomization ("fastowen"; also "none", "permutedigits", "owen"), and eyetrace's
 // string lensdimensions ("joint"; "padded" is pbrt-v4's behaviour).
+const PluginSpec& zsobol_sampler_spec();
 std::unique_ptr<Sampler> create_zsobol_sampler(const SamplerContext& ctx);
 
 }  // namespace eyetrace

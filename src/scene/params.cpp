@@ -188,6 +188,9 @@ std::vector<Vec3> ParameterList::get_point3s(const std::string& name) const {
 std::vector<Vec3> ParameterList::get_normals(const std::string& name) const {
   return tuples<3, Vec3>(lookup(name, "normal", 0));
 }
+std::vector<Vec3> ParameterList::get_vector3s(const std::string& name) const {
+  return tuples<3, Vec3>(lookup(name, "vector3", 0));
+}
 
 float ParameterList::get_float_in(const std::string& name, float def, float lo, float hi) const {
   float v = get_float(name, def);

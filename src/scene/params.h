@@ -55,6 +55,7 @@ class ParameterList {
   std::vector<Vec2> get_point2s(const std::string& name) const;
   std::vector<Vec3> get_point3s(const std::string& name) const;
   std::vector<Vec3> get_normals(const std::string& name) const;
+  std::vector<Vec3> get_vector3s(const std::string& name) const;
 
   // Checked lookups: values outside [lo, hi] or non-finite are errors naming the parameter.
   float get_float_in(const std::string& name, float def, float lo, float hi) const;

@@ -1,7 +1,9 @@
-// The one registration list. Every built-in plugin is a name, a kind and a factory; the
-// list itself is register_builtin_plugins() in builtin_plugins.cpp, one line per plugin.
-// Factories validate their parameters (ParameterList lookups) and report leftovers.
+// The one registration list. Every built-in plugin is a name, a kind, a factory and its
+// declared parameters (PluginSpec); the list itself is register_builtin_plugins() in
+// builtin_plugins.cpp, one line per plugin. Factories check their parameters against their
+// spec (PluginParams) before reading them.
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -16,6 +18,7 @@
 #include "core/shape.h"
 #include "core/texture.h"
 #include "core/transform.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -91,39 +94,67 @@ using AreaLightFactory = std::function<std::unique_ptr<Light>(const AreaLightCon
 using FilterFactory = std::function<std::unique_ptr<Filter>(const ParameterList&)>;
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const IntegratorContext&)>;
 
+// One kind of plugin: name -> factory and declared parameters, in registration order.
+template <typename Factory>
+struct PluginTable {
+  struct Entry {
+    std::string name;
+    Factory create;
+    const PluginSpec* spec;
+  };
+  std::string kind;  // "camera", "float texture", ... (for messages and listings)
+  std::vector<Entry> entries;
+
+  void add(std::string name, Factory create, const PluginSpec& spec) {
+    entries.push_back(Entry{std::move(name), std::move(create), &spec});
+  }
+  const Entry* find(const std::string& name) const {
+    for (const Entry& e : entries)
+      if (e.name == name) return &e;
+    return nullptr;
+  }
+  // The factory of `name`; unknown names are errors at `loc` that list the known ones.
+  const Factory& at(const std::string& name, const SourceLoc& loc) const {
+    if (const Entry* e = find(name)) return e->create;
+    std::vector<std::string> names;
+    for (const Entry& e : entries) names.push_back(e.name);
+    std::sort(names.begin(), names.end());
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    std::string hint = closest_match(name, names);
+    fail(loc, "unsupported {} \"{}\"{}; eyetrace supports: {}", kind, name,
+         hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint), list);
+  }
+};
+
+// A listed plugin: what `eyetrace plugins` and the generated docs show.
+struct PluginListing {
+  std::string kind;
+  std::string name;
+  const PluginSpec* spec;
+};
+
 struct Registry {
-  std::map<std::string, CameraFactory> cameras;
-  std::map<std::string, SamplerFactory> samplers;
-  std::map<std::string, ShapeFactory> shapes;
-  std::map<std::string, MaterialFactory> materials;
-  std::map<std::string, FloatTextureFactory> float_textures;
-  std::map<std::string, SpectrumTextureFactory> spectrum_textures;
-  std::map<std::string, LightFactory> lights;
-  std::map<std::string, AreaLightFactory> area_lights;
-  std::map<std::string, FilterFactory> filters;
-  std::map<std::string, IntegratorFactory> integrators;
+  PluginTable<CameraFactory> cameras{"camera"};
+  PluginTable<SamplerFactory> samplers{"sampler"};
+  PluginTable<FilterFactory> filters{"pixel filter"};
+  PluginTable<ShapeFactory> shapes{"shape"};
+  PluginTable<MaterialFactory> materials{"material"};
+  PluginTable<FloatTextureFactory> float_textures{"float texture"};
+  PluginTable<SpectrumTextureFactory> spectrum_textures{"spectrum texture"};
+  PluginTable<LightFactory> lights{"light"};
+  PluginTable<AreaLightFactory> area_lights{"area light"};
+  PluginTable<IntegratorFactory> integrators{"integrator"};
+  // Directives that are built in rather than plugins but declare their parameters too (Film).
+  std::vector<PluginListing> built_in;
+
+  // Every plugin, kind by kind in the order above, each kind in registration order.
+  std::vector<PluginListing> listing() const;
 
   // The registry of built-in plugins, made once on first use.
   static const Registry& builtin();
 };
 
 void register_builtin_plugins(Registry& r);
-
-// Looks `name` up in `table`; unknown names are errors at `loc` that list the known ones.
-template <typename Map>
-const typename Map::mapped_type& find_plugin(const Map& table, const std::string& kind, const std::string& name,
-                                             const SourceLoc& loc) {
-  auto it = table.find(name);
-  if (it != table.end()) return it->second;
-  std::vector<std::string> names;
-  std::string list;
-  for (const auto& [n, f] : table) {
-    names.push_back(n);
-    list += (list.empty() ? "" : ", ") + n;
-  }
-  std::string hint = closest_match(name, names);
-  fail(loc, "unsupported {} \"{}\"{}; eyetrace supports: {}", kind, name,
-       hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint), list);
-}
 
 }  // namespace eyetrace

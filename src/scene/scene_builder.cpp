@@ -16,45 +16,63 @@ struct FilmSettings {
   float scale = 1.f;
 };
 
+}  // namespace
+
+const PluginSpec& film_spec() {
+  static const PluginSpec spec{
+      "Film",
+      "the image: its size, crop window, output file and exposure",
+      "`gbuffer` and `spectral` are accepted and rendered as `rgb`, with a warning. `savefp16`, "
+      "`maxcomponentvalue`, `diagonal`, `sensor` and `whitebalance` are accepted and ignored.",
+      {
+          param::integer("xresolution", 1280).range(1, 1 << 15).with_unit("pixels"),
+          param::integer("yresolution", 720).range(1, 1 << 15).with_unit("pixels"),
+          param::reals("cropwindow").size(4).range(0, 1).describe("x0 x1 y0 y1, fractions of the image"),
+          param::integers("pixelbounds").size(4).describe("x0 x1 y0 y1, pixels (a crop window takes precedence)"),
+          param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
+          param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
+          param::real("exposuretime", 1).above(0).with_unit("s"),
+          param::boolean("savefp16", true).describe("ignored"),
+          param::real("maxcomponentvalue").describe("ignored"),
+          param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
+          param::string("sensor", "cie1931").describe("ignored"),
+          param::real("whitebalance", 0).describe("ignored"),
+      }};
+  return spec;
+}
+
+namespace {
+
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
-  const ParameterList& p = film.params;
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb", film.name);
   if (film.name != "rgb") warn(film.loc, fmt::format("film \"{}\" is rendered as an \"rgb\" film", film.name));
+  const PluginParams p(film.params, film_spec(), film.name);
   FilmSettings f;
-  f.resolution = IVec2(p.get_int("xresolution", 1280), p.get_int("yresolution", 720));
-  if (o.resolution) f.resolution = *o.resolution;
-  const int kMaxSide = 1 << 15;
-  for (int i = 0; i < 2; ++i)
-    if (f.resolution[i] < 1 || f.resolution[i] > kMaxSide)
-      p.fail(i == 0 ? "xresolution" : "yresolution",
-             fmt::format("resolution {}x{} is outside 1..{} per side", f.resolution.x, f.resolution.y, kMaxSide));
+  f.resolution = IVec2(p.get_int("xresolution"), p.get_int("yresolution"));
+  if (o.resolution) {  // --resolution: checked here, the scene's values by the table
+    f.resolution = *o.resolution;
+    const int kMaxSide = 1 << 15;
+    if (f.resolution.x < 1 || f.resolution.y < 1 || f.resolution.x > kMaxSide || f.resolution.y > kMaxSide)
+      throw_error(
+          fmt::format("--resolution {}x{} is outside 1..{} per side", f.resolution.x, f.resolution.y, kMaxSide));
+  }
   Vec4 crop(0.f, 1.f, 0.f, 1.f);
   std::vector<float> cw = p.get_floats("cropwindow");
-  if (!cw.empty()) {
-    if (cw.size() != 4) p.fail("cropwindow", "needs 4 values x0 x1 y0 y1");
-    crop = Vec4(cw[0], cw[1], cw[2], cw[3]);
-  }
+  if (!cw.empty()) crop = Vec4(cw[0], cw[1], cw[2], cw[3]);
   if (o.crop) crop = *o.crop;
   if (!(crop[0] >= 0 && crop[0] < crop[1] && crop[1] <= 1 && crop[2] >= 0 && crop[2] < crop[3] && crop[3] <= 1))
     p.fail("cropwindow", "needs 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1");
   f.bounds = crop_to_pixels(f.resolution, crop);
   std::vector<int> pb = p.get_ints("pixelbounds");
   if (!pb.empty()) {
-    if (pb.size() != 4 || pb[0] < 0 || pb[1] > f.resolution.x || pb[2] < 0 || pb[3] > f.resolution.y ||
-        pb[0] >= pb[1] || pb[2] >= pb[3])
+    if (pb[0] < 0 || pb[1] > f.resolution.x || pb[2] < 0 || pb[3] > f.resolution.y || pb[0] >= pb[1] || pb[2] >= pb[3])
       p.fail("pixelbounds", "needs x0 < x1 <= xresolution and y0 < y1 <= yresolution");
     if (!o.crop) f.bounds = PixelBounds{IVec2(pb[0], pb[2]), IVec2(pb[1], pb[3])};
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
-  f.filename = p.get_string("filename", "pbrt.exr");
-  float iso = p.get_float("iso", 100.f), exposure = p.get_float("exposuretime", 1.f);
-  if (!(iso > 0.f) || !(exposure > 0.f)) p.fail("iso", "iso and exposuretime must be positive");
-  f.scale = iso / 100.f * exposure;
-  // Accepted for compatibility; an RGB film has nothing to do with them.
-  for (const char* ignored : {"savefp16", "maxcomponentvalue", "diagonal", "sensor", "whitebalance"})
-    if (const Param* q = p.find(ignored)) q->used = true;
-  p.check_unused("Film \"" + film.name + "\"");
+  f.filename = p.get_string("filename");
+  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime");
   return f;
 }
 
@@ -107,22 +125,18 @@ class Builder {
 
   void add_light(const TransformedEntity& l) {
     LightContext ctx{l.params, l.world_from_object, desc_.search_dir};
-    auto light = find_plugin(reg_.lights, "light", l.name, l.loc)(ctx);
-    l.params.check_unused("LightSource \"" + l.name + "\"");
+    auto light = reg_.lights.at(l.name, l.loc)(ctx);
     light_sources_.emplace_back(light.get(), &l);
     setup_.scene->add_light(std::move(light));
   }
 
   void build_texture(const TextureEntity& t) {
     TextureContext ctx{t.params, t.world_from_object, *setup_.textures, desc_.search_dir};
-    std::string what = fmt::format("Texture \"{}\" \"{}\" \"{}\"", t.texture_name, t.value_type, t.name);
     if (t.value_type == "float") {
-      auto tex = find_plugin(reg_.float_textures, "float texture", t.name, t.loc)(ctx);
-      t.params.check_unused(what);
+      auto tex = reg_.float_textures.at(t.name, t.loc)(ctx);
       setup_.textures->add_float(t.texture_name, std::move(tex), t.loc);
     } else {
-      auto tex = find_plugin(reg_.spectrum_textures, "spectrum texture", t.name, t.loc)(ctx);
-      t.params.check_unused(what);
+      auto tex = reg_.spectrum_textures.at(t.name, t.loc)(ctx);
       setup_.textures->add_spectrum(t.texture_name, std::move(tex), t.loc);
     }
   }
@@ -145,8 +159,7 @@ class Builder {
     auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir};
-    auto m = find_plugin(reg_.materials, "material", e->name, e->loc)(ctx);
-    e->params.check_unused("Material \"" + e->name + "\"");
+    auto m = reg_.materials.at(e->name, e->loc)(ctx);
     const Material* raw = m ? setup_.scene->own(std::move(m)) : nullptr;
     materials_[key] = raw;
     return raw;
@@ -154,8 +167,7 @@ class Builder {
 
   std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light) {
     ShapeContext ctx{s.params, s.world_from_object, s.reverse_orientation, desc_.search_dir};
-    auto shapes = find_plugin(reg_.shapes, "shape", s.name, s.loc)(ctx);
-    s.params.check_unused("Shape \"" + s.name + "\"");
+    auto shapes = reg_.shapes.at(s.name, s.loc)(ctx);
     const Material* mat = material(s.material, s.loc);
     std::vector<Primitive> prims;
     for (auto& shape : shapes) {
@@ -166,8 +178,7 @@ class Builder {
         } else {
           const TransformedEntity& a = desc_.area_lights.at(s.area_light);
           AreaLightContext actx{a.params, *prim.shape, s.reverse_orientation, *setup_.textures, desc_.search_dir};
-          auto light = find_plugin(reg_.area_lights, "area light", a.name, a.loc)(actx);
-          a.params.check_unused("AreaLightSource \"" + a.name + "\"");
+          auto light = reg_.area_lights.at(a.name, a.loc)(actx);
           prim.area_light = light.get();
           light_sources_.emplace_back(light.get(), &a);
           setup_.scene->add_light(std::move(light));
@@ -219,8 +230,7 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
   const Registry& reg = Registry::builtin();
   const SceneEntity& cam = o.camera ? *o.camera : static_cast<const SceneEntity&>(desc.camera);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
-  auto camera = find_plugin(reg.cameras, "camera", cam.name, cam.loc)(ctx);
-  cam.params.check_unused("Camera \"" + cam.name + "\"");
+  auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }
 
@@ -285,13 +295,11 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     const SceneEntity& s = desc.sampler;
     std::optional<uint64_t> option_seed = apply_options(desc);
     SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
-    setup.sampler = find_plugin(reg.samplers, "sampler", s.name, s.loc)(sctx);
-    s.params.check_unused("Sampler \"" + s.name + "\"");
+    setup.sampler = reg.samplers.at(s.name, s.loc)(sctx);
   });
   attempt([&] {
     const SceneEntity& pf = desc.filter;
-    auto filter = find_plugin(reg.filters, "pixel filter", pf.name, pf.loc)(pf.params);
-    pf.params.check_unused("PixelFilter \"" + pf.name + "\"");
+    auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
     setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale);
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
@@ -299,8 +307,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     attempt([&] {
       const SceneEntity& in = desc.integrator;
       IntegratorContext ictx{in.params, *setup.scene};
-      setup.integrator = find_plugin(reg.integrators, "integrator", in.name, in.loc)(ictx);
-      in.params.check_unused("Integrator \"" + in.name + "\"");
+      setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
     });
   errors.throw_if_any();
   setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),

@@ -11,6 +11,7 @@
 #include "render/film.h"
 #include "render/integrator.h"
 #include "render/scene.h"
+#include "scene/param_spec.h"
 #include "scene/scene_description.h"
 #include "scene/texture_store.h"
 
@@ -36,6 +37,9 @@ struct RenderSetup {
   std::string description;              // one line per plugin, for --verbose and logs
   std::vector<std::string> files_read;  // every file the plugins read (scene/scene_files.h), sorted
 };
+
+// The Film directive's parameters (Film is built in, not a plugin).
+const PluginSpec& film_spec();
 
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& overrides);
 

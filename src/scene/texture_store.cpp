@@ -96,6 +96,20 @@ const FloatTexture* TextureStore::float_param_or_null(const ParameterList& param
   return keep(std::make_unique<ConstantFloatTexture>(params.get_float(name, 0.f)));
 }
 
+const FloatTexture* TextureStore::float_param(const PluginParams& params, const std::string& name) {
+  const ParamSpec* spec = params.has(name) ? nullptr : params.spec().find(name);
+  if (spec && !spec->has_default) return nullptr;
+  return spec ? float_param(params.list(), name, float(spec->default_numbers.at(0)))
+              : float_param_or_null(params.list(), name);
+}
+
+const SpectrumTexture* TextureStore::spectrum_param(const PluginParams& params, const std::string& name) {
+  const ParamSpec* spec = params.has(name) ? nullptr : params.spec().find(name);
+  if (spec && !spec->has_default) return nullptr;
+  return spec ? spectrum_param(params.list(), name, RGB(float(spec->default_numbers.at(0))))
+              : spectrum_param_or_null(params.list(), name);
+}
+
 const SpectrumTexture* TextureStore::spectrum_param(const ParameterList& params, const std::string& name,
                                                     const RGB& def) {
   if (const SpectrumTexture* t = spectrum_param_or_null(params, name)) return t;

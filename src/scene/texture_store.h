@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/texture.h"
+#include "scene/param_spec.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -32,6 +33,10 @@ class TextureStore {
   // An "rgb"/"spectrum"/"blackbody" constant or "texture NAME" reference; `def` when absent.
   const SpectrumTexture* spectrum_param(const ParameterList& params, const std::string& name, const RGB& def);
   const SpectrumTexture* spectrum_param_or_null(const ParameterList& params, const std::string& name);
+
+  // The same for a declared parameter: its default is the table's (null when it has none).
+  const FloatTexture* float_param(const PluginParams& params, const std::string& name);
+  const SpectrumTexture* spectrum_param(const PluginParams& params, const std::string& name);
 
   // Opaque handle to the shared OpenImageIO TextureSystem (created on first call).
   void* texture_system();

@@ -36,16 +36,28 @@ MeshData bilinear_patches_to_triangles(const std::vector<Vec3>& positions, const
   return mesh;
 }
 
+const PluginSpec& bilinearmesh_shape_spec() {
+  static const PluginSpec spec{
+      "Shape",
+      "bilinear patches, each made two triangles",
+      "Each patch is two triangles: exact for planar patches, an approximation for twisted ones.",
+      {param::point3s("P").shown_default("required").describe("vertex positions"),
+       param::integers("indices").describe("4 per patch (optional for exactly 4 vertices)"),
+       param::normals("N").describe("per-vertex shading normals"), param::point2s("uv").describe("per-vertex (u, v)"),
+       param::integers("faceIndices").describe("one per patch (checked, otherwise unused)"),
+       param::string("emissionfilename").describe("warns and is ignored"), alpha_param()}};
+  return spec;
+}
+
 std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, bilinearmesh_shape_spec(), "bilinearmesh");
   std::vector<Vec3> positions = params.get_point3s("P");
   std::vector<int> indices = params.get_ints("indices");
   std::vector<Vec3> normals = params.get_normals("N");
   std::vector<Vec2> uvs = params.get_point2s("uv");
   std::vector<int> face_indices = params.get_ints("faceIndices");
-  if (!params.get_string("emissionfilename", "").empty())
-    warn(params.find("emissionfilename")->loc,
-         "bilinearmesh: parameter \"emissionfilename\" (image-driven emission sampling) is not supported; ignored");
+  if (params.has("emissionfilename"))
+    params.warn_param("emissionfilename", "image-driven emission sampling is not supported; ignored");
   warn_alpha_unsupported(params, "bilinearmesh");
 
   size_t nv = positions.size();
@@ -74,7 +86,7 @@ std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContex
   MeshData mesh = bilinear_patches_to_triangles(positions, indices, normals, uvs);
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                                  MeshSource{params}));
+                                                  MeshSource{ctx.params}));
   return shapes;
 }
 

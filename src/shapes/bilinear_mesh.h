@@ -19,6 +19,7 @@ MeshData bilinear_patches_to_triangles(const std::vector<Vec3>& positions, const
 
 // "point3 P", "integer indices" (optional for exactly 4 vertices), "normal N", "point2 uv",
 // "integer faceIndices"; "string emissionfilename" is warned about and ignored.
+const PluginSpec& bilinearmesh_shape_spec();
 std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContext& ctx);
 
 }  // namespace eyetrace

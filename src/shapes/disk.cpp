@@ -74,17 +74,24 @@ ShapeSample Disk::sample_area(Vec2 u) const {
   return s;
 }
 
+const PluginSpec& disk_shape_spec() {
+  static const PluginSpec spec{
+      "Shape",
+      "a disk (or annulus) in the plane z = height, facing +z",
+      "—",
+      {param::real("height", 0).with_unit("scene units"), param::real("radius", 1).above(0).with_unit("scene units"),
+       param::real("innerradius", 0).at_least(0).with_unit("scene units").describe("below radius"),
+       param::real("phimax", 360).left_open_range(0, 360).with_unit("deg"), alpha_param()}};
+  return spec;
+}
+
 std::vector<std::unique_ptr<Shape>> create_disk_shapes(const ShapeContext& ctx) {
-  const ParameterList& params = ctx.params;
-  float height = params.get_float("height", 0.f);
-  float radius = params.get_float("radius", 1.f);
-  if (!(radius > 0.f)) params.fail("radius", fmt::format("must be positive, got {}", radius));
-  float inner = params.get_float("innerradius", 0.f);
-  if (!(inner >= 0.f && inner < radius))
-    params.fail("innerradius", fmt::format("must be in [0, radius = {}), got {}", radius, inner));
-  float phimax = params.get_float("phimax", 360.f);
-  if (!(phimax > 0.f && phimax <= 360.f))
-    params.fail("phimax", fmt::format("must be in (0, 360] degrees, got {}", phimax));
+  const PluginParams params(ctx.params, disk_shape_spec(), "disk");
+  float height = params.get_float("height");
+  float radius = params.get_float("radius");
+  float inner = params.get_float("innerradius");
+  if (!(inner < radius)) params.fail("innerradius", fmt::format("must be in [0, radius = {}), got {}", radius, inner));
+  float phimax = params.get_float("phimax");
   warn_alpha_unsupported(params, "disk");
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(

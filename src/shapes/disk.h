@@ -30,6 +30,7 @@ class Disk : public AnalyticShape {
 };
 
 // "float height" 0, "float radius" 1, "float innerradius" 0, "float phimax" 360.
+const PluginSpec& disk_shape_spec();
 std::vector<std::unique_ptr<Shape>> create_disk_shapes(const ShapeContext& ctx);
 
 }  // namespace eyetrace

@@ -35,22 +35,32 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
   return mesh;
 }
 
-std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ctx) {
-  const ParameterList& params = ctx.params;
-  std::string filename = params.get_string("filename", "");
-  if (filename.empty()) params.fail("filename", "a PLY file name is required");
-  std::filesystem::path path(resolve_scene_file(ctx.search_dir, filename));
+const PluginSpec& plymesh_shape_spec() {
+  static const PluginSpec spec{
+      "Shape",
+      "a triangle mesh read from a PLY file",
+      "No `.ply.gz` (an error: gunzip it), no displacement.",
+      {param::string("filename")
+           .shown_default("required")
+           .describe("ascii or binary PLY; vertex x y z, optional nx ny nz and u v (or s t); polygons are split into "
+                     "triangles"),
+       param::float_texture("displacement").describe("warns and is ignored"),
+       param::real("displacement.edgelength").describe("warns and is ignored"),
+       param::real("edgelength").describe("warns and is ignored"), alpha_param()}};
+  return spec;
+}
 
-  for (const char* name : {"displacement", "displacement.edgelength", "edgelength"}) {
-    const Param* p = params.find(name);
-    if (!p) continue;
-    p->used = true;
-    warn(p->loc, fmt::format("plymesh: parameter \"{}\": displacement is not supported; the mesh is used as is", name));
-  }
+std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ctx) {
+  const PluginParams params(ctx.params, plymesh_shape_spec(), "plymesh");
+  if (!params.has("filename")) params.fail("filename", "a PLY file name is required");
+  std::filesystem::path path(resolve_scene_file(ctx.search_dir, params.get_string("filename")));
+
+  for (const char* name : {"displacement", "displacement.edgelength", "edgelength"})
+    if (params.has(name)) params.warn_param(name, "displacement is not supported; the mesh is used as is");
   warn_alpha_unsupported(params, "plymesh");
 
-  MeshData mesh = read_ply_mesh(path.string(), params);
-  MeshSource source(params);
+  MeshData mesh = read_ply_mesh(path.string(), ctx.params);
+  MeshSource source(ctx.params);
   source.p = source.indices = source.n = source.uv = "filename";
   source.context = fmt::format("\"{}\": ", path.string());
   std::vector<std::unique_ptr<Shape>> shapes;

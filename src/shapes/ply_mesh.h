@@ -17,6 +17,7 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params);
 // "string filename" (relative to the scene file's directory). "texture displacement" and
 // "float displacement.edgelength"/"edgelength" are warned about: displacement is not
 // supported. "alpha" likewise.
+const PluginSpec& plymesh_shape_spec();
 std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ctx);
 
 }  // namespace eyetrace

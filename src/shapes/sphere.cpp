@@ -105,15 +105,23 @@ ShapeSample Sphere::sample_area(Vec2 u) const {
   return s;
 }
 
+const PluginSpec& sphere_shape_spec() {
+  static const PluginSpec spec{"Shape",
+                               "a sphere about the origin, optionally cut in z and in azimuth",
+                               "— (a `zmin` above `zmax` is swapped as in pbrt-v4, but with a warning)",
+                               {param::real("radius", 1).above(0).with_unit("scene units"),
+                                param::real("zmin").shown_default("−radius").with_unit("scene units"),
+                                param::real("zmax").shown_default("radius").with_unit("scene units"),
+                                param::real("phimax", 360).left_open_range(0, 360).with_unit("deg"), alpha_param()}};
+  return spec;
+}
+
 std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx) {
-  const ParameterList& params = ctx.params;
-  float radius = params.get_float("radius", 1.f);
-  if (!(radius > 0.f)) params.fail("radius", fmt::format("must be positive, got {}", radius));
-  float zmin = params.get_float("zmin", -radius);
-  float zmax = params.get_float("zmax", radius);
-  float phimax = params.get_float("phimax", 360.f);
-  if (!(phimax > 0.f && phimax <= 360.f))
-    params.fail("phimax", fmt::format("must be in (0, 360] degrees, got {}", phimax));
+  const PluginParams params(ctx.params, sphere_shape_spec(), "sphere");
+  float radius = params.get_float("radius");
+  float zmin = params.has("zmin") ? params.get_float("zmin") : -radius;
+  float zmax = params.has("zmax") ? params.get_float("zmax") : radius;
+  float phimax = params.get_float("phimax");
   if (zmin > zmax) {
     warn(params.loc(), fmt::format("sphere: \"zmin\" {} is above \"zmax\" {}; swapping them as pbrt does", zmin, zmax));
     std::swap(zmin, zmax);

@@ -35,6 +35,7 @@ class Sphere : public AnalyticShape {
 };
 
 // "float radius" 1, "float zmin" -radius, "float zmax" radius, "float phimax" 360.
+const PluginSpec& sphere_shape_spec();
 std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx);
 
 }  // namespace eyetrace

@@ -25,14 +25,15 @@ constexpr Vec2 kDefaultUV[3] = {Vec2(0.f, 0.f), Vec2(1.f, 0.f), Vec2(1.f, 1.f)};
 
 }  // namespace
 
-void warn_alpha_unsupported(const ParameterList& params, const std::string& shape_name) {
-  const Param* p = params.find("alpha");
+ParamSpec alpha_param() {
+  return param::float_texture("alpha", 1)
+      .describe("cutouts are not supported: other values warn, the shape stays opaque");
+}
+
+void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name) {
+  const Param* p = params.list().find("alpha");
   if (!p) return;
-  if (p->canonical_type() == "texture") {
-    params.get_texture("alpha");
-  } else if (params.get_float("alpha", 1.f) == 1.f) {
-    return;  // fully opaque: nothing is lost
-  }
+  if (p->canonical_type() != "texture" && params.get_float("alpha") == 1.f) return;  // opaque: nothing is lost
   warn(p->loc,
        fmt::format("{}: parameter \"alpha\": alpha cutouts are not supported; the shape is opaque", shape_name));
 }
@@ -253,22 +254,32 @@ ShapeSample TriangleMesh::sample_area(Vec2 u) const {
   return s;
 }
 
+const PluginSpec& trianglemesh_shape_spec() {
+  static const PluginSpec spec{
+      "Shape",
+      "a triangle mesh given in the scene",
+      "Tangents `S` are ignored.",
+      {param::point3s("P").shown_default("required").describe("vertex positions"),
+       param::integers("indices").describe("3 per triangle (optional for exactly 3 vertices)"),
+       param::normals("N").describe("per-vertex shading normals"), param::point2s("uv").describe("per-vertex (u, v)"),
+       param::integers("faceIndices").describe("one per triangle (checked, otherwise unused)"),
+       param::vector3s("S").describe("read and ignored, with a warning"), alpha_param()}};
+  return spec;
+}
+
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx) {
-  const ParameterList& params = ctx.params;
+  const PluginParams params(ctx.params, trianglemesh_shape_spec(), "trianglemesh");
   MeshData mesh;
   mesh.positions = params.get_point3s("P");
   mesh.indices = params.get_ints("indices");
   mesh.normals = params.get_normals("N");
   mesh.uvs = params.get_point2s("uv");
-  if (const Param* s = params.find("S")) {
-    s->used = true;
-    warn(s->loc, "trianglemesh: parameter \"S\" (tangents) is ignored; shading frames come from \"N\" and \"uv\"");
-  }
+  if (params.has("S")) params.warn_param("S", "tangents are ignored; shading frames come from \"N\" and \"uv\"");
   std::vector<int> face_indices = params.get_ints("faceIndices");
   warn_alpha_unsupported(params, "trianglemesh");
   std::vector<std::unique_ptr<Shape>> shapes;
   auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                            MeshSource{params});
+                                            MeshSource{ctx.params});
   if (!face_indices.empty() && face_indices.size() != tri->primitive_count() + size_t(tri->dropped_triangles()))
     params.fail("faceIndices", fmt::format("{} face indices given for {} triangles", face_indices.size(),
                                            tri->primitive_count() + tri->dropped_triangles()));

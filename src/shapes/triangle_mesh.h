@@ -84,6 +84,9 @@ class TriangleMesh : public Shape {
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx);
 
 // Reads "alpha" (float or texture) and warns that alpha cutouts are not supported.
-void warn_alpha_unsupported(const ParameterList& params, const std::string& shape_name);
+// "alpha", which every shape takes: cutouts are not supported, so anything but 1 warns.
+ParamSpec alpha_param();
+void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name);
+const PluginSpec& trianglemesh_shape_spec();
 
 }  // namespace eyetrace

@@ -54,16 +54,16 @@ class CheckerboardTexture final : public Base {
 };
 
 template <typename Base, typename Value>
-std::unique_ptr<Base> create(const TextureContext& ctx, const Base* tex1, const Base* tex2) {
-  int dimension = ctx.params.get_int("dimension", 2);
-  if (dimension != 2 && dimension != 3)
-    ctx.params.fail("dimension", fmt::format("checkerboard dimension must be 2 or 3, got {}", dimension));
+std::unique_ptr<Base> create(const TextureContext& ctx, const PluginParams& p, const Base* tex1, const Base* tex2) {
+  int dimension = p.get_int("dimension");
   TextureMapping2D map2;
   TextureMapping3D map3;
-  if (dimension == 2)
-    map2 = TextureMapping2D::read(ctx);
-  else
+  if (dimension == 2) {
+    map2 = TextureMapping2D::read(ctx, p);
+  } else {
+    TextureMapping2D::reject(p, "a 3-D checkerboard has no 2-D mapping");
     map3 = TextureMapping3D::read(ctx);
+  }
   return std::make_unique<CheckerboardTexture<Base, Value>>(tex1, tex2, dimension, map2, map3);
 }
 
@@ -83,16 +83,25 @@ float checkerboard_3d(const Vec3& p) {
   return parity(sum) != 0.0 ? 1.f : 0.f;
 }
 
+const PluginSpec& checkerboard_texture_spec() {
+  static const PluginSpec spec{
+      "Texture", "alternating tex1 and tex2 in (s, t) squares (filtered) or texture-space cubes", "—",
+      std::vector<ParamSpec>{param::any_texture("tex1", 1).describe("of the texture's kind"),
+                             param::any_texture("tex2", 0).describe("of the texture's kind"),
+                             param::integer("dimension", 2).range(2, 3).describe("2: in (s, t); 3: in texture space")} +
+          TextureMapping2D::declared()};
+  return spec;
+}
+
 std::unique_ptr<FloatTexture> create_checkerboard_float_texture(const TextureContext& ctx) {
-  const FloatTexture* tex1 = ctx.textures.float_param(ctx.params, "tex1", 1.f);
-  const FloatTexture* tex2 = ctx.textures.float_param(ctx.params, "tex2", 0.f);
-  return create<FloatTexture, float>(ctx, tex1, tex2);
+  const PluginParams p(ctx.params, checkerboard_texture_spec(), "checkerboard");
+  return create<FloatTexture, float>(ctx, p, ctx.textures.float_param(p, "tex1"), ctx.textures.float_param(p, "tex2"));
 }
 
 std::unique_ptr<SpectrumTexture> create_checkerboard_spectrum_texture(const TextureContext& ctx) {
-  const SpectrumTexture* tex1 = ctx.textures.spectrum_param(ctx.params, "tex1", RGB(1.f));
-  const SpectrumTexture* tex2 = ctx.textures.spectrum_param(ctx.params, "tex2", RGB(0.f));
-  return create<SpectrumTexture, RGB>(ctx, tex1, tex2);
+  const PluginParams p(ctx.params, checkerboard_texture_spec(), "checkerboard");
+  return create<SpectrumTexture, RGB>(ctx, p, ctx.textures.spectrum_param(p, "tex1"),
+                                      ctx.textures.spectrum_param(p, "tex2"));
 }
 
 }  // namespace eyetrace

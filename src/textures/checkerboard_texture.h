@@ -15,6 +15,7 @@ namespace eyetrace {
 float checkerboard_2d(Vec2 st, float r);
 float checkerboard_3d(const Vec3& p);
 
+const PluginSpec& checkerboard_texture_spec();
 std::unique_ptr<FloatTexture> create_checkerboard_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_checkerboard_spectrum_texture(const TextureContext& ctx);
 

@@ -2,12 +2,23 @@
 
 namespace eyetrace {
 
+const PluginSpec& constant_texture_spec() {
+  static const PluginSpec spec{
+      "Texture",
+      "one value everywhere",
+      "—",
+      {param::float_or_spectrum("value", 1).describe("a float or a spectrum, of the texture's kind")}};
+  return spec;
+}
+
 std::unique_ptr<FloatTexture> create_constant_float_texture(const TextureContext& ctx) {
-  return std::make_unique<ConstantFloatTexture>(ctx.params.get_float("value", 1.f));
+  return std::make_unique<ConstantFloatTexture>(
+      PluginParams(ctx.params, constant_texture_spec(), "constant").get_float("value"));
 }
 
 std::unique_ptr<SpectrumTexture> create_constant_spectrum_texture(const TextureContext& ctx) {
-  return std::make_unique<ConstantSpectrumTexture>(ctx.params.get_rgb("value").value_or(RGB(1.f)));
+  return std::make_unique<ConstantSpectrumTexture>(
+      PluginParams(ctx.params, constant_texture_spec(), "constant").get_rgb("value"));
 }
 
 }  // namespace eyetrace

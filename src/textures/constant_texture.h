@@ -8,6 +8,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& constant_texture_spec();
 std::unique_ptr<FloatTexture> create_constant_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_constant_spectrum_texture(const TextureContext& ctx);
 

@@ -53,8 +53,8 @@ struct ImageLookup {
   }
 };
 
-void read_filter(const ParameterList& p, TextureOpt* opt) {
-  std::string filter = p.get_string("filter", "bilinear");
+void read_filter(const PluginParams& p, TextureOpt* opt) {
+  std::string filter = p.get_string("filter");
   opt->interpmode = TextureOpt::InterpBilinear;
   // pbrt-v4's point and bilinear filters pick one MIP level from the footprint.
   if (filter == "point") {
@@ -64,27 +64,24 @@ void read_filter(const ParameterList& p, TextureOpt* opt) {
     opt->mipmode = TextureOpt::MipModeOneLevel;
   } else if (filter == "trilinear") {
     opt->mipmode = TextureOpt::MipModeTrilinear;
-  } else if (filter == "ewa" || filter == "EWA") {
+  } else {  // ewa, EWA
     opt->mipmode = TextureOpt::MipModeAniso;
-  } else {
-    p.fail("filter", fmt::format("unknown filter \"{}\"; eyetrace supports point, bilinear, trilinear, ewa", filter));
   }
-  opt->anisotropic = std::max(1, int(p.get_float("maxanisotropy", 8.f)));
+  opt->anisotropic = std::max(1, int(p.get_float("maxanisotropy")));
 }
 
-TextureOpt::Wrap read_wrap(const ParameterList& p) {
-  std::string wrap = p.get_string("wrap", "repeat");
-  if (wrap == "repeat") return TextureOpt::WrapPeriodic;
+TextureOpt::Wrap read_wrap(const PluginParams& p) {
+  const std::string wrap = p.get_string("wrap");  // one of the declared choices
   if (wrap == "black") return TextureOpt::WrapBlack;
   if (wrap == "clamp") return TextureOpt::WrapClamp;
-  p.fail("wrap", fmt::format("unknown wrap mode \"{}\"; eyetrace supports repeat, black, clamp", wrap));
+  return TextureOpt::WrapPeriodic;
 }
 
-void read_encoding(const ParameterList& p, const std::string& path, const OIIO::ImageSpec& spec, ImageLookup* l) {
+void read_encoding(const PluginParams& p, const std::string& path, const OIIO::ImageSpec& spec, ImageLookup* l) {
   bool eight_bit = spec.format.basetype == OIIO::TypeDesc::UINT8;
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  std::string e = p.get_string("encoding", ext == ".png" || eight_bit ? "sRGB" : "linear");
+  std::string e = p.has("encoding") ? p.get_string("encoding") : ext == ".png" || eight_bit ? "sRGB" : "linear";
   if (e == "sRGB" || e == "srgb") {
     l->encoding = Encoding::SRGB;
   } else if (e == "linear") {
@@ -103,10 +100,32 @@ void read_encoding(const ParameterList& p, const std::string& path, const OIIO::
   if (spec.format.is_floating_point()) l->encoding = Encoding::Linear;
 }
 
+}  // namespace
+
+const PluginSpec& imagemap_texture_spec() {
+  static const PluginSpec spec{
+      "Texture", "an image file",
+      "Filtering through OpenImageIO's texture system; no `octahedralsphere` wrap; 8-bit images other than PNG "
+      "default to sRGB (pbrt-v4: only `.png`).",
+      std::vector<ParamSpec>{
+          param::string("filename").shown_default("required").describe("any format OpenImageIO reads"),
+          param::string("filter", "bilinear").in({"point", "bilinear", "trilinear", "ewa", "EWA"}),
+          param::real("maxanisotropy", 8).at_least(1), param::string("wrap", "repeat").in({"repeat", "black", "clamp"}),
+          param::string("encoding")
+              .shown_default("sRGB for `.png` and 8-bit images, else linear")
+              .describe("`sRGB`, `linear` or `\"gamma g\"`; ignored for floating-point images"),
+          param::real("scale", 1).describe("multiplies the values"),
+          param::boolean("invert", false).describe("1 − value")} +
+          TextureMapping2D::declared()};
+  return spec;
+}
+
+namespace {
+
 ImageLookup open_image(const TextureContext& ctx) {
-  const ParameterList& p = ctx.params;
-  std::string name = p.get_string("filename", "");
-  if (name.empty()) p.fail("filename", "an imagemap texture needs a \"filename\"");
+  const PluginParams p(ctx.params, imagemap_texture_spec(), "imagemap");
+  if (!p.has("filename")) p.fail("filename", "an imagemap texture needs a \"filename\"");
+  std::string name = p.get_string("filename");
   std::string path = resolve_scene_file(ctx.search_dir, name);
 
   ImageLookup l;
@@ -127,10 +146,10 @@ ImageLookup open_image(const TextureContext& ctx) {
   read_filter(p, &l.opt);
   l.opt.swrap = l.opt.twrap = read_wrap(p);
   l.opt.fill = 0.f;
-  l.scale = p.get_float("scale", 1.f);
-  l.invert = p.get_bool("invert", false);
+  l.scale = p.get_float("scale");
+  l.invert = p.get_bool("invert");
   read_encoding(p, path, spec, &l);
-  l.mapping = TextureMapping2D::read(ctx);
+  l.mapping = TextureMapping2D::read(ctx, p);
   return l;
 }
 

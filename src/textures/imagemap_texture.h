@@ -16,6 +16,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& imagemap_texture_spec();
 std::unique_ptr<FloatTexture> create_imagemap_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_imagemap_spectrum_texture(const TextureContext& ctx);
 

@@ -27,18 +27,27 @@ class MixTexture final : public Base {
 
 }  // namespace
 
+const PluginSpec& mix_texture_spec() {
+  static const PluginSpec spec{
+      "Texture",
+      "(1 − amount) tex1 + amount tex2",
+      "—",
+      {param::any_texture("tex1", 0).describe("of the texture's kind"),
+       param::any_texture("tex2", 1).describe("of the texture's kind"), param::float_texture("amount", 0.5)}};
+  return spec;
+}
+
 std::unique_ptr<FloatTexture> create_mix_float_texture(const TextureContext& ctx) {
-  const FloatTexture* tex1 = ctx.textures.float_param(ctx.params, "tex1", 0.f);
-  const FloatTexture* tex2 = ctx.textures.float_param(ctx.params, "tex2", 1.f);
-  const FloatTexture* amount = ctx.textures.float_param(ctx.params, "amount", 0.5f);
-  return std::make_unique<MixTexture<FloatTexture, float>>(tex1, tex2, amount);
+  const PluginParams p(ctx.params, mix_texture_spec(), "mix");
+  return std::make_unique<MixTexture<FloatTexture, float>>(
+      ctx.textures.float_param(p, "tex1"), ctx.textures.float_param(p, "tex2"), ctx.textures.float_param(p, "amount"));
 }
 
 std::unique_ptr<SpectrumTexture> create_mix_spectrum_texture(const TextureContext& ctx) {
-  const SpectrumTexture* tex1 = ctx.textures.spectrum_param(ctx.params, "tex1", RGB(0.f));
-  const SpectrumTexture* tex2 = ctx.textures.spectrum_param(ctx.params, "tex2", RGB(1.f));
-  const FloatTexture* amount = ctx.textures.float_param(ctx.params, "amount", 0.5f);
-  return std::make_unique<MixTexture<SpectrumTexture, RGB>>(tex1, tex2, amount);
+  const PluginParams p(ctx.params, mix_texture_spec(), "mix");
+  return std::make_unique<MixTexture<SpectrumTexture, RGB>>(ctx.textures.spectrum_param(p, "tex1"),
+                                                            ctx.textures.spectrum_param(p, "tex2"),
+                                                            ctx.textures.float_param(p, "amount"));
 }
 
 }  // namespace eyetrace

@@ -8,6 +8,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& mix_texture_spec();
 std::unique_ptr<FloatTexture> create_mix_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_mix_spectrum_texture(const TextureContext& ctx);
 

@@ -24,16 +24,25 @@ class ScaleTexture final : public Base {
 
 }  // namespace
 
+const PluginSpec& scale_texture_spec() {
+  static const PluginSpec spec{
+      "Texture",
+      "tex × scale",
+      "—",
+      {param::any_texture("tex", 1).describe("of the texture's kind"), param::float_texture("scale", 1)}};
+  return spec;
+}
+
 std::unique_ptr<FloatTexture> create_scale_float_texture(const TextureContext& ctx) {
-  const FloatTexture* tex = ctx.textures.float_param(ctx.params, "tex", 1.f);
-  const FloatTexture* scale = ctx.textures.float_param(ctx.params, "scale", 1.f);
-  return std::make_unique<ScaleTexture<FloatTexture, float>>(tex, scale);
+  const PluginParams p(ctx.params, scale_texture_spec(), "scale");
+  return std::make_unique<ScaleTexture<FloatTexture, float>>(ctx.textures.float_param(p, "tex"),
+                                                             ctx.textures.float_param(p, "scale"));
 }
 
 std::unique_ptr<SpectrumTexture> create_scale_spectrum_texture(const TextureContext& ctx) {
-  const SpectrumTexture* tex = ctx.textures.spectrum_param(ctx.params, "tex", RGB(1.f));
-  const FloatTexture* scale = ctx.textures.float_param(ctx.params, "scale", 1.f);
-  return std::make_unique<ScaleTexture<SpectrumTexture, RGB>>(tex, scale);
+  const PluginParams p(ctx.params, scale_texture_spec(), "scale");
+  return std::make_unique<ScaleTexture<SpectrumTexture, RGB>>(ctx.textures.spectrum_param(p, "tex"),
+                                                              ctx.textures.float_param(p, "scale"));
 }
 
 }  // namespace eyetrace

@@ -7,6 +7,7 @@
 
 namespace eyetrace {
 
+const PluginSpec& scale_texture_spec();
 std::unique_ptr<FloatTexture> create_scale_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_scale_spectrum_texture(const TextureContext& ctx);
 

@@ -1,31 +1,57 @@
 #include "textures/texture_mapping.h"
 
+#include <algorithm>
+#include <map>
+
 #include "lights/sphere_mapping.h"
 
 namespace eyetrace {
 
-TextureMapping2D TextureMapping2D::read(const TextureContext& ctx) {
-  const ParameterList& p = ctx.params;
+std::vector<ParamSpec> TextureMapping2D::declared() {
+  return {param::string("mapping", "uv")
+              .in({"uv", "spherical", "cylindrical", "planar"})
+              .describe("(u, v) or texture-space point → (s, t)"),
+          param::real("uscale", 1).describe("`uv`"),
+          param::real("vscale", 1).describe("`uv`"),
+          param::real("udelta", 0).describe("`uv`, `planar`"),
+          param::real("vdelta", 0).describe("`uv`, `planar`"),
+          param::vector3("v1", Vec3(1.f, 0.f, 0.f)).describe("`planar`: s axis"),
+          param::vector3("v2", Vec3(0.f, 1.f, 0.f)).describe("`planar`: t axis")};
+}
+
+namespace {
+
+// The mappings each parameter belongs to: one given for another mapping would do nothing.
+const std::map<std::string, std::vector<std::string>>& mapping_users() {
+  static const std::map<std::string, std::vector<std::string>> users{
+      {"uscale", {"uv"}},           {"vscale", {"uv"}}, {"udelta", {"uv", "planar"}},
+      {"vdelta", {"uv", "planar"}}, {"v1", {"planar"}}, {"v2", {"planar"}}};
+  return users;
+}
+
+}  // namespace
+
+void TextureMapping2D::reject(const PluginParams& p, const std::string& why) {
+  for (const auto& [name, kinds] : mapping_users())
+    if (p.has(name)) p.fail(name, why);
+  if (p.has("mapping")) p.fail("mapping", why);
+}
+
+TextureMapping2D TextureMapping2D::read(const TextureContext& ctx, const PluginParams& p) {
   TextureMapping2D m;
   m.texture_from_world_ = ctx.world_from_texture.inverse();
-  std::string kind = p.get_string("mapping", "uv");
-  if (kind == "uv") {
-    m.kind_ = Kind::UV;
-    m.scale_ = Vec2(p.get_float("uscale", 1.f), p.get_float("vscale", 1.f));
-  } else if (kind == "spherical") {
-    m.kind_ = Kind::Spherical;
-  } else if (kind == "cylindrical") {
-    m.kind_ = Kind::Cylindrical;
-  } else if (kind == "planar") {
-    m.kind_ = Kind::Planar;
-    m.v1_ = p.get_vector3("v1", m.v1_);
-    m.v2_ = p.get_vector3("v2", m.v2_);
-  } else {
-    p.fail("mapping",
-           fmt::format("unknown texture mapping \"{}\"; eyetrace supports uv, spherical, cylindrical, planar", kind));
-  }
-  if (m.kind_ == Kind::UV || m.kind_ == Kind::Planar)
-    m.delta_ = Vec2(p.get_float("udelta", 0.f), p.get_float("vdelta", 0.f));
+  const std::string kind = p.get_string("mapping");  // one of the declared choices
+  for (const auto& [name, kinds] : mapping_users())
+    if (p.has(name) && std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+      p.fail(name, fmt::format("does nothing with mapping \"{}\"", kind));
+  m.kind_ = kind == "spherical"     ? Kind::Spherical
+            : kind == "cylindrical" ? Kind::Cylindrical
+            : kind == "planar"      ? Kind::Planar
+                                    : Kind::UV;
+  m.scale_ = Vec2(p.get_float("uscale"), p.get_float("vscale"));
+  m.delta_ = Vec2(p.get_float("udelta"), p.get_float("vdelta"));
+  m.v1_ = p.get_vector3("v1");
+  m.v2_ = p.get_vector3("v2");
   return m;
 }
 

@@ -17,7 +17,11 @@ struct TextureCoords {
 
 class TextureMapping2D {
  public:
-  static TextureMapping2D read(const TextureContext& ctx);
+  // "mapping" and the parameters of each mapping, for the tables of the textures that map.
+  static std::vector<ParamSpec> declared();
+  static TextureMapping2D read(const TextureContext& ctx, const PluginParams& p);
+  // Errors naming a mapping parameter given to a texture that does not map in 2-D.
+  static void reject(const PluginParams& p, const std::string& why);
   TextureCoords map(const TextureEvalContext& ctx) const;
 
  private:

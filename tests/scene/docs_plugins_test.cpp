@@ -108,10 +108,10 @@ NameSet names_in_column(const std::vector<std::string>& lines, size_t column) {
   return names;
 }
 
-template <typename Map>
-NameSet keys_of(const Map& table) {
+template <typename Table>
+NameSet keys_of(const Table& table) {
   NameSet names;
-  for (const auto& [name, factory] : table) names.insert(name);
+  for (const auto& e : table.entries) names.insert(e.name);
   return names;
 }
 
@@ -151,7 +151,7 @@ std::string erase_all(std::string text, const std::string& what) {
 
 TEST(DocsPlugins, EveryRegisteredPluginIsListed) {
   const Registry& r = Registry::builtin();
-  ASSERT_FALSE(r.shapes.empty());
+  ASSERT_FALSE(r.shapes.entries.empty());
   NameSet missing = undocumented(read_doc(), r);
   EXPECT_TRUE(missing.empty()) << "docs/scene-format.md, section Plugins, lacks: " << joined(missing);
 }
