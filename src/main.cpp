@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   auto render = eyetrace::add_render_command(app);
   auto optics = eyetrace::add_optics_command(app);
+  auto plugins = eyetrace::add_plugins_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("optics")) return optics();
+    if (app.got_subcommand("plugins")) return plugins();
   } catch (const eyetrace::SceneError& e) {
     // One line per diagnostic, compiler style, then how many when there are several.
     for (const eyetrace::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.to_string().c_str());

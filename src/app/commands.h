@@ -9,5 +9,6 @@ namespace eyetrace {
 using CommandRunner = std::function<int()>;
 CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_optics_command(CLI::App& app);
+CommandRunner add_plugins_command(CLI::App& app);
 
 }  // namespace eyetrace

@@ -83,7 +83,7 @@ PluginSpec make_eye_spec(bool with_model) {
   return PluginSpec{"Camera", "a ray-traced schematic eye: the image on its retina",
                     "eyetrace's own: a ray-traced schematic eye. No shutter or screen-window parameters (they are "
                     "unused-parameter errors).",
-                    std::move(params)};
+                    std::move(params), "[eye-camera.md](eye-camera.md#parameters-of-the-eye-cameras)"};
 }
 
 // A float parameter in full double precision.

@@ -230,7 +230,8 @@ std::string problem(const Param& p, const ParamSpec& s) {
   if (item > 0 && !s.array && n != item)
     return item == 1 ? fmt::format("{} takes one value, got {}", name, n)
                      : fmt::format("{} takes {} values, got {}", name, item, n);
-  if (item > 0 && s.array && n % item != 0) return fmt::format("{} needs a multiple of {} values, got {}", name, item, n);
+  if (item > 0 && s.array && n % item != 0)
+    return fmt::format("{} needs a multiple of {} values, got {}", name, item, n);
   if (s.array && s.array_size > 0 && n != size_t(s.array_size))
     return fmt::format("{} takes {} values, got {}", name, s.array_size, n);
   for (double v : p.numbers) {
@@ -243,7 +244,8 @@ std::string problem(const Param& p, const ParamSpec& s) {
   const std::string unit = s.unit.empty() || s.unit.find(' ') != std::string::npos ? "" : " " + s.unit;
   if (type == "float" || type == "integer")
     for (double v : p.numbers)
-      if (!in_range(s, v)) return fmt::format("{}: {}{} is outside {}{}", name, number_text(v), unit, s.range_text(), unit);
+      if (!in_range(s, v))
+        return fmt::format("{}: {}{} is outside {}{}", name, number_text(v), unit, s.range_text(), unit);
   if (!s.choices.empty() && type == "string") {
     const std::string& v = p.strings.at(0);
     if (std::find(s.choices.begin(), s.choices.end(), v) == s.choices.end()) {
@@ -269,9 +271,10 @@ PluginParams::PluginParams(const ParameterList& list, const PluginSpec& spec, co
     if (!s && p.used) continue;
     if (!s) {
       const std::string hint = closest_match(p.name, names);
-      found.push_back(Diagnostic{p.loc, p.name, Severity::Error,
-                                 fmt::format("{} \"{}\": unused parameter \"{} {}\"{}", spec.directive, plugin, p.type,
-                                             p.name, hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint))});
+      found.push_back(
+          Diagnostic{p.loc, p.name, Severity::Error,
+                     fmt::format("{} \"{}\": unused parameter \"{} {}\"{}", spec.directive, plugin, p.type, p.name,
+                                 hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint))});
       continue;
     }
     p.used = true;

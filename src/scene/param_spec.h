@@ -34,8 +34,8 @@ enum class ParamType {
 struct ParamSpec {
   std::string name;
   ParamType type = ParamType::Float;
-  bool array = false;  // any number of values (point3 P, integer indices); else exactly one item
-  int array_size = 0;  // arrays: exact number of values if > 0
+  bool array = false;                   // any number of values (point3 P, integer indices); else exactly one item
+  int array_size = 0;                   // arrays: exact number of values if > 0
   std::vector<double> default_numbers;  // numeric, bool (0/1) and point defaults
   std::string default_string;
   bool has_default = false;
@@ -47,10 +47,10 @@ struct ParamSpec {
   std::string doc;
 
   // Fluent setters for the tables.
-  ParamSpec&& range(double l, double h) &&;       // [l, h]
-  ParamSpec&& open_range(double l, double h) &&;  // (l, h)
-  ParamSpec&& at_least(double l) &&;              // [l, inf)
-  ParamSpec&& above(double l) &&;                 // (l, inf)
+  ParamSpec&& range(double l, double h) &&;            // [l, h]
+  ParamSpec&& open_range(double l, double h) &&;       // (l, h)
+  ParamSpec&& at_least(double l) &&;                   // [l, inf)
+  ParamSpec&& above(double l) &&;                      // (l, inf)
   ParamSpec&& left_open_range(double l, double h) &&;  // (l, h]
   ParamSpec&& in(std::vector<std::string> values) &&;
   ParamSpec&& with_unit(std::string u) &&;
@@ -59,9 +59,9 @@ struct ParamSpec {
   ParamSpec&& describe(std::string text) &&;
 
   std::vector<std::string> accepted_types() const;  // pbrt-v4 type names, canonical
-  std::string type_name() const;                     // "float", "spectrum texture", ...
-  std::string default_text() const;                  // for listings; "" when none
-  std::string range_text() const;                    // "(0, 180)", "[0, inf)", "" when none
+  std::string type_name() const;                    // "float", "spectrum texture", ...
+  std::string default_text() const;                 // for listings; "" when none
+  std::string range_text() const;                   // "(0, 180)", "[0, inf)", "" when none
 };
 
 // Table entries, one constructor per type (defaults typed as the reader returns them).
@@ -87,10 +87,13 @@ ParamSpec vector3s(std::string name);
 
 // One plugin's (or several plugins') declaration: what `eyetrace plugins` lists.
 struct PluginSpec {
-  std::string directive;  // "Camera", "Shape", "Texture", ... (for messages)
-  std::string summary;    // one line: what it is
+  std::string directive;    // "Camera", "Shape", "Texture", ... (for messages)
+  std::string summary;      // one line: what it is
   std::string differences;  // how it differs from pbrt-v4 ("—" when it does not)
   std::vector<ParamSpec> params;
+  // Where the parameters are described at length (a docs link); the directive's plugin table
+  // then lists their names only.
+  std::string details;
 
   const ParamSpec* find(const std::string& name) const;
 };
