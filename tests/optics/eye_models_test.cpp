@@ -1,11 +1,19 @@
-// Eye presets against constants computed or published OUTSIDE this code:
-// /work/shared/optics/eye-models.md (tables in sections 1, 3, 4, 5, 5c, 6, 7, 9) and
-// eye-models.json ("paraxial_computed", an independent 2x2-matrix calculation, and
-// "paraxial_published", Atchison & Smith / Schwiegerling values).
+// Eye presets against constants computed or published OUTSIDE this code. The expected values
+// are read from tests/data/optics/paraxial_reference.json, a verbatim copy (with provenance, see
+// tests/data/optics/README.md) of the shared eye-model reference eye-models.json:
+// "paraxial_computed", an independent 2x2-matrix calculation, "paraxial_published", Atchison &
+// Smith / Schwiegerling values, and "navarro_accommodation" (eye-models.md table 5c). The other
+// constants below come from the tables of eye-models.md (sections 1, 5a, 5d, 6, 7).
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
@@ -14,102 +22,122 @@
 namespace eyetrace::optics {
 namespace {
 
-struct Expected {
-  const char* model;
-  const char* variant;
-  double accommodation;
-  double power, refraction;
-  double F, Fp, H, Hp, N, Np;
-  double ep, ep_mag, xp, xp_mag;
-  double axial_length;
-};
+using nlohmann::json;
+
+const char* const kParaxialReference = EYETRACE_SOURCE_DIR "/tests/data/optics/paraxial_reference.json";
+
+// The reference file, parsed once; null (and a test failure) when it cannot be read.
+const json& paraxial_reference() {
+  static const json reference = [] {
+    std::ifstream in(kParaxialReference);
+    if (!in) return json();
+    return json::parse(in, nullptr, /*allow_exceptions=*/false);
+  }();
+  return reference;
+}
+
+// The preset entry whose eye-models.json model key is `key`.
+const json& reference_preset(const std::string& key) {
+  for (const json& p : paraxial_reference().at("presets"))
+    if (p.at("source_model_key") == key) return p;
+  throw std::runtime_error("paraxial_reference.json has no preset '" + key + "'");
+}
+
+double published(const std::string& key, const std::string& quantity) {
+  return reference_preset(key).at("paraxial_published").at(quantity).at("value").get<double>();
+}
+
+TEST(EyePresets, ParaxialReferenceFileIsReadable) {
+  const json& r = paraxial_reference();
+  ASSERT_TRUE(r.is_object()) << "cannot read or parse " << kParaxialReference;
+  EXPECT_EQ(r.at("presets").size(), 9u);
+  EXPECT_EQ(r.at("navarro_accommodation").at("power_D_axial_length_fixed").size(), 9u);
+}
 
 // eye-models.json "paraxial_computed" of each model (4 decimals). Where a published value
 // exists it agrees to <= 0.003 (eye-models.md section 9), e.g. Gullstrand 58.636 D (AS00),
 // Le Grand 59.94 D (SCH), Navarro 60.416 D (AS00), Le Grand accommodated 67.677 D / -7.053 D.
-const Expected kPresets[] = {
-    {"gullstrand", "", 0, 58.6361, 0.0010, -15.7065, 24.3854, 1.3479, 1.6008, 7.0781, 7.3311, 3.0472, 1.1333, 3.6654,
-     1.0306, 24.385},
-    {"gullstrand", "", 10.87013, 70.5758, -10.8689, -12.3973, 21.0157, 1.7719, 2.0857, 6.5327, 6.8466, 2.6681, 1.117,
-     3.2119, 1.0506, 24.385},
-    {"legrand", "", 0, 59.9404, 0.0, -15.0886, 24.1966, 1.5946, 1.9078, 7.2001, 7.5133, 3.0376, 1.1311, 3.6821, 1.0411,
-     24.19655},
-    {"kooijman", "", 0, 59.9404, 0.0, -15.0886, 24.1966, 1.5946, 1.9078, 7.2001, 7.5133, 3.0376, 1.1311, 3.6821, 1.0411,
-     24.19655},
-    {"navarro", "", 0, 60.4156, 0.0, -14.9689, 24.004, 1.5831, 1.8905, 7.1446, 7.452, 3.0424, 1.1328, 3.6821, 1.0411,
-     24.00398},
-    {"navarro", "wu2011", 0, 60.5963, -1.2377, -14.9151, 23.9412, 1.5875, 1.8937, 7.1324, 7.4386, 3.0443, 1.133, 3.6821,
-     1.0411, 24.4},
-    {"escudero-sanz", "", 0, 60.7242, 0.0, -14.8854, 23.9203, 1.5825, 1.8912, 7.1437, 7.4524, 3.0401, 1.1334, 3.6825,
-     1.0412, 23.9203},
-    {"arizona", "", 0, 60.6227, -0.0072, -14.8474, 23.9974, 1.6481, 1.9594, 7.1906, 7.5019, 2.9617, 1.1277, 3.5849,
-     1.0446, 24.0},
-};
-
 TEST(EyePresets, ParaxialConstantsMatchIndependentComputation) {
-  for (const Expected& e : kPresets) {
+  const json& r = paraxial_reference();
+  ASSERT_TRUE(r.is_object()) << "cannot read or parse " << kParaxialReference;
+  ASSERT_FALSE(r.at("presets").empty());
+  for (const json& e : r.at("presets")) {
     EyeOptions o;
-    o.model = e.model;
-    o.variant = e.variant;
-    o.accommodation_D = e.accommodation;
+    o.model = e.at("model").get<std::string>();
+    o.variant = e.at("variant").get<std::string>();
+    o.accommodation_D = e.at("accommodation_D").get<double>();
     const Prescription p = make_eye(o);
     const ParaxialData d = paraxial_analysis(p);
-    SCOPED_TRACE(std::string(e.model) + " " + e.variant + " A=" + std::to_string(e.accommodation));
-    EXPECT_NEAR(d.power_D, e.power, 0.001);
-    EXPECT_NEAR(d.refraction_D, e.refraction, 0.001);
-    EXPECT_NEAR(d.front_focal_point_mm, e.F, 0.0006);
-    EXPECT_NEAR(d.back_focal_point_mm, e.Fp, 0.0006);
-    EXPECT_NEAR(d.front_principal_point_mm, e.H, 0.0006);
-    EXPECT_NEAR(d.back_principal_point_mm, e.Hp, 0.0006);
-    EXPECT_NEAR(d.front_nodal_point_mm, e.N, 0.0006);
-    EXPECT_NEAR(d.back_nodal_point_mm, e.Np, 0.0006);
-    EXPECT_NEAR(d.entrance_pupil.position_mm, e.ep, 0.0006);
-    EXPECT_NEAR(d.entrance_pupil.magnification, e.ep_mag, 0.0006);
-    EXPECT_NEAR(d.exit_pupil.position_mm, e.xp, 0.0006);
-    EXPECT_NEAR(d.exit_pupil.magnification, e.xp_mag, 0.0006);
-    EXPECT_NEAR(d.entrance_pupil.diameter_mm, 4.0 * e.ep_mag, 0.003);  // default 4 mm pupil
-    EXPECT_NEAR(d.axial_length_mm, e.axial_length, 1e-9);
+    const json& c = e.at("paraxial_computed");
+    auto x = [&c](const char* k) { return c.at(k).get<double>(); };
+    SCOPED_TRACE(o.model + " " + o.variant + " A=" + std::to_string(o.accommodation_D) + " (eye-models.json " +
+                 e.at("source_model_key").get<std::string>() + ")");
+    EXPECT_NEAR(d.power_D, x("power_D"), 0.001);
+    EXPECT_NEAR(d.refraction_D, x("refraction_D"), 0.001);
+    EXPECT_NEAR(d.front_focal_point_mm, x("F"), 0.0006);
+    EXPECT_NEAR(d.back_focal_point_mm, x("Fp"), 0.0006);
+    EXPECT_NEAR(d.front_principal_point_mm, x("H"), 0.0006);
+    EXPECT_NEAR(d.back_principal_point_mm, x("Hp"), 0.0006);
+    EXPECT_NEAR(d.front_nodal_point_mm, x("N"), 0.0006);
+    EXPECT_NEAR(d.back_nodal_point_mm, x("Np"), 0.0006);
+    EXPECT_NEAR(d.entrance_pupil.position_mm, x("entrance_pupil_z"), 0.0006);
+    EXPECT_NEAR(d.entrance_pupil.magnification, x("entrance_pupil_mag"), 0.0006);
+    EXPECT_NEAR(d.exit_pupil.position_mm, x("exit_pupil_z"), 0.0006);
+    EXPECT_NEAR(d.exit_pupil.magnification, x("exit_pupil_mag"), 0.0006);
+    EXPECT_NEAR(d.entrance_pupil.diameter_mm, 4.0 * x("entrance_pupil_mag"), 0.003);  // default 4 mm pupil
+    EXPECT_NEAR(d.axial_length_mm, e.at("axial_length_mm").get<double>(), 1e-9);
   }
 }
 
 TEST(EyePresets, PublishedPowersWithinOneHundredthDioptre) {
-  // Published: AS00 Gullstrand 58.636 / 70.576 D, SCH Le Grand 59.94 D, AS00 Le Grand
-  // accommodated 67.677 D and -7.053 D, AS00 Navarro 60.416 D.
+  // Published (paraxial_reference.json "paraxial_published"): AS00 Gullstrand 58.636 / 70.576 D
+  // and focus at 10.87013 D, SCH Le Grand 59.94 D, AS00 Le Grand accommodated 67.677 D and
+  // -7.053 D, AS00 Navarro 60.416 D.
+  ASSERT_TRUE(paraxial_reference().is_object()) << "cannot read or parse " << kParaxialReference;
   auto power = [](const char* model, double a) {
     EyeOptions o;
     o.model = model;
     o.accommodation_D = a;
     return paraxial_analysis(make_eye(o));
   };
-  EXPECT_NEAR(power("gullstrand", 0).power_D, 58.636, 0.01);
-  EXPECT_NEAR(power("gullstrand", 10.87013).power_D, 70.576, 0.01);
-  EXPECT_NEAR(power("gullstrand", 10.87013).refraction_D, -10.870, 0.01);
-  EXPECT_NEAR(power("legrand", 0).power_D, 59.94, 0.01);
+  EXPECT_NEAR(power("gullstrand", 0).power_D, published("gullstrand_exact_relaxed", "power_D"), 0.01);
+  EXPECT_NEAR(power("gullstrand", 10.87013).power_D, published("gullstrand_exact_accommodated", "power_D"), 0.01);
+  EXPECT_NEAR(power("gullstrand", 10.87013).refraction_D, published("gullstrand_exact_accommodated", "refraction_D"),
+              0.01);
+  EXPECT_NEAR(power("legrand", 0).power_D, published("le_grand", "power_D"), 0.01);
   const ParaxialData lg = power("legrand", 7.0525);
-  EXPECT_NEAR(lg.power_D, 67.677, 0.01);
-  EXPECT_NEAR(lg.refraction_D, -7.053, 0.01);
-  EXPECT_NEAR(power("navarro", 0).power_D, 60.416, 0.01);
+  EXPECT_NEAR(lg.power_D, published("le_grand_accommodated", "power_D"), 0.01);
+  EXPECT_NEAR(lg.refraction_D, published("le_grand_accommodated", "refraction_D"), 0.01);
+  EXPECT_NEAR(power("navarro", 0).power_D, published("navarro", "power_D"), 0.01);
   // SCH's Le Grand entrance and exit pupils.
-  EXPECT_NEAR(power("legrand", 0).entrance_pupil.position_mm, 3.038, 0.001);
-  EXPECT_NEAR(power("legrand", 0).exit_pupil.position_mm, 3.682, 0.001);
+  EXPECT_NEAR(power("legrand", 0).entrance_pupil.position_mm, published("le_grand", "entrance_pupil_z"), 0.001);
+  EXPECT_NEAR(power("legrand", 0).exit_pupil.position_mm, published("le_grand", "exit_pupil_z"), 0.001);
 }
 
 TEST(EyePresets, NavarroAccommodationMatchesTable5c) {
-  // eye-models.md table 5c: D -> power and produced accommodation, axial length held fixed.
-  const double D[] = {0, 1, 2, 3, 4, 5, 6, 8, 10};
-  const double power[] = {60.416, 61.834, 62.947, 63.955, 64.925, 65.891, 66.872, 68.924, 71.145};
-  const double accommodation[] = {0, 1.222, 2.190, 3.071, 3.923, 4.776, 5.646, 7.484, 9.501};
+  // eye-models.md table 5c (paraxial_reference.json "navarro_accommodation"): D -> power and
+  // produced accommodation, axial length held fixed.
+  const json& r = paraxial_reference();
+  ASSERT_TRUE(r.is_object()) << "cannot read or parse " << kParaxialReference;
+  const json& table = r.at("navarro_accommodation");
+  std::vector<std::pair<double, std::string>> rows;  // (D, key), sorted by D
+  for (const auto& [key, value] : table.at("power_D_axial_length_fixed").items())
+    rows.emplace_back(std::stod(key), key);
+  std::sort(rows.begin(), rows.end());
+  ASSERT_EQ(rows.size(), 9u);
+  const double axial_length = reference_preset("navarro").at("axial_length_mm").get<double>();
   double previous = 1e9;
-  for (int i = 0; i < 9; ++i) {
+  for (const auto& [D, key] : rows) {
     EyeOptions o;
     o.model = "navarro";
-    o.accommodation_D = D[i];
+    o.accommodation_D = D;
     const Prescription p = make_eye(o);
     const ParaxialData d = paraxial_analysis(p);
-    EXPECT_NEAR(d.power_D, power[i], 0.01) << "D = " << D[i];
-    EXPECT_NEAR(-d.refraction_D, accommodation[i], 0.01) << "D = " << D[i];
-    EXPECT_LT(d.refraction_D, previous) << "D = " << D[i];
-    EXPECT_NEAR(d.axial_length_mm, 24.00398, 1e-9);
+    EXPECT_NEAR(d.power_D, table.at("power_D_axial_length_fixed").at(key).get<double>(), 0.01) << "D = " << D;
+    EXPECT_NEAR(-d.refraction_D, table.at("paraxial_accommodation_D_axial_length_fixed").at(key).get<double>(), 0.01)
+        << "D = " << D;
+    EXPECT_LT(d.refraction_D, previous) << "D = " << D;
+    EXPECT_NEAR(d.axial_length_mm, axial_length, 1e-9);
     previous = d.refraction_D;
   }
   // Monotonic on a fine grid up to the extrapolated 15 D as well.
@@ -208,8 +236,10 @@ TEST(EyePresets, RefractiveErrorChangesAxialLengthOnly) {
   const ParaxialData d = paraxial_analysis(myope);
   EXPECT_NEAR(d.refraction_D, -2.0, 1e-9);
   EXPECT_NEAR(d.far_point_m, 0.5, 1e-9);
-  EXPECT_GT(d.axial_length_mm, 24.00398 + 0.5);  // about 0.37 mm per dioptre
-  EXPECT_NEAR(d.power_D, 60.4156, 0.001);
+  ASSERT_TRUE(paraxial_reference().is_object()) << "cannot read or parse " << kParaxialReference;
+  const json& navarro = reference_preset("navarro");
+  EXPECT_GT(d.axial_length_mm, navarro.at("axial_length_mm").get<double>() + 0.5);  // about 0.37 mm per dioptre
+  EXPECT_NEAR(d.power_D, navarro.at("paraxial_computed").at("power_D").get<double>(), 0.001);
   o.accommodation_D = 4.0;  // accommodating keeps the myope's axial length
   EXPECT_NEAR(make_eye(o).axial_length_mm(), myope.axial_length_mm(), 1e-9);
   o = {};
