@@ -100,9 +100,8 @@ int print_markdown_params(const std::string& name) {
 }
 
 nlohmann::json param_json(const ParamSpec& p) {
-  nlohmann::json j{{"name", p.name},          {"type", p.type_name()}, {"accepts", p.accepted_types()},
-                   {"array", p.array},        {"unit", p.unit},        {"doc", p.doc},
-                   {"default", p.default_text()}};
+  nlohmann::json j{{"name", p.name}, {"type", p.type_name()}, {"accepts", p.accepted_types()}, {"array", p.array},
+                   {"unit", p.unit}, {"doc", p.doc},          {"default", p.default_text()}};
   if (p.array_size > 0) j["size"] = p.array_size;
   if (p.lo) j["min"] = {{"value", *p.lo}, {"open", p.lo_open}};
   if (p.hi) j["max"] = {{"value", *p.hi}, {"open", p.hi_open}};

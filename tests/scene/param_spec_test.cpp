@@ -13,14 +13,14 @@ namespace eyetrace {
 namespace {
 
 const PluginSpec& spec() {
-  static const PluginSpec s{"Camera",
-                            "a test table",
-                            "—",
-                            {param::real("fov", 90).open_range(0, 180).with_unit("deg"),
-                             param::real("lensradius", 0).at_least(0), param::integer("count", 4).range(1, 8),
-                             param::string("mapping", "angle").in({"angle", "flat", "retina"}),
-                             param::reals("window").size(4), param::point3s("P"), param::spectrum("L", 1),
-                             param::float_texture("roughness", 0).at_least(0), param::real("optional")}};
+  static const PluginSpec s{
+      "Camera",
+      "a test table",
+      "—",
+      {param::real("fov", 90).open_range(0, 180).with_unit("deg"), param::real("lensradius", 0).at_least(0),
+       param::integer("count", 4).range(1, 8), param::string("mapping", "angle").in({"angle", "flat", "retina"}),
+       param::reals("window").size(4), param::point3s("P"), param::spectrum("L", 1),
+       param::float_texture("roughness", 0).at_least(0), param::real("optional")}};
   return s;
 }
 
@@ -65,7 +65,8 @@ TEST(ParamSpec, UnknownNameIsAnErrorWithTheClosestDeclaredName) {
 }
 
 TEST(ParamSpec, TypesAndValueCountsAreChecked) {
-  EXPECT_EQ(only_message({text("string", "fov", "wide")}), "parameter \"fov\" has type \"string\" but must be \"float\"");
+  EXPECT_EQ(only_message({text("string", "fov", "wide")}),
+            "parameter \"fov\" has type \"string\" but must be \"float\"");
   EXPECT_EQ(only_message({number("float", "fov", {1, 2})}), "parameter \"fov\" takes one value, got 2");
   EXPECT_EQ(only_message({number("float", "window", {0, 1, 0})}), "parameter \"window\" takes 4 values, got 3");
   EXPECT_EQ(only_message({number("point3", "P", {0, 1, 0, 1})}), "parameter \"P\" needs a multiple of 3 values, got 4");
@@ -82,15 +83,18 @@ TEST(ParamSpec, RangesHonourOpenAndClosedEnds) {
   EXPECT_EQ(only_message({number("float", "fov", {0})}), "parameter \"fov\": 0 deg is outside (0, 180) deg");
   EXPECT_TRUE(check({number("float", "fov", {179.999})}).empty());
   EXPECT_TRUE(check({number("float", "lensradius", {0})}).empty());
-  EXPECT_EQ(only_message({number("float", "lensradius", {-1e-6})}), "parameter \"lensradius\": -1e-06 is outside [0, inf)");
+  EXPECT_EQ(only_message({number("float", "lensradius", {-1e-6})}),
+            "parameter \"lensradius\": -1e-06 is outside [0, inf)");
   EXPECT_EQ(only_message({number("integer", "count", {9})}), "parameter \"count\": 9 is outside [1, 8]");
   EXPECT_EQ(only_message({number("float", "roughness", {-0.5})}), "parameter \"roughness\": -0.5 is outside [0, inf)");
-  EXPECT_EQ(only_message({number("float", "optional", {1e39})}), "parameter \"optional\" value 1e+39 is out of the float range");
+  EXPECT_EQ(only_message({number("float", "optional", {1e39})}),
+            "parameter \"optional\" value 1e+39 is out of the float range");
 }
 
 TEST(ParamSpec, ChoicesAreCheckedWithAHint) {
-  EXPECT_EQ(only_message({text("string", "mapping", "angel")}),
-            "parameter \"mapping\": \"angel\" is not one of \"angle\", \"flat\" or \"retina\" (did you mean \"angle\"?)");
+  EXPECT_EQ(
+      only_message({text("string", "mapping", "angel")}),
+      "parameter \"mapping\": \"angel\" is not one of \"angle\", \"flat\" or \"retina\" (did you mean \"angle\"?)");
   EXPECT_TRUE(check({text("string", "mapping", "retina")}).empty());
 }
 
