@@ -31,12 +31,6 @@ void ParameterList::fail(const std::string& name, const std::string& message) co
   throw_parameter_error(p ? p->loc : loc_, name, fmt::format("parameter \"{}\": {}", name, message));
 }
 
-void ParameterList::note_query(const std::string& name) const {
-  for (const auto& q : queried_)
-    if (q == name) return;
-  queried_.push_back(name);
-}
-
 // Values are parsed as doubles but used as floats: one beyond the float range would become
 // infinite (a point light at infinity, an infinite radiance) without a word.
 static void check_numbers(const Param& p) {
@@ -47,7 +41,6 @@ static void check_numbers(const Param& p) {
 }
 
 const Param* ParameterList::lookup(const std::string& name, const char* type, size_t min_values) const {
-  note_query(name);
   const Param* p = find(name);
   if (!p) return nullptr;
   std::string t = p->canonical_type();
@@ -111,7 +104,6 @@ Vec3 ParameterList::get_vector3(const std::string& name, const Vec3& def) const 
 }
 
 std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
-  note_query(name);
   const Param* p = find(name);
   if (!p) return std::nullopt;
   std::string t = p->canonical_type();
@@ -129,7 +121,6 @@ std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
 }
 
 float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, float def) const {
-  note_query(name);
   const Param* p = find(name);
   if (!p) return def;
   p->used = true;
@@ -138,7 +129,6 @@ float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, f
 }
 
 std::string ParameterList::get_texture(const std::string& name) const {
-  note_query(name);
   const Param* p = find(name);
   if (!p || p->canonical_type() != "texture") return "";
   lookup(name, "texture", 1);
@@ -190,33 +180,6 @@ std::vector<Vec3> ParameterList::get_normals(const std::string& name) const {
 }
 std::vector<Vec3> ParameterList::get_vector3s(const std::string& name) const {
   return tuples<3, Vec3>(lookup(name, "vector3", 0));
-}
-
-float ParameterList::get_float_in(const std::string& name, float def, float lo, float hi) const {
-  float v = get_float(name, def);
-  if (!(v >= lo && v <= hi)) fail(name, fmt::format("value {} is outside [{}, {}]", v, lo, hi));
-  return v;
-}
-
-int ParameterList::get_int_in(const std::string& name, int def, int lo, int hi) const {
-  int v = get_int(name, def);
-  if (v < lo || v > hi) fail(name, fmt::format("value {} is outside [{}, {}]", v, lo, hi));
-  return v;
-}
-
-// Every unused parameter is reported, not only the first.
-void ParameterList::check_unused(const std::string& directive, const std::vector<std::string>& known) const {
-  std::vector<Diagnostic> unused;
-  for (const auto& p : params_) {
-    if (p.used) continue;
-    std::vector<std::string> names = known;
-    names.insert(names.end(), queried_.begin(), queried_.end());
-    std::string hint = closest_match(p.name, names);
-    unused.push_back(Diagnostic{p.loc, p.name, Severity::Error,
-                                fmt::format("{}: unused parameter \"{} {}\"{}", directive, p.type, p.name,
-                                            hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint))});
-  }
-  if (!unused.empty()) throw SceneError(std::move(unused));
 }
 
 void ParameterList::mark_all_used() const {

@@ -1,6 +1,6 @@
-// A directive's typed parameter list ("float fov" [45], "rgb reflectance" [.5 .5 .5], ...).
-// Every lookup marks the parameter used; check_unused() then reports leftovers as errors,
-// as pbrt-v4 does, so a misspelled parameter never passes silently.
+// A directive's typed parameter list ("float fov" [45], "rgb reflectance" [.5 .5 .5], ...),
+// with typed lookups that mark a parameter used. Plugins read it through PluginParams
+// (scene/param_spec.h), which first checks it against the plugin's declared parameters.
 #pragma once
 #include <optional>
 #include <string>
@@ -57,22 +57,14 @@ class ParameterList {
   std::vector<Vec3> get_normals(const std::string& name) const;
   std::vector<Vec3> get_vector3s(const std::string& name) const;
 
-  // Checked lookups: values outside [lo, hi] or non-finite are errors naming the parameter.
-  float get_float_in(const std::string& name, float def, float lo, float hi) const;
-  int get_int_in(const std::string& name, int def, int lo, int hi) const;
-
   // Errors at a parameter's location (or the directive's if the parameter is absent).
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;
-  // Report every parameter never looked up: "unused parameter "flov" (did you mean "fov"?)".
-  void check_unused(const std::string& directive, const std::vector<std::string>& known = {}) const;
   void mark_all_used() const;
 
  private:
   const Param* lookup(const std::string& name, const char* type, size_t min_values) const;
-  void note_query(const std::string& name) const;
   SourceLoc loc_;
   std::vector<Param> params_;
-  mutable std::vector<std::string> queried_;  // every name a plugin asked for: did-you-mean candidates
 };
 
 }  // namespace eyetrace

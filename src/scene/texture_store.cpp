@@ -89,25 +89,22 @@ const FloatTexture* TextureStore::float_param_or_null(const ParameterList& param
                   fmt::format("texture \"{}\" is a spectrum texture, but \"{}\" needs a float texture", tex, name));
     unknown_texture(params, name, tex, "float", names_of(floats_));
   }
-  if (!params.has(name)) {
-    params.get_float(name, 0.f);  // records the name for "did you mean" hints
-    return nullptr;
-  }
+  if (!params.has(name)) return nullptr;
   return keep(std::make_unique<ConstantFloatTexture>(params.get_float(name, 0.f)));
 }
 
+// Absent: the declared default as a constant texture, or null when the table gives none.
 const FloatTexture* TextureStore::float_param(const PluginParams& params, const std::string& name) {
-  const ParamSpec* spec = params.has(name) ? nullptr : params.spec().find(name);
-  if (spec && !spec->has_default) return nullptr;
-  return spec ? float_param(params.list(), name, float(spec->default_numbers.at(0)))
-              : float_param_or_null(params.list(), name);
+  if (params.has(name)) return float_param_or_null(params.list(), name);
+  const ParamSpec& spec = *params.spec().find(name);  // has() checked that it is declared
+  return spec.has_default ? keep(std::make_unique<ConstantFloatTexture>(float(spec.default_numbers.at(0)))) : nullptr;
 }
 
 const SpectrumTexture* TextureStore::spectrum_param(const PluginParams& params, const std::string& name) {
-  const ParamSpec* spec = params.has(name) ? nullptr : params.spec().find(name);
-  if (spec && !spec->has_default) return nullptr;
-  return spec ? spectrum_param(params.list(), name, RGB(float(spec->default_numbers.at(0))))
-              : spectrum_param_or_null(params.list(), name);
+  if (params.has(name)) return spectrum_param_or_null(params.list(), name);
+  const ParamSpec& spec = *params.spec().find(name);
+  return spec.has_default ? keep(std::make_unique<ConstantSpectrumTexture>(RGB(float(spec.default_numbers.at(0)))))
+                          : nullptr;
 }
 
 const SpectrumTexture* TextureStore::spectrum_param(const ParameterList& params, const std::string& name,

@@ -26,7 +26,6 @@ std::string error_of(const std::string& directive, const std::string& search_dir
       create_eye_camera(ctx);
     else
       create_named_eye_camera(e.name)(ctx);
-    e.params.check_unused("Camera");
   } catch (const SceneError& err) {
     return err.what();
   }
@@ -79,8 +78,8 @@ TEST(EyeParams, ViewParametersAreChecked) {
   EXPECT_TRUE(contains(error_of("Camera \"navarro\" \"string variant\" \"wu2012\""), "parameter \"variant\""));
 }
 
-// A misspelt parameter is never silently ignored: the scene builder's check_unused names it
-// and suggests the parameter the camera asked for.
+// A misspelt parameter is never silently ignored: the camera's parameter check names it and
+// suggests the closest declared parameter.
 TEST(EyeParams, MisspeltParameterIsReportedWithSuggestion) {
   const std::string m = error_of("Camera \"navarro\" \"float pupildiamter\" 3");
   EXPECT_TRUE(contains(m, "pupildiamter") && contains(m, "did you mean \"pupildiameter\"")) << m;

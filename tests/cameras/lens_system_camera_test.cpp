@@ -23,7 +23,6 @@ std::unique_ptr<LensSystemCamera> eye_camera(const std::string& params, IVec2 re
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");
   CameraContext ctx{e.params, Transform(), res, ""};
   std::unique_ptr<Camera> c = create_eye_camera(ctx);
-  e.params.check_unused("Camera");
   return std::unique_ptr<LensSystemCamera>(dynamic_cast<LensSystemCamera*>(c.release()));
 }
 
@@ -255,7 +254,6 @@ TEST(LensSystemCamera, ThinLensFileFocusesLikeThinLensCamera) {
       "Camera", "test");
   CameraContext ctx{e.params, Transform(), IVec2(128, 128), dir};
   std::unique_ptr<Camera> realistic = create_realistic_camera(ctx);
-  e.params.check_unused("Camera");
   auto* lens = dynamic_cast<LensSystemCamera*>(realistic.get());
   ASSERT_TRUE(lens);
   const double track_m = lens->prescription().axial_length_mm() * 1e-3;
@@ -292,7 +290,6 @@ TEST(LensSystemCamera, DoubleGaussLensFile) {
       "Camera", "test");
   CameraContext ctx{e.params, Transform(), IVec2(300, 200), dir};
   std::unique_ptr<Camera> cam = create_realistic_camera(ctx);
-  e.params.check_unused("Camera");
   const Estimate centre = mean_weight(*cam, Vec2(150.f, 100.f), 200, 4);
   EXPECT_NEAR(centre.mean, 1.0, 5.0 * centre.stderr_ + 1e-4);
   std::mt19937 rng(8);

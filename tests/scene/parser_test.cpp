@@ -191,7 +191,7 @@ TEST(ParserFiles, BasicSceneRoundTrips) {
   ASSERT_EQ(d.named_materials.size(), 1u);
   const SceneEntity& gold = d.named_materials.at("gold");
   EXPECT_EQ(gold.name, "conductor");
-  EXPECT_TRUE(param_of(gold.params, "type").used);  // so check_unused does not flag it
+  EXPECT_TRUE(param_of(gold.params, "type").used);  // so the plugin check does not flag it
   EXPECT_EQ(param_of(gold.params, "eta").strings, std::vector<std::string>{"metal-Au-eta"});
 
   // The implicit default material plus one anonymous Material.

@@ -29,7 +29,7 @@ std::unique_ptr<Shape> make_sphere(std::vector<std::pair<std::string, double>> f
                                    bool reverse = false) {
   ParameterList pl = sphere_params(std::move(floats));
   auto shapes = create_sphere_shapes(ShapeContext{pl, t, reverse, ""});
-  EXPECT_NO_THROW(pl.check_unused("Shape \"sphere\""));
+  for (const Param& p : pl.params()) EXPECT_TRUE(p.used) << p.name;
   return std::move(shapes.at(0));
 }
 
