@@ -1,7 +1,9 @@
 // The pbrt-v4 parser on well-formed input: tokens, parameter values, graphics-state
 // semantics and transforms, checked against hand-counted file positions and analytic
 // matrices. Malformed input is covered in parser_errors_test.cpp.
+#include "scene/param_spec.h"
 #include "scene/parser.h"
+#include "shapes/sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -293,7 +295,7 @@ Shape "sphere"
   EXPECT_EQ(d.shapes[1].params.get_float("radius", 1.f), 5.f);  // the directive's own value wins
   EXPECT_FALSE(d.shapes[2].params.has("radius"));               // AttributeEnd dropped it
   // An attribute a plugin never reads is not an unused-parameter error (as in pbrt-v4).
-  EXPECT_NO_THROW(d.shapes[0].params.check_unused("Shape"));
+  EXPECT_NO_THROW(PluginParams(d.shapes[0].params, sphere_shape_spec(), "sphere"));
   EXPECT_EQ(d.lights.at(0).params.get_float("scale", 1.f), 4.f);
   EXPECT_EQ(d.materials.back().params.get_float("roughness", 0.f), 0.25f);
 }
