@@ -1,8 +1,8 @@
 // The pbrt-v4 parser on well-formed input: tokens, parameter values, graphics-state
 // semantics and transforms, checked against hand-counted file positions and analytic
 // matrices. Malformed input is covered in parser_errors_test.cpp.
-#include "scene/param_spec.h"
 #include "scene/parser.h"
+#include "scene/param_spec.h"
 #include "shapes/sphere.h"
 
 #include <gtest/gtest.h>
