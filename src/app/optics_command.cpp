@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "cameras/eye_params.h"
 #include "cameras/lens_system_camera.h"
 #include "optics/optics_error.h"
 #include "optics/report.h"
@@ -56,16 +55,12 @@ double parse_distance(const std::string& text) {
   return v;
 }
 
-// The prescription of the --camera directive. Its view parameters (fov, mapping, ...) are read
-// too; both check the directive against the camera's declared parameters, as render does.
+// The prescription of the --camera directive. Reading it checks every parameter of the
+// directive (view parameters such as fov and mapping too) against the camera's declared ones,
+// as render does.
 optics::Prescription camera_prescription(const std::string& text) {
   SceneEntity e = parse_directive_text(text, "Camera", "--camera");
-  optics::Prescription p = prescription_from_camera_params(e.name, e.params, ".");
-  if (e.name == "realistic")
-    realistic_view_settings(e.params, IVec2(1, 1));
-  else
-    eye_view_settings(e.name, e.params);
-  return p;
+  return prescription_from_camera_params(e.name, e.params, ".");
 }
 
 // The spot diagram: one panel per field, converted to the linear image write_image expects.

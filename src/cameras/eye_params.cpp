@@ -86,9 +86,6 @@ PluginSpec make_eye_spec(bool with_model) {
                     std::move(params), "[eye-camera.md](eye-camera.md#parameters-of-the-eye-cameras)"};
 }
 
-// A float parameter in full double precision.
-double get_double(const PluginParams& p, const std::string& name) { return p.get_double(name); }
-
 bool has_curved_retina(const optics::EyeOptions& o) {
   optics::EyeOptions relaxed = o;
   relaxed.accommodation_D = 0.0;
@@ -100,7 +97,7 @@ bool has_curved_retina(const optics::EyeOptions& o) {
 void read_retina(const PluginParams& params, optics::EyeOptions& o) {
   const std::string shape = params.has("retina") ? params.get_string("retina") : "";
   if (params.has("retinaradius")) {
-    const double r = get_double(params, "retinaradius");
+    const double r = params.get_double("retinaradius");
     if (std::abs(r) < 1.0 || std::abs(r) > 1000.0)
       params.fail("retinaradius", fmt::format("{} mm is not a retina radius; give its magnitude in [1, 1000] mm "
                                               "(the retina always curves towards the lens)",
@@ -153,10 +150,10 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
   optics::EyeOptions o;
   o.model = camera_name == "eye" ? params.get_string("model") : camera_name;
   o.variant = params.get_string("variant");
-  o.accommodation_D = get_double(params, "accommodation");
-  o.pupil_diameter_mm = get_double(params, "pupildiameter");
-  o.refractive_error_D = get_double(params, "refractiveerror");
-  o.wavelength_nm = params.has("wavelength") ? get_double(params, "wavelength") : 0.0;
+  o.accommodation_D = params.get_double("accommodation");
+  o.pupil_diameter_mm = params.get_double("pupildiameter");
+  o.refractive_error_D = params.get_double("refractiveerror");
+  o.wavelength_nm = params.has("wavelength") ? params.get_double("wavelength") : 0.0;
   try {
     optics::eye_model_variants(o.model);  // unknown model first, before anything depends on it
     read_retina(params, o);
@@ -172,9 +169,9 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
   const PluginParams params(list, eye_camera_spec(camera_name), camera_name);
   LensSystemCamera::Settings s;
   s.name = camera_name;
-  s.fov_deg = get_double(params, "fov");
+  s.fov_deg = params.get_double("fov");
   parse_field_mapping(params.get_string("mapping"), &s.mapping);  // the table admits only known names
-  s.scene_units_per_mm = 1e-3 / get_double(params, "sceneunit");
+  s.scene_units_per_mm = 1e-3 / params.get_double("sceneunit");
   return s;
 }
 
@@ -182,8 +179,8 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& lis
   const PluginParams params(list, realistic_spec(), "realistic");
   if (!params.has("lensfile")) params.fail("lensfile", "the realistic camera needs a lens file (\"string lensfile\")");
   const std::string file = params.get_string("lensfile");
-  const double aperture = get_double(params, "aperturediameter");
-  const double focus_m = get_double(params, "focusdistance");
+  const double aperture = params.get_double("aperturediameter");
+  const double focus_m = params.get_double("focusdistance");
   std::filesystem::path path(resolve_scene_file(search_dir, file));
 
   optics::Prescription p;
@@ -223,7 +220,7 @@ LensSystemCamera::Settings realistic_view_settings(const ParameterList& list, IV
   LensSystemCamera::Settings s;
   s.name = "realistic";
   s.mapping = FieldMapping::Flat;
-  const double diagonal = get_double(params, "filmdiagonal");
+  const double diagonal = params.get_double("filmdiagonal");
   const double pixels = std::sqrt(double(resolution.x) * resolution.x + double(resolution.y) * resolution.y);
   s.film_half_mm = 0.5 * std::min(resolution.x, resolution.y) * diagonal / pixels;
   s.scene_units_per_mm = 1e-3;  // pbrt: scene units are metres

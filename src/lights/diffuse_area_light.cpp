@@ -82,7 +82,8 @@ std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   const std::string filename = params.has("filename") ? params.get_string("filename") : "";
 
   std::optional<RGBImage> image;
-  RGB mean_emission = L.value_or(params.get_rgb("L"));
+  const RGB emission = L ? *L : params.get_rgb("L");  // absent: the declared default
+  RGB mean_emission = emission;
   if (!filename.empty()) {
     if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
     std::string path = resolve_scene_file(ctx.search_dir, filename);
@@ -95,8 +96,7 @@ std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   }
   float k_e = (two_sided ? 2.f : 1.f) * kPi * ctx.shape.area() * luminance(mean_emission);
   scale *= photometric_factor(phi, k_e);
-  return std::make_unique<DiffuseAreaLight>(ctx.shape, L.value_or(params.get_rgb("L")), scale, two_sided,
-                                            std::move(image));
+  return std::make_unique<DiffuseAreaLight>(ctx.shape, emission, scale, two_sided, std::move(image));
 }
 
 }  // namespace eyetrace

@@ -129,7 +129,7 @@ std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
     params.warn_param("portal", "portals are not supported by eyetrace; the whole environment is sampled");
 
   if (filename.empty()) {
-    RGB Lc = L.value_or(params.get_rgb("L"));
+    const RGB Lc = L ? *L : params.get_rgb("L");  // absent: the declared default
     scale *= photometric_factor(E, kPi * luminance(Lc));
     return std::make_unique<UniformInfiniteLight>(Lc * scale);
   }

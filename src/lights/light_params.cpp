@@ -23,7 +23,8 @@ std::optional<RGB> emission_param_or_null(const PluginParams& params, const std:
 }
 
 RGB emission_param(const PluginParams& params, const std::string& name) {
-  return emission_param_or_null(params, name).value_or(params.get_rgb(name));
+  const std::optional<RGB> given = emission_param_or_null(params, name);
+  return given ? *given : params.get_rgb(name);  // absent: the declared default
 }
 
 float scale_param(const PluginParams& params) { return params.get_float("scale"); }
