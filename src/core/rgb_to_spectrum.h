@@ -29,8 +29,10 @@ struct SigmoidPolynomial {
   // between them (S is increasing, so s peaks where the polynomial does).
   float max_value() const {
     float m = std::max((*this)(360.f), (*this)(830.f));
-    float vertex = -c1 / (2.f * c0);  // NaN or infinite when c0 = 0: the test below fails
-    if (vertex >= 360.f && vertex <= 830.f) m = std::max(m, (*this)(vertex));
+    if (c0 != 0.f) {
+      float vertex = -c1 / (2.f * c0);  // NaN (never in range) if c0 and c1 are infinite
+      if (vertex >= 360.f && vertex <= 830.f) m = std::max(m, (*this)(vertex));
+    }
     return m;
   }
 };
