@@ -185,14 +185,15 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending,
                    static_cast<float>(weight)};
 }
 
-std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs) const {
+std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, SampledWavelengths&) const {
   PendingRay pending;
   if (!start_ray(cs, &pending)) return std::nullopt;
   return finish_ray(pending, system_.trace_range(pending.ray, system_.image_index() - 1, 0), cs.time);
 }
 
 // Bit-identical to generate_ray per sample; the batch trace overlaps the rays' latency chains.
-void LensSystemCamera::generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const {
+void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelengths*, std::optional<CameraRay>* rays,
+                                     size_t count) const {
   constexpr size_t kBatch = 16;
   PendingRay pending[kBatch];
   optics::Ray traced[kBatch];

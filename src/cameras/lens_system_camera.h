@@ -44,8 +44,11 @@ class LensSystemCamera : public Camera {
   LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera, IVec2 resolution,
                    const Settings& settings);
 
-  std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
-  void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const override;
+  std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;
+  void generate_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
+                     size_t count) const override;
+  using Camera::generate_ray;
+  using Camera::generate_rays;
   std::string to_string() const override;
 
   // --- For tests and tools ---------------------------------------------------------------

@@ -25,7 +25,7 @@ Vec3 PerspectiveCamera::camera_direction(Vec2 p) const {
   return Vec3(sx * tan_half_fov_, sy * tan_half_fov_, 1.f);
 }
 
-std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs) const {
+std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs, SampledWavelengths&) const {
   Vec3 dir = glm::normalize(camera_direction(cs.p_film));
   Vec3 origin(0.f);
   if (s_.lens_radius > 0.f) {

@@ -17,7 +17,8 @@ class PerspectiveCamera : public Camera {
     float focal_distance = 1e6f;  // scene units, along the camera's z axis
   };
   PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s);
-  std::optional<CameraRay> generate_ray(const CameraSample& sample) const override;
+  std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;
+  using Camera::generate_ray;
   std::string to_string() const override;
   // Camera-space direction (not normalised, z = 1) through a raster position.
   Vec3 camera_direction(Vec2 p_raster) const;

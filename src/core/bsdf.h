@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/math.h"
+#include "core/sampled_spectrum.h"
 
 namespace eyetrace {
 
@@ -17,7 +18,7 @@ enum BxDFFlags : unsigned {
 };
 
 struct BSDFSample {
-  RGB f{0.f};
+  SampledSpectrum f{0.f};
   Vec3 wi{0.f};
   float pdf = 0.f;
   unsigned flags = 0;
@@ -28,13 +29,11 @@ struct BSDFSample {
 class BSDF {
  public:
   virtual ~BSDF() = default;
-  virtual RGB f(const Vec3& wo, const Vec3& wi) const = 0;
+  virtual SampledSpectrum f(const Vec3& wo, const Vec3& wi) const = 0;
   // uc: 1D sample to choose a lobe; u: 2D sample for the direction.
   virtual std::optional<BSDFSample> sample_f(const Vec3& wo, float uc, Vec2 u) const = 0;
   virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
   virtual unsigned flags() const = 0;
-  // Directional albedo estimate for albedo/AOV integrators (may be approximate).
-  virtual RGB albedo() const = 0;
 };
 
 }  // namespace eyetrace

@@ -1,20 +1,24 @@
-// Camera interface: a camera turns a CameraSample into an optional world-space ray and a
-// weight. An empty optional is a ray the camera lost (vignetted, stopped by the iris, totally
-// reflected inside a lens): the film counts it, it is not a magic zero radiance.
+// Camera interface: a camera turns a CameraSample and the sample's wavelengths into an
+// optional world-space ray and a weight. A camera whose optics disperse traces the hero
+// wavelength and terminates the others (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera
+// lost (vignetted, stopped by the iris, totally reflected inside a lens): the film counts it, it is not a magic zero
+// radiance.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
 
 #include "core/math.h"
 #include "core/ray.h"
+#include "core/sampled_spectrum.h"
 
 namespace eyetrace {
 
 struct CameraSample {
   Vec2 p_film{0.f};           // continuous raster position on the full film, in pixels
   Vec2 p_lens{0.5f};          // [0,1)^2 sample of the lens / pupil
-  float wavelength_u = 0.5f;  // [0,1) sample for spectral cameras (unused by RGB cameras)
+  float wavelength_u = 0.5f;  // [0,1) sample that picked the wavelengths
   float time = 0.f;
   float filter_weight = 1.f;
 };
@@ -29,13 +33,30 @@ struct CameraRay {
 class Camera {
  public:
   virtual ~Camera() = default;
-  virtual std::optional<CameraRay> generate_ray(const CameraSample& sample) const = 0;
-  // The same for `count` samples: rays[i] equals generate_ray(samples[i]) bit for bit. Lens
-  // cameras override it to trace several rays at once (their trace is latency-bound).
-  virtual void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const {
-    for (size_t i = 0; i < count; ++i) rays[i] = generate_ray(samples[i]);
+  virtual std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const = 0;
+  // The same for `count` samples: rays[i] equals generate_ray(samples[i], lambdas[i]) bit for
+  // bit. Lens cameras override it to trace several rays at once (their trace is latency-bound).
+  virtual void generate_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
+                             size_t count) const {
+    for (size_t i = 0; i < count; ++i) rays[i] = generate_ray(samples[i], lambdas[i]);
+  }
+  // At the wavelengths the sample's own wavelength_u picks (tools, tests and benchmarks).
+  std::optional<CameraRay> generate_ray(const CameraSample& sample) const {
+    SampledWavelengths lambda = SampledWavelengths::sample_visible(sample.wavelength_u);
+    return generate_ray(sample, lambda);
+  }
+  void generate_rays(const CameraSample* samples, std::optional<CameraRay>* rays, size_t count) const {
+    for (size_t i = 0; i < count; i += kBatch) {
+      const size_t n = std::min(kBatch, count - i);
+      SampledWavelengths lambdas[kBatch];
+      for (size_t j = 0; j < n; ++j) lambdas[j] = SampledWavelengths::sample_visible(samples[i + j].wavelength_u);
+      generate_rays(samples + i, lambdas, rays + i, n);
+    }
   }
   virtual std::string to_string() const = 0;
+
+ private:
+  static constexpr size_t kBatch = 64;
 };
 
 }  // namespace eyetrace

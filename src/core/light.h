@@ -6,6 +6,7 @@
 
 #include "core/interaction.h"
 #include "core/ray.h"
+#include "core/spectrum.h"
 
 namespace eyetrace {
 
@@ -15,10 +16,10 @@ struct LightSampleContext {
 };
 
 struct LightLiSample {
-  RGB L{0.f};         // incident radiance arriving at ctx.p from the light
-  Vec3 wi{0.f};       // unit direction from ctx.p towards the light
-  float pdf = 0.f;    // solid-angle density (1 for delta lights: a discrete choice)
-  Vec3 p_light{0.f};  // point on the light, for the shadow ray (far away for distant/infinite)
+  SampledSpectrum L{0.f};  // incident radiance arriving at ctx.p from the light
+  Vec3 wi{0.f};            // unit direction from ctx.p towards the light
+  float pdf = 0.f;         // solid-angle density (1 for delta lights: a discrete choice)
+  Vec3 p_light{0.f};       // point on the light, for the shadow ray (far away for distant/infinite)
   Vec3 n_light{0.f};
   Vec3 p_light_error{0.f};  // rounding-error bound of p_light (area lights; zero for the others)
 };
@@ -26,14 +27,17 @@ struct LightLiSample {
 class Light {
  public:
   virtual ~Light() = default;
-  virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const = 0;
+  virtual std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                                 const SampledWavelengths& lambda) const = 0;
   // Density of sample_li choosing direction wi; `hit` is the point where the ray along wi
   // met this (area) light, null for infinite lights. Zero for delta lights.
   virtual float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const = 0;
   // Area lights: radiance leaving surface point `hit` in direction w.
-  virtual RGB L(const SurfaceInteraction& hit, const Vec3& w) const { return RGB(0.f); }
+  virtual SampledSpectrum L(const SurfaceInteraction& hit, const Vec3& w, const SampledWavelengths& lambda) const {
+    return SampledSpectrum(0.f);
+  }
   // Infinite lights: radiance carried by a ray that leaves the scene.
-  virtual RGB Le(const Ray& ray) const { return RGB(0.f); }
+  virtual SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const { return SampledSpectrum(0.f); }
   virtual bool is_delta() const = 0;
   virtual bool is_infinite() const { return false; }
   // Total emitted power (or a proportional estimate), for choosing lights proportionally.

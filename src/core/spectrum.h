@@ -1,45 +1,102 @@
-// Spectra turned into the renderer's RGB (linear sRGB: Rec.709 primaries, D65 white).
-// The renderer is RGB, so every spectral parameter becomes one colour when the scene is
-// built; scene parameters come in through scene/spectrum_param.h.
+// Spectra: what a scene's colours and spectral parameters become (Spectrum, a function of
+// wavelength), and the colorimetry that turns sampled radiance back into colour (CIE 1931
+// XYZ, then linear sRGB: Rec.709 primaries, D65 white).
 //
-// Two conversions, because a spectrum means different things:
-//  - reflectance-like (reflectances, conductor eta and k, [lambda value] pairs): the colour
-//    of the spectrum seen under the colour space's white (D65), normalised per channel so
-//    that any constant spectrum c gives exactly (c, c, c);
-//  - emission (blackbody, stdillum-*): the XYZ of the spectrum itself, normalised to
-//    luminance Y = 1. pbrt-v4 divides every light's spectrum by its photometric value, so a
-//    blackbody emitter renders at 1 nit times "scale"; returning luminance 1 here gives that
-//    result whether or not the light also normalises.
+// An RGB value means different things by use (pbrt-v4's SpectrumType):
+//  - Albedo: a reflectance in [0, 1]: Jakob & Hanika's smooth bounded spectrum
+//    (core/rgb_to_spectrum.h), which under the colour space's white renders as that RGB;
+//  - Unbounded: any non-negative value (conductor eta and k): the same shape scaled;
+//  - Illuminant: an emission: the unbounded spectrum times the colour space's white (D65)
+//    normalised to luminance 1, so "rgb L [1 1 1]" emits D65 of luminance 1.
+// Emission given as a spectrum (blackbody, named illuminants, [lambda value] pairs) is
+// normalised to luminance 1, as pbrt-v4 normalises lights to 1 nit times "scale"; a constant
+// c used as an emission is c times the normalised white, like "rgb L [c c c]".
 #pragma once
 #include <array>
+#include <memory>
+#include <optional>
 #include <span>
+#include <vector>
 
 #include "core/cie_tables.h"
 #include "core/math.h"
 #include "core/named_spectra.h"
+#include "core/rgb_to_spectrum.h"
+#include "core/sampled_spectrum.h"
 
 namespace eyetrace {
 
-// A spectrum sampled at the CIE table's wavelengths (380..780 nm every 5 nm).
-using SpectrumSamples = std::array<float, kCieRows>;
+enum class SpectrumType { Albedo, Unbounded, Illuminant };
 
-// Piecewise-linear spectrum through (lambda, value) points, held constant beyond its ends
-// (as pbrt-v3 did; pbrt-v4 drops to zero there, which tints short tables).
-SpectrumSamples sample_spectrum(std::span<const float> lambda_nm, std::span<const float> values);
+class Spectrum {
+ public:
+  Spectrum() = default;  // zero everywhere
+  static Spectrum constant(float c);
+  // `rgb` must be in [0, 1] for Albedo (callers clamp or reject) and non-negative otherwise.
+  static Spectrum from_rgb(const RGB& rgb, SpectrumType type);
+  // Piecewise linear through (lambda, value), constant beyond the ends; Illuminant: luminance 1.
+  static Spectrum tabulated(std::vector<float> lambda_nm, std::vector<float> values, SpectrumType type);
+  static Spectrum blackbody(float kelvin);  // luminance 1
+  static Spectrum named(const NamedSpectrum& n, SpectrumType type);
 
-// CIE 1931 XYZ to linear sRGB (IEC 61966-2-1 primaries and D65 white).
+  float operator()(float lambda_nm) const { return scale_ * shape(lambda_nm); }
+  SampledSpectrum sample(const SampledWavelengths& lambda) const {
+    SampledSpectrum s;
+    for (int i = 0; i < kSpectrumSamples; ++i) s[i] = (*this)(lambda[i]);
+    return s;
+  }
+  Spectrum scaled(float s) const {
+    Spectrum r = *this;
+    r.scale_ *= s;
+    return r;
+  }
+  // The spectrum's colour: Albedo/Unbounded as a reflectance seen under the white (a constant c
+  // gives (c, c, c)), Illuminant as the emitted colour (luminance = its Y).
+  RGB to_rgb(SpectrumType type) const;
+  float luminance() const;  // Y of the spectrum as an emission (the film's Y)
+
+ private:
+  enum class Kind { Zero, Constant, Sigmoid, SigmoidTimesWhite, Table, Blackbody };
+  float shape(float lambda_nm) const;
+  Kind kind_ = Kind::Zero;
+  float scale_ = 1.f;
+  SigmoidPolynomial poly_;
+  float kelvin_ = 0.f;
+  std::shared_ptr<const std::vector<float>> lambda_, values_;
+};
+
+// A spectral parameter as the scene gave it, until its use is known.
+struct SpectrumValue {
+  std::optional<RGB> rgb;  // "rgb" values, and constant spectra c as (c, c, c)
+  Spectrum spectrum;       // otherwise: pairs, a named spectrum or a blackbody
+
+  Spectrum as(SpectrumType type) const { return rgb ? Spectrum::from_rgb(*rgb, type) : spectrum; }
+  // The colour it stands for: the RGB itself, or the spectrum's (core/spectrum.h: to_rgb).
+  RGB to_rgb(SpectrumType type) const { return rgb ? *rgb : spectrum.to_rgb(type); }
+};
+
+// --- Colorimetry ---------------------------------------------------------------------------
+// CIE 1931 colour matching functions, linear between the table's 5 nm rows, 0 outside them.
+Vec3 cie_xyz_bar(float lambda_nm);
+// The integral of the interpolated y-bar over wavelength (nm): Y of the constant spectrum 1.
+float cie_y_integral();
+// The colour space's white (D65) as an emission of luminance 1, at lambda.
+float white_illuminant(float lambda_nm);
+// Monte Carlo estimate of XYZ (luminance scale: the constant spectrum 1 has Y = 1) from
+// radiance at sampled wavelengths; terminated wavelengths (pdf 0) count for nothing.
+Vec3 sampled_to_xyz(const SampledSpectrum& L, const SampledWavelengths& lambda);
+// CIE 1931 XYZ to linear sRGB, scaled per channel so that the white illuminant above gives
+// exactly (1, 1, 1) (its 5 nm tabulation sits 1e-4 off the nominal D65 white point).
 RGB xyz_to_linear_srgb(const Vec3& xyz);
+RGB sampled_to_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda);
+
+// A spectrum sampled at the CIE table's wavelengths (380..780 nm every 5 nm), for exact sums.
+using SpectrumSamples = std::array<float, kCieRows>;
 // XYZ of an emission spectrum, scaled so that the equal-energy spectrum 1 has Y = 1.
 Vec3 spectrum_to_xyz(const SpectrumSamples& s);
-RGB reflectance_spectrum_to_rgb(const SpectrumSamples& s);
-RGB emission_spectrum_to_rgb(const SpectrumSamples& s);  // luminance 1 (black stays black)
-// Planck's law at `kelvin`, as an emitter of luminance 1.
-RGB blackbody_to_rgb(float kelvin);
-
 // Piecewise linear through (lambda, value) points, constant beyond the ends.
 float interpolate_spectrum(std::span<const float> lambda_nm, std::span<const float> values, float l_nm);
-// A named spectrum's colour: glasses their index at 550 nm, metals as reflectance-like,
-// illuminants as emission.
-RGB named_spectrum_to_rgb(const NamedSpectrum& n);
+// Planck's law (W sr^-1 m^-3), for blackbody emitters.
+double planck(double lambda_nm, double kelvin);
 
 }  // namespace eyetrace

@@ -21,34 +21,36 @@ std::string PathIntegrator::to_string() const {
                      scene_.lights().size());
 }
 
-RGB PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, Sampler& sampler,
-                                  RayTally& tally) const {
+SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf,
+                                              const SampledWavelengths& lambda, Sampler& sampler,
+                                              RayTally& tally) const {
   float u_light = sampler.get_1d();
   Vec2 u = sampler.get_2d();
   float pmf = 0.f;
   // A sample that cannot contribute costs no shadow ray.
   auto skip = [&] {
     ++tally.shadow_rays_skipped;
-    return RGB(0.f);
+    return SampledSpectrum(0.f);
   };
   const Light* light = lights_.sample(u_light, &pmf);
   if (!light || pmf == 0.f) return skip();
   LightSampleContext ctx{si.p, si.n};
-  std::optional<LightLiSample> ls = light->sample_li(ctx, u);
+  std::optional<LightLiSample> ls = light->sample_li(ctx, u, lambda);
   if (!ls || ls->pdf <= 0.f || is_black(ls->L)) return skip();
-  RGB f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
+  SampledSpectrum f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
   if (is_black(f)) return skip();
   ++tally.rays;
   ++tally.shadow_rays;
-  if (scene_.occluded(spawn_ray_to(si, ls->p_light, ls->p_light_error, ls->n_light))) return RGB(0.f);
+  if (scene_.occluded(spawn_ray_to(si, ls->p_light, ls->p_light_error, ls->n_light))) return SampledSpectrum(0.f);
   float light_pdf = pmf * ls->pdf;
   if (light->is_delta()) return f * ls->L / light_pdf;
   float w = power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi));
   return w * f * ls->L / light_pdf;
 }
 
-RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const {
-  RGB L(0.f), beta(1.f);
+SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
+                                         ScratchBuffer& arena, RayTally& tally) const {
+  SampledSpectrum L(0.f), beta(1.f);
   Ray ray = camera_ray;
   bool specular_bounce = false;
   float prev_bsdf_pdf = 0.f;
@@ -61,7 +63,7 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     ++tally.rays;
     bool hit = scene_.intersect(ray, &si);
     // Emission seen by the BSDF-sampled ray, weighted against light sampling (MIS).
-    auto add_emission = [&](const Light* light, const RGB& Le, const SurfaceInteraction* at) {
+    auto add_emission = [&](const Light* light, const SampledSpectrum& Le, const SurfaceInteraction* at) {
       if (is_black(Le)) return;
       if (depth == 0 || specular_bounce) {
         L += beta * Le;
@@ -71,18 +73,18 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
       L += beta * Le * power_heuristic(prev_bsdf_pdf, light_pdf);
     };
     if (!hit) {
-      for (const Light* light : scene_.infinite_lights()) add_emission(light, light->Le(ray), nullptr);
+      for (const Light* light : scene_.infinite_lights()) add_emission(light, light->Le(ray, lambda), nullptr);
       break;
     }
-    if (si.area_light) add_emission(si.area_light, si.area_light->L(si, -ray.d), &si);
-    const BSDF* bsdf = si.material ? si.material->bsdf(si, arena) : nullptr;
+    if (si.area_light) add_emission(si.area_light, si.area_light->L(si, -ray.d, lambda), &si);
+    const BSDF* bsdf = si.material ? si.material->bsdf(si, lambda, arena) : nullptr;
     if (!bsdf) {
       ray = spawn_ray(si, ray.d);
       continue;
     }
     if (depth++ == max_depth_) break;
     if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy)))
-      L += beta * sample_direct(si, *bsdf, sampler, tally);
+      L += beta * sample_direct(si, *bsdf, lambda, sampler, tally);
     else
       ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
     // The next ray could only add emission it finds, and there is none to find.
@@ -98,7 +100,8 @@ RGB PathIntegrator::radiance(const Ray& camera_ray, Sampler& sampler, ScratchBuf
     ray = spawn_ray(si, bs->wi);
     if (!is_finite(beta)) break;
     // Russian roulette once the path has some length; unbiased (survivors are reweighted).
-    float q = max_component(beta);
+    // Judged on the wavelengths still carried (a terminated one's beta no longer matters).
+    float q = lambda.secondary_terminated() ? beta[0] : max_component(beta);
     if (depth > 1 && q < 1.f) {
       if (sampler.get_1d() >= q) break;
       beta /= q;

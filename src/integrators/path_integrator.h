@@ -14,12 +14,14 @@ class BSDF;
 class PathIntegrator : public Integrator {
  public:
   PathIntegrator(const Scene& scene, int max_depth, std::string name);
-  RGB radiance(const Ray& ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const override;
+  SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
+                           RayTally& tally) const override;
   std::string to_string() const override;
 
  private:
   // Light sampling at a surface hit: one light, one shadow ray, MIS-weighted.
-  RGB sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, Sampler& sampler, RayTally& tally) const;
+  SampledSpectrum sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
+                                Sampler& sampler, RayTally& tally) const;
   int max_depth_;
   std::string name_;
   PowerLightSampler lights_;

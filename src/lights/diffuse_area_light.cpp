@@ -5,19 +5,40 @@
 
 namespace eyetrace {
 
-DiffuseAreaLight::DiffuseAreaLight(const Shape& shape, const RGB& L, float scale, bool two_sided,
-                                   std::optional<RGBImage> image)
-    : shape_(shape), L_(L), scale_(scale), two_sided_(two_sided), image_(std::move(image)), area_(shape.area()) {}
+namespace {
 
-RGB DiffuseAreaLight::emitted(const Vec3& n, Vec2 uv, const Vec3& w) const {
-  if (!two_sided_ && glm::dot(n, w) <= 0.f) return RGB(0.f);
-  if (image_) return scale_ * image_->bilerp(Vec2(uv.x, 1.f - uv.y));
-  return scale_ * L_;
+RGB mean_pixel(const RGBImage& image) {
+  RGB sum(0.f);
+  for (const RGB& p : image.pixels) sum += p;
+  return sum / float(image.pixels.size());
 }
 
-RGB DiffuseAreaLight::L(const SurfaceInteraction& hit, const Vec3& w) const { return emitted(hit.n, hit.uv, w); }
+}  // namespace
 
-std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
+DiffuseAreaLight::DiffuseAreaLight(const Shape& shape, const Spectrum& L, float scale, bool two_sided,
+                                   std::optional<RGBImage> image)
+    : shape_(shape),
+      L_(L),
+      scale_(scale),
+      two_sided_(two_sided),
+      image_(std::move(image)),
+      area_(shape.area()),
+      mean_(image_ ? channel_mean(mean_pixel(*image_)) : channel_mean(L)) {}
+
+SampledSpectrum DiffuseAreaLight::emitted(const Vec3& n, Vec2 uv, const Vec3& w,
+                                          const SampledWavelengths& lambda) const {
+  if (!two_sided_ && glm::dot(n, w) <= 0.f) return SampledSpectrum(0.f);
+  if (image_) return scale_ * rgb_emission(image_->bilerp(Vec2(uv.x, 1.f - uv.y)), lambda);
+  return scale_ * L_.sample(lambda);
+}
+
+SampledSpectrum DiffuseAreaLight::L(const SurfaceInteraction& hit, const Vec3& w,
+                                    const SampledWavelengths& lambda) const {
+  return emitted(hit.n, hit.uv, w, lambda);
+}
+
+std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Vec2 u,
+                                                         const SampledWavelengths& lambda) const {
   ShapeSample ss = shape_.sample_area(u);
   Vec3 d = ss.p - ctx.p;
   float dist2 = glm::dot(d, d);
@@ -27,7 +48,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
   float cos_light = std::abs(glm::dot(ss.n, wi));
   if (!(cos_light > 0.f)) return std::nullopt;
   float pdf = ss.pdf_area * dist2 / cos_light;
-  RGB Le = emitted(ss.n, ss.uv, -wi);
+  SampledSpectrum Le = emitted(ss.n, ss.uv, -wi, lambda);
   if (!std::isfinite(pdf) || is_black(Le)) return std::nullopt;
   LightLiSample s;
   s.L = Le;
@@ -51,15 +72,7 @@ float DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, const Vec3&, const
   return std::isfinite(pdf) ? pdf : 0.f;
 }
 
-float DiffuseAreaLight::power() const {
-  RGB L = L_;
-  if (image_) {
-    RGB sum(0.f);
-    for (const RGB& p : image_->pixels) sum += p;
-    L = sum / float(image_->pixels.size());
-  }
-  return (two_sided_ ? 2.f : 1.f) * kPi * std::max(area_, 0.f) * scale_ * channel_mean(L);
-}
+float DiffuseAreaLight::power() const { return (two_sided_ ? 2.f : 1.f) * kPi * std::max(area_, 0.f) * scale_ * mean_; }
 
 const PluginSpec& diffuse_area_light_spec() {
   static const PluginSpec spec{
@@ -75,26 +88,24 @@ const PluginSpec& diffuse_area_light_spec() {
 
 std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   const PluginParams params(ctx.params, diffuse_area_light_spec(), "diffuse");
-  std::optional<RGB> L = emission_param_or_null(params, "L");
+  std::optional<Spectrum> L = emission_param_or_null(params, "L");
   float scale = scale_param(params);
   bool two_sided = params.get_bool("twosided");
   std::optional<float> phi = photometric_param(params, "power");
   const std::string filename = params.has("filename") ? params.get_string("filename") : "";
 
   std::optional<RGBImage> image;
-  const RGB emission = L ? *L : params.get_rgb("L");  // absent: the declared default
-  RGB mean_emission = emission;
+  const Spectrum emission = L ? *L : emission_param(params, "L");  // absent: the declared default
+  float luminance_emitted = emission.luminance();
   if (!filename.empty()) {
     if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
     std::string path = resolve_scene_file(ctx.search_dir, filename);
     std::string error;
     image = read_rgb_image(path, &error);
     if (!image) params.fail("filename", fmt::format("cannot read emission image \"{}\": {}", path, error));
-    RGB sum(0.f);
-    for (const RGB& p : image->pixels) sum += p;
-    mean_emission = sum / float(image->pixels.size());
+    luminance_emitted = luminance(mean_pixel(*image));
   }
-  float k_e = (two_sided ? 2.f : 1.f) * kPi * ctx.shape.area() * luminance(mean_emission);
+  float k_e = (two_sided ? 2.f : 1.f) * kPi * ctx.shape.area() * luminance_emitted;
   scale *= photometric_factor(phi, k_e);
   return std::make_unique<DiffuseAreaLight>(ctx.shape, emission, scale, two_sided, std::move(image));
 }

@@ -26,12 +26,13 @@ namespace eyetrace {
 class DiffuseAreaLight : public Light {
  public:
   // `scale` multiplies L or the image.
-  DiffuseAreaLight(const Shape& shape, const RGB& L, float scale, bool two_sided,
+  DiffuseAreaLight(const Shape& shape, const Spectrum& L, float scale, bool two_sided,
                    std::optional<RGBImage> image = std::nullopt);
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
-  RGB L(const SurfaceInteraction& hit, const Vec3& w) const override;
+  SampledSpectrum L(const SurfaceInteraction& hit, const Vec3& w, const SampledWavelengths& lambda) const override;
   bool is_delta() const override { return false; }
   float power() const override;
 
@@ -39,14 +40,15 @@ class DiffuseAreaLight : public Light {
 
  private:
   // Radiance leaving a point with normal n and texture coordinates uv in direction w.
-  RGB emitted(const Vec3& n, Vec2 uv, const Vec3& w) const;
+  SampledSpectrum emitted(const Vec3& n, Vec2 uv, const Vec3& w, const SampledWavelengths& lambda) const;
 
   const Shape& shape_;
-  RGB L_;
+  Spectrum L_;
   float scale_;
   bool two_sided_;
   std::optional<RGBImage> image_;
   float area_;
+  float mean_;  // mean of the emission (or image) as RGB, before scale: the light sampler's weight
 };
 
 const PluginSpec& diffuse_area_light_spec();

@@ -4,9 +4,10 @@
 
 namespace eyetrace {
 
-std::optional<LightLiSample> DistantLight::sample_li(const LightSampleContext& ctx, Vec2) const {
+std::optional<LightLiSample> DistantLight::sample_li(const LightSampleContext& ctx, Vec2,
+                                                     const SampledWavelengths& lambda) const {
   LightLiSample s;
-  s.L = L_;
+  s.L = L_.sample(lambda);
   s.wi = w_;
   s.pdf = 1.f;
   // Two radii from any point inside the bounds is outside them: the shadow ray sees all.
@@ -16,7 +17,7 @@ std::optional<LightLiSample> DistantLight::sample_li(const LightSampleContext& c
   return s;
 }
 
-float DistantLight::power() const { return kPi * scene_radius_ * scene_radius_ * channel_mean(L_); }
+float DistantLight::power() const { return kPi * scene_radius_ * scene_radius_ * mean_; }
 
 void DistantLight::preprocess(const Bounds3& scene_bounds) {
   float r = scene_bounds.radius();
@@ -37,7 +38,7 @@ const PluginSpec& distant_light_spec() {
 
 std::unique_ptr<Light> create_distant_light(const LightContext& ctx) {
   const PluginParams params(ctx.params, distant_light_spec(), "distant");
-  RGB L = emission_param(params, "L");
+  Spectrum L = emission_param(params, "L");
   float scale = scale_param(params);
   std::optional<float> E = photometric_param(params, "illuminance");
   Vec3 from = params.get_point3("from");
@@ -46,8 +47,8 @@ std::unique_ptr<Light> create_distant_light(const LightContext& ctx) {
   float len = glm::length(w);
   if (!(len > 0.f) || !std::isfinite(len))
     params.fail(params.has("to") ? "to" : "from", "\"from\" and \"to\" coincide: the light has no direction");
-  scale *= photometric_factor(E, luminance(L));
-  return std::make_unique<DistantLight>(w / len, L * scale);
+  scale *= photometric_factor(E, L.luminance());
+  return std::make_unique<DistantLight>(w / len, L.scaled(scale));
 }
 
 }  // namespace eyetrace

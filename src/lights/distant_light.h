@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/light.h"
+#include "lights/light_params.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
@@ -14,9 +15,10 @@ namespace eyetrace {
 class DistantLight : public Light {
  public:
   // `to_light`: unit world direction from the scene towards the light.
-  DistantLight(const Vec3& to_light, const RGB& L) : w_(to_light), L_(L) {}
+  DistantLight(const Vec3& to_light, const Spectrum& L) : w_(to_light), L_(L), mean_(channel_mean(L)) {}
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
   bool is_delta() const override { return true; }
   // The flux through the scene's bounding disc: pi r^2 L (0 before preprocess()).
@@ -27,7 +29,8 @@ class DistantLight : public Light {
 
  private:
   Vec3 w_;
-  RGB L_;
+  Spectrum L_;
+  float mean_;  // of L_ as RGB: the light sampler's weight
   float scene_radius_ = 0.f;
 };
 

@@ -9,7 +9,8 @@ namespace {
 
 float usable_radius(float r) { return r > 0.f && std::isfinite(r) ? r : 1.f; }
 
-LightLiSample make_sample(const LightSampleContext& ctx, const RGB& L, const Vec3& wi, float pdf, float radius) {
+LightLiSample make_sample(const LightSampleContext& ctx, const SampledSpectrum& L, const Vec3& wi, float pdf,
+                          float radius) {
   LightLiSample s;
   s.L = L;
   s.wi = wi;
@@ -27,16 +28,17 @@ float scene_radius_of(const Bounds3& b) {
 
 }  // namespace
 
-std::optional<LightLiSample> UniformInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
-  if (is_black(L_)) return std::nullopt;
-  return make_sample(ctx, L_, sample_uniform_sphere(u), uniform_sphere_pdf(), scene_radius_);
+std::optional<LightLiSample> UniformInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u,
+                                                             const SampledWavelengths& lambda) const {
+  if (mean_ == 0.f) return std::nullopt;
+  return make_sample(ctx, L_.sample(lambda), sample_uniform_sphere(u), uniform_sphere_pdf(), scene_radius_);
 }
 
 float UniformInfiniteLight::pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const {
-  return is_black(L_) ? 0.f : uniform_sphere_pdf();
+  return mean_ == 0.f ? 0.f : uniform_sphere_pdf();
 }
 
-float UniformInfiniteLight::power() const { return 4.f * kPi * kPi * sqr(scene_radius_) * channel_mean(L_); }
+float UniformInfiniteLight::power() const { return 4.f * kPi * kPi * sqr(scene_radius_) * mean_; }
 
 void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
 
@@ -52,7 +54,8 @@ Vec3 ImageInfiniteLight::to_light(const Vec3& w) const {
   return len > 0.f ? wl / len : Vec3(0.f, 0.f, 1.f);
 }
 
-std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u) const {
+std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u,
+                                                           const SampledWavelengths& lambda) const {
   float map_pdf = 0.f;  // equals the pdf below unless wi rounds into another pixel
   std::optional<Vec3> wl = map_.sample(u, &map_pdf);
   if (!wl) return std::nullopt;
@@ -64,7 +67,7 @@ std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleCont
   // sample to the last bit (MIS weights depend on it).
   Vec3 back = to_light(wi);
   float pdf = map_.pdf(back);
-  RGB L = scale_ * map_.radiance(back);
+  SampledSpectrum L = scale_ * rgb_emission(map_.radiance(back), lambda);
   if (!(pdf > 0.f) || is_black(L)) return std::nullopt;
   return make_sample(ctx, L, wi, pdf, scene_radius_);
 }
@@ -73,7 +76,9 @@ float ImageInfiniteLight::pdf_li(const LightSampleContext&, const Vec3& wi, cons
   return map_.pdf(to_light(wi));
 }
 
-RGB ImageInfiniteLight::Le(const Ray& ray) const { return scale_ * map_.radiance(to_light(ray.d)); }
+SampledSpectrum ImageInfiniteLight::Le(const Ray& ray, const SampledWavelengths& lambda) const {
+  return scale_ * rgb_emission(map_.radiance(to_light(ray.d)), lambda);
+}
 
 float ImageInfiniteLight::power() const {
   return 4.f * kPi * kPi * sqr(scene_radius_) * scale_ * channel_mean(map_.mean_radiance());
@@ -121,7 +126,7 @@ const PluginSpec& infinite_light_spec() {
 
 std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
   const PluginParams params(ctx.params, infinite_light_spec(), "infinite");
-  std::optional<RGB> L = emission_param_or_null(params, "L");
+  std::optional<Spectrum> L = emission_param_or_null(params, "L");
   float scale = scale_param(params);
   std::optional<float> E = photometric_param(params, "illuminance");
   const std::string filename = params.has("filename") ? params.get_string("filename") : "";
@@ -129,9 +134,9 @@ std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
     params.warn_param("portal", "portals are not supported by eyetrace; the whole environment is sampled");
 
   if (filename.empty()) {
-    const RGB Lc = L ? *L : params.get_rgb("L");  // absent: the declared default
-    scale *= photometric_factor(E, kPi * luminance(Lc));
-    return std::make_unique<UniformInfiniteLight>(Lc * scale);
+    const Spectrum Lc = L ? *L : emission_param(params, "L");  // absent: the declared default
+    scale *= photometric_factor(E, kPi * Lc.luminance());
+    return std::make_unique<UniformInfiniteLight>(Lc.scaled(scale));
   }
   if (L) params.fail("filename", "an infinite light takes \"L\" or \"filename\", not both");
   EnvironmentMap map = read_environment_map(params, resolve_scene_file(ctx.search_dir, filename));

@@ -16,17 +16,19 @@
 #include "core/light.h"
 #include "core/transform.h"
 #include "lights/environment_map.h"
+#include "lights/light_params.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 
 class UniformInfiniteLight : public Light {
  public:
-  explicit UniformInfiniteLight(const RGB& L) : L_(L) {}
+  explicit UniformInfiniteLight(const Spectrum& L) : L_(L), mean_(channel_mean(L)) {}
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
-  RGB Le(const Ray&) const override { return L_; }
+  SampledSpectrum Le(const Ray&, const SampledWavelengths& lambda) const override { return L_.sample(lambda); }
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
   // Flux through the scene's bounding disc from the whole sphere: 4 pi^2 r^2 L.
@@ -34,7 +36,8 @@ class UniformInfiniteLight : public Light {
   void preprocess(const Bounds3& scene_bounds) override;
 
  private:
-  RGB L_;
+  Spectrum L_;
+  float mean_;  // of L_ as RGB: the light sampler's weight
   float scene_radius_ = 0.f;
 };
 
@@ -42,9 +45,10 @@ class ImageInfiniteLight : public Light {
  public:
   ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale);
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
-  RGB Le(const Ray& ray) const override;
+  SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const override;
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
   float power() const override;

@@ -14,17 +14,20 @@ ParamSpec photometric_param_spec(const std::string& name, const std::string& doc
   return param::real(name).above(0).describe(doc);
 }
 
-std::optional<RGB> emission_param_or_null(const PluginParams& params, const std::string& name) {
+std::optional<Spectrum> emission_param_or_null(const PluginParams& params, const std::string& name) {
   if (!params.has(name)) return std::nullopt;
-  const RGB c = params.get_rgb(name);
-  if (c.r < 0.f || c.g < 0.f || c.b < 0.f)
-    params.fail(name, fmt::format("emission ({}, {}, {}) has a negative component", c.r, c.g, c.b));
-  return c;
+  const SpectrumValue v = params.get_spectrum(name, SpectrumType::Illuminant);
+  if (v.rgb && (v.rgb->r < 0.f || v.rgb->g < 0.f || v.rgb->b < 0.f))
+    params.fail(name, fmt::format("emission ({}, {}, {}) has a negative component", v.rgb->r, v.rgb->g, v.rgb->b));
+  if (!v.rgb)
+    for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f)
+      if (v.spectrum(l) < 0.f) params.fail(name, fmt::format("emission is negative at {} nm", l));
+  return v.as(SpectrumType::Illuminant);
 }
 
-RGB emission_param(const PluginParams& params, const std::string& name) {
-  const std::optional<RGB> given = emission_param_or_null(params, name);
-  return given ? *given : params.get_rgb(name);  // absent: the declared default
+Spectrum emission_param(const PluginParams& params, const std::string& name) {
+  const std::optional<Spectrum> given = emission_param_or_null(params, name);
+  return given ? *given : params.get_spectrum(name, SpectrumType::Illuminant).as(SpectrumType::Illuminant);
 }
 
 float scale_param(const PluginParams& params) { return params.get_float("scale"); }

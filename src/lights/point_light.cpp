@@ -4,20 +4,19 @@
 
 namespace eyetrace {
 
-std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext& ctx, Vec2) const {
+std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext& ctx, Vec2,
+                                                   const SampledWavelengths& lambda) const {
   Vec3 d = p_ - ctx.p;
   float dist2 = glm::dot(d, d);
   // A shading point on the light itself receives no defined irradiance.
   if (!(dist2 > 0.f) || !std::isfinite(dist2)) return std::nullopt;
   LightLiSample s;
-  s.L = I_ / dist2;
+  s.L = I_.sample(lambda) / dist2;
   s.wi = d / std::sqrt(dist2);
   s.pdf = 1.f;
   s.p_light = p_;
   return s;
 }
-
-float PointLight::power() const { return 4.f * kPi * channel_mean(I_); }
 
 const PluginSpec& point_light_spec() {
   static const PluginSpec spec{"LightSource",
@@ -31,12 +30,12 @@ const PluginSpec& point_light_spec() {
 
 std::unique_ptr<Light> create_point_light(const LightContext& ctx) {
   const PluginParams params(ctx.params, point_light_spec(), "point");
-  RGB I = emission_param(params, "I");
+  Spectrum I = emission_param(params, "I");
   float scale = scale_param(params);
   std::optional<float> phi = photometric_param(params, "power");
   Vec3 from = params.get_point3("from");
-  scale *= photometric_factor(phi, 4.f * kPi * luminance(I));
-  return std::make_unique<PointLight>(ctx.world_from_light.point(from), I * scale);
+  scale *= photometric_factor(phi, 4.f * kPi * I.luminance());
+  return std::make_unique<PointLight>(ctx.world_from_light.point(from), I.scaled(scale));
 }
 
 }  // namespace eyetrace

@@ -6,25 +6,29 @@
 #include <memory>
 
 #include "core/light.h"
+#include "lights/light_params.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 
 class PointLight : public Light {
  public:
-  PointLight(const Vec3& position, const RGB& intensity) : p_(position), I_(intensity) {}
+  PointLight(const Vec3& position, const Spectrum& intensity)
+      : p_(position), I_(intensity), power_(4.f * kPi * channel_mean(intensity)) {}
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
   bool is_delta() const override { return true; }
-  float power() const override;
+  float power() const override { return power_; }
 
   const Vec3& position() const { return p_; }
-  const RGB& intensity() const { return I_; }
+  const Spectrum& intensity() const { return I_; }
 
  private:
   Vec3 p_;
-  RGB I_;  // scale folded in
+  Spectrum I_;
+  float power_;  // scale folded in
 };
 
 const PluginSpec& point_light_spec();

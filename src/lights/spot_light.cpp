@@ -13,29 +13,31 @@ float smooth_step(float x, float a, float b) {
 
 }  // namespace
 
-SpotLight::SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I,
+SpotLight::SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const Spectrum& I,
                      float cone_angle_deg, float falloff_start_deg)
     : light_from_world_(world_from_light.inverse()),
       p_(world_from_light.point(from)),
       axis_light_(glm::normalize(to - from)),
       I_(I),
+      mean_(channel_mean(I)),
       cos_falloff_start_(std::cos(radians(falloff_start_deg))),
       cos_falloff_end_(std::cos(radians(cone_angle_deg))) {}
 
-RGB SpotLight::intensity(const Vec3& w) const {
+SampledSpectrum SpotLight::intensity(const Vec3& w, const SampledWavelengths& lambda) const {
   Vec3 wl = light_from_world_.vector(w);
   float len = glm::length(wl);
-  if (!(len > 0.f)) return RGB(0.f);
+  if (!(len > 0.f)) return SampledSpectrum(0.f);
   float cos_theta = glm::dot(wl / len, axis_light_);
-  return smooth_step(cos_theta, cos_falloff_end_, cos_falloff_start_) * I_;
+  return smooth_step(cos_theta, cos_falloff_end_, cos_falloff_start_) * I_.sample(lambda);
 }
 
-std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx, Vec2) const {
+std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx, Vec2,
+                                                  const SampledWavelengths& lambda) const {
   Vec3 d = p_ - ctx.p;
   float dist2 = glm::dot(d, d);
   if (!(dist2 > 0.f) || !std::isfinite(dist2)) return std::nullopt;
   Vec3 wi = d / std::sqrt(dist2);
-  RGB I = intensity(-wi);
+  SampledSpectrum I = intensity(-wi, lambda);
   if (is_black(I)) return std::nullopt;
   LightLiSample s;
   s.L = I / dist2;
@@ -47,9 +49,7 @@ std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx,
 
 // The smoothstep is symmetric about the middle of [cos_end, cos_start], so the falloff
 // band contributes exactly half its solid angle.
-float SpotLight::power() const {
-  return channel_mean(I_) * 2.f * kPi * (1.f - 0.5f * (cos_falloff_start_ + cos_falloff_end_));
-}
+float SpotLight::power() const { return mean_ * 2.f * kPi * (1.f - 0.5f * (cos_falloff_start_ + cos_falloff_end_)); }
 
 const PluginSpec& spot_light_spec() {
   static const PluginSpec spec{
@@ -67,7 +67,7 @@ const PluginSpec& spot_light_spec() {
 
 std::unique_ptr<Light> create_spot_light(const LightContext& ctx) {
   const PluginParams params(ctx.params, spot_light_spec(), "spot");
-  RGB I = emission_param(params, "I");
+  Spectrum I = emission_param(params, "I");
   float scale = scale_param(params);
   std::optional<float> phi = photometric_param(params, "power");
   Vec3 from = params.get_point3("from");
@@ -85,8 +85,8 @@ std::unique_ptr<Light> create_spot_light(const LightContext& ctx) {
   }
   float cos_start = std::cos(radians(cone - delta)), cos_end = std::cos(radians(cone));
   float k_e = 2.f * kPi * (1.f - 0.5f * (cos_start + cos_end));
-  scale *= photometric_factor(phi, k_e * luminance(I));
-  return std::make_unique<SpotLight>(ctx.world_from_light, from, to, I * scale, cone, cone - delta);
+  scale *= photometric_factor(phi, k_e * I.luminance());
+  return std::make_unique<SpotLight>(ctx.world_from_light, from, to, I.scaled(scale), cone, cone - delta);
 }
 
 }  // namespace eyetrace

@@ -19,23 +19,25 @@ class SpotLight : public Light {
  public:
   // `light_from_world` measures angles in the light's own frame (as pbrt-v4 does, so a
   // non-uniform scale in the CTM distorts the cone like it distorts the scene).
-  SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const RGB& I, float cone_angle_deg,
-            float falloff_start_deg);
+  SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const Spectrum& I,
+            float cone_angle_deg, float falloff_start_deg);
 
-  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u) const override;
+  std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
+                                         const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
   bool is_delta() const override { return true; }
   float power() const override;
 
   // Radiant intensity towards world direction w (unit, pointing away from the light).
-  RGB intensity(const Vec3& w) const;
+  SampledSpectrum intensity(const Vec3& w, const SampledWavelengths& lambda) const;
   const Vec3& position() const { return p_; }
 
  private:
   Transform light_from_world_;
   Vec3 p_;           // world position
   Vec3 axis_light_;  // unit axis in light space
-  RGB I_;
+  Spectrum I_;
+  float mean_;  // of I_ as RGB: the light sampler's weight
   float cos_falloff_start_, cos_falloff_end_;
 };
 

@@ -18,24 +18,24 @@ CoatConstants CoatConstants::make(float eta) {
   return c;
 }
 
-CoatedDiffuseBxDF::CoatedDiffuseBxDF(const CoatConstants& c, const TrowbridgeReitz& mf, const RGB& reflectance,
-                                     const RGB& tau)
+CoatedDiffuseBxDF::CoatedDiffuseBxDF(const CoatConstants& c, const TrowbridgeReitz& mf,
+                                     const SampledSpectrum& reflectance, const SampledSpectrum& tau)
     : c_(c), mf_(mf), r_(clamp_unit(reflectance)), tau_(clamp_non_negative(tau, 0.f)) {
-  RGB a2 = glm::exp(-4.f * tau_);
-  k_ = c_.n2 * (RGB(1.f) - r_ * a2) + r_ * a2 * c_.t_mean;
+  SampledSpectrum a2 = exp(tau_ * -4.f);
+  k_ = c_.n2 * (SampledSpectrum(1.f) - r_ * a2) + r_ * a2 * c_.t_mean;
 }
 
-RGB CoatedDiffuseBxDF::absorption(float mu) const {
+SampledSpectrum CoatedDiffuseBxDF::absorption(float mu) const {
   float mu_in = safe_sqrt(1.f - (1.f - mu * mu) / sqr(c_.eta));
-  if (is_black(tau_)) return RGB(1.f);
-  if (mu_in <= 0.f) return RGB(0.f);
-  return glm::exp(-tau_ / mu_in);
+  if (is_black(tau_)) return SampledSpectrum(1.f);
+  if (mu_in <= 0.f) return SampledSpectrum(0.f);
+  return exp(tau_ * (-1.f / mu_in));
 }
 
-RGB CoatedDiffuseBxDF::base(float mu_o, float mu_i) const {
-  RGB num = r_ * (1.f - fresnel(mu_o)) * (1.f - fresnel(mu_i)) * absorption(mu_o) * absorption(mu_i);
-  RGB out;
-  for (int i = 0; i < 3; ++i) out[i] = k_[i] > 0.f ? num[i] / (kPi * k_[i]) : 0.f;
+SampledSpectrum CoatedDiffuseBxDF::base(float mu_o, float mu_i) const {
+  SampledSpectrum num = r_ * (1.f - fresnel(mu_o)) * (1.f - fresnel(mu_i)) * absorption(mu_o) * absorption(mu_i);
+  SampledSpectrum out;
+  for (int i = 0; i < kSpectrumSamples; ++i) out[i] = k_[i] > 0.f ? num[i] / (kPi * k_[i]) : 0.f;
   return out;
 }
 
@@ -61,15 +61,15 @@ float CoatedDiffuseBxDF::coat_pdf(const Vec3& wo, const Vec3& wi) const {
 // Lobes are chosen in proportion to their rough share of the reflected energy.
 float CoatedDiffuseBxDF::coat_probability(float mu_o) const {
   float fr = fresnel(mu_o);
-  float diffuse = (1.f - fr) * (r_.r + r_.g + r_.b) / 3.f;
+  float diffuse = (1.f - fr) * r_.average();
   return fr + diffuse > 0.f ? fr / (fr + diffuse) : 0.f;
 }
 
 // Two-sided: a direction pair below the surface is mirrored above it.
-RGB CoatedDiffuseBxDF::f(Vec3 wo, Vec3 wi) const {
-  if (!same_hemisphere(wo, wi)) return RGB(0.f);
+SampledSpectrum CoatedDiffuseBxDF::f(Vec3 wo, Vec3 wi) const {
+  if (!same_hemisphere(wo, wi)) return SampledSpectrum(0.f);
   if (wo.z < 0.f) wo.z = -wo.z, wi.z = -wi.z;
-  return base(wo.z, wi.z) + RGB(coat_f(wo, wi));
+  return base(wo.z, wi.z) + SampledSpectrum(coat_f(wo, wi));
 }
 
 float CoatedDiffuseBxDF::pdf(Vec3 wo, Vec3 wi) const {
@@ -87,7 +87,7 @@ std::optional<BSDFSample> CoatedDiffuseBxDF::sample_f(Vec3 wo, float uc, Vec2 u)
   BSDFSample s;
   if (uc < pc && mf_.effectively_smooth()) {
     s.wi = Vec3(-wo.x, -wo.y, wo.z);
-    s.f = RGB(fresnel(wo.z) / s.wi.z);
+    s.f = SampledSpectrum(fresnel(wo.z) / s.wi.z);
     s.pdf = pc;
     s.flags = kReflection | kSpecular;
   } else {
@@ -107,12 +107,12 @@ std::optional<BSDFSample> CoatedDiffuseBxDF::sample_f(Vec3 wo, float uc, Vec2 u)
   return s;
 }
 
-RGB CoatedDiffuseBxDF::albedo() const {
+SampledSpectrum CoatedDiffuseBxDF::albedo() const {
   // At normal incidence: the coat's F(1) plus the base's share of the rest.
   float f0 = fresnel(1.f);
-  RGB base_albedo;
-  for (int i = 0; i < 3; ++i) base_albedo[i] = k_[i] > 0.f ? r_[i] * c_.t_mean / k_[i] : 0.f;
-  return RGB(f0) + (1.f - f0) * base_albedo * absorption(1.f);
+  SampledSpectrum base_albedo;
+  for (int i = 0; i < kSpectrumSamples; ++i) base_albedo[i] = k_[i] > 0.f ? r_[i] * c_.t_mean / k_[i] : 0.f;
+  return SampledSpectrum(f0) + (1.f - f0) * base_albedo * absorption(1.f);
 }
 
 }  // namespace eyetrace

@@ -47,26 +47,27 @@ struct CoatConstants {
 class CoatedDiffuseBxDF {
  public:
   // tau: optical thickness of the coat per channel (thickness x absorbed fraction).
-  CoatedDiffuseBxDF(const CoatConstants& c, const TrowbridgeReitz& mf, const RGB& reflectance, const RGB& tau);
+  CoatedDiffuseBxDF(const CoatConstants& c, const TrowbridgeReitz& mf, const SampledSpectrum& reflectance,
+                    const SampledSpectrum& tau);
 
   unsigned flags() const { return kReflection | kDiffuse | (mf_.effectively_smooth() ? kSpecular : kGlossy); }
-  RGB albedo() const;
+  SampledSpectrum albedo() const;
 
-  RGB f(Vec3 wo, Vec3 wi) const;
+  SampledSpectrum f(Vec3 wo, Vec3 wi) const;
   float pdf(Vec3 wo, Vec3 wi) const;
   std::optional<BSDFSample> sample_f(Vec3 wo, float uc, Vec2 u) const;
 
  private:
   float fresnel(float mu) const { return fresnel_dielectric(std::abs(mu), c_.eta); }
-  RGB base(float mu_o, float mu_i) const;
+  SampledSpectrum base(float mu_o, float mu_i) const;
   float coat_f(const Vec3& wo, const Vec3& wi) const;
   float coat_pdf(const Vec3& wo, const Vec3& wi) const;
   float coat_probability(float mu_o) const;
-  RGB absorption(float mu) const;  // along the direction refracted from outside cosine mu
+  SampledSpectrum absorption(float mu) const;  // along the direction refracted from outside cosine mu
 
   CoatConstants c_;
   TrowbridgeReitz mf_;
-  RGB r_, tau_, k_;
+  SampledSpectrum r_, tau_, k_;
 };
 
 }  // namespace eyetrace

@@ -19,18 +19,18 @@ class CoatedDiffuseMaterial final : public Material {
     const SpectrumTexture* reflectance;
     const FloatTexture* thickness;
     const SpectrumTexture* albedo;
-    const SpectrumTexture* normal_map;
+    const ImageTexture* normal_map;
   };
   explicit CoatedDiffuseMaterial(const Inputs& in) : in_(in) {}
 
-  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+  const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     SurfaceInteraction si = apply_normal_map(in_.normal_map, hit);
     TextureEvalContext tc(si);
     float thickness = std::max(0.f, in_.thickness->evaluate(tc));
     if (!std::isfinite(thickness)) thickness = 0.f;
-    RGB scattered = clamp_unit(in_.albedo->evaluate(tc));
-    RGB tau = thickness * (RGB(1.f) - scattered);
-    RGB r = in_.reflectance->evaluate(tc);
+    SampledSpectrum scattered = clamp_unit(in_.albedo->evaluate(tc, lambda));
+    SampledSpectrum tau = thickness * (SampledSpectrum(1.f) - scattered);
+    SampledSpectrum r = in_.reflectance->evaluate(tc, lambda);
     return make_local_bsdf(arena, si, CoatedDiffuseBxDF(in_.coat, in_.roughness.distribution(tc), r, tau), hit.ns);
   }
 

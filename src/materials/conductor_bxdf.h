@@ -1,5 +1,5 @@
 // A metal: specular or Trowbridge-Reitz rough reflection with the Fresnel reflectance of a
-// complex index eta + i k, per RGB channel, as pbrt-v4's ConductorBxDF.
+// complex index eta + i k, per SampledSpectrum channel, as pbrt-v4's ConductorBxDF.
 #pragma once
 #include <optional>
 
@@ -12,10 +12,10 @@ namespace eyetrace {
 
 class ConductorBxDF {
  public:
-  ConductorBxDF(const TrowbridgeReitz& mf, const RGB& eta, const RGB& k) : mf_(mf), eta_(eta), k_(k) {}
+  ConductorBxDF(const TrowbridgeReitz& mf, const SampledSpectrum& eta, const SampledSpectrum& k)
+      : mf_(mf), eta_(eta), k_(k) {}
 
   unsigned flags() const { return kReflection | (mf_.effectively_smooth() ? kSpecular : kGlossy); }
-  RGB albedo() const { return fresnel_complex(1.f, eta_, k_); }
 
   std::optional<BSDFSample> sample_f(const Vec3& wo, float /*uc*/, Vec2 u) const {
     if (wo.z == 0.f) return std::nullopt;
@@ -37,10 +37,10 @@ class ConductorBxDF {
     return s;
   }
 
-  RGB f(const Vec3& wo, const Vec3& wi) const {
+  SampledSpectrum f(const Vec3& wo, const Vec3& wi) const {
     Vec3 wm;
-    if (mf_.effectively_smooth() || !half_vector(wo, wi, &wm)) return RGB(0.f);
-    RGB fr = fresnel_complex(std::abs(glm::dot(wo, wm)), eta_, k_);
+    if (mf_.effectively_smooth() || !half_vector(wo, wi, &wm)) return SampledSpectrum(0.f);
+    SampledSpectrum fr = fresnel_complex(std::abs(glm::dot(wo, wm)), eta_, k_);
     return mf_.D(wm) * mf_.G(wo, wi) * fr / (4.f * std::abs(wi.z) * std::abs(wo.z));
   }
 
@@ -62,7 +62,7 @@ class ConductorBxDF {
   }
 
   TrowbridgeReitz mf_;
-  RGB eta_, k_;
+  SampledSpectrum eta_, k_;
 };
 
 }  // namespace eyetrace

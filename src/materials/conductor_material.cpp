@@ -13,33 +13,37 @@ namespace eyetrace {
 
 namespace {
 
-RGB named_rgb(const std::string& name) {
-  Param p;
-  p.type = "spectrum";
-  p.name = name;
-  p.strings = {name};
-  return spectrum_param_to_rgb(p);
+// Smallest value of a spectrum parameter over the sampled range (RGB: smallest channel).
+float min_value(const SpectrumValue& v) {
+  if (v.rgb) return std::min({v.rgb->r, v.rgb->g, v.rgb->b});
+  float lo = v.spectrum(kLambdaMin);
+  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f) lo = std::min(lo, v.spectrum(l));
+  return lo;
 }
+
+Spectrum named(const std::string& name) { return Spectrum::named(*find_named_spectrum(name), SpectrumType::Unbounded); }
 
 class ConductorMaterial final : public Material {
  public:
   ConductorMaterial(const SpectrumTexture* eta, const SpectrumTexture* k, const SpectrumTexture* reflectance,
-                    RoughnessParams roughness, const SpectrumTexture* normal_map)
+                    RoughnessParams roughness, const ImageTexture* normal_map)
       : eta_(eta), k_(k), reflectance_(reflectance), roughness_(roughness), normal_map_(normal_map) {}
 
-  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+  const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     SurfaceInteraction si = apply_normal_map(normal_map_, hit);
     TextureEvalContext tc(si);
     TrowbridgeReitz mf = roughness_.distribution(tc);
-    RGB eta, k;
+    SampledSpectrum eta, k;
     if (reflectance_) {
       // pbrt-v4: eta = 1 and the k whose normal-incidence reflectance k^2/(4+k^2) is r.
-      RGB r = glm::min(clamp_unit(reflectance_->evaluate(tc)), RGB(0.9999f));
-      eta = RGB(1.f);
-      k = 2.f * glm::sqrt(r) / glm::sqrt(RGB(1.f) - r);
+      SampledSpectrum r = min(clamp_unit(reflectance_->evaluate(tc, lambda)), 0.9999f);
+      eta = SampledSpectrum(1.f);
+      k = 2.f * sqrt(r) * safe_div(SampledSpectrum(1.f), sqrt(SampledSpectrum(1.f) - r));
     } else {
-      eta = clamp_non_negative(eta_->evaluate(tc), 1.f);
-      k = clamp_non_negative(k_->evaluate(tc), 0.f);
+      // Indices are not reflectances: RGB values become unbounded spectra.
+      tc.spectrum_type = SpectrumType::Unbounded;
+      eta = clamp_non_negative(eta_->evaluate(tc, lambda), 1.f);
+      k = clamp_non_negative(k_->evaluate(tc, lambda), 0.f);
     }
     return make_local_bsdf(arena, si, ConductorBxDF(mf, eta, k), hit.ns);
   }
@@ -49,7 +53,7 @@ class ConductorMaterial final : public Material {
   const SpectrumTexture* k_;
   const SpectrumTexture* reflectance_;
   RoughnessParams roughness_;
-  const SpectrumTexture* normal_map_;
+  const ImageTexture* normal_map_;
 };
 
 // A constant eta must be positive and k non-negative (textures are clamped where they are
@@ -57,8 +61,7 @@ class ConductorMaterial final : public Material {
 void check_constant(const ParameterList& params, const char* name, bool zero_allowed) {
   const Param* p = params.find(name);
   if (!p || p->canonical_type() == "texture") return;
-  RGB v = *params.get_rgb(name);
-  float lo = std::min({v.r, v.g, v.b});
+  const float lo = min_value(*params.get_spectrum(name, SpectrumType::Unbounded));
   if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
   params.fail(
       name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
@@ -68,8 +71,7 @@ void check_constant(const ParameterList& params, const char* name, bool zero_all
 
 const PluginSpec& conductor_material_spec() {
   static const PluginSpec spec{
-      "Material", "a metal: Fresnel reflection of a complex index of refraction",
-      "Complex index in RGB, not per wavelength.",
+      "Material", "a metal: Fresnel reflection of a complex index of refraction", "—",
       std::vector<ParamSpec>{
           param::spectrum_texture("eta").shown_default("\"metal-Cu-eta\"").describe("real part of the index"),
           param::spectrum_texture("k").shown_default("\"metal-Cu-k\"").describe("imaginary part of the index"),
@@ -87,8 +89,8 @@ std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) 
   const SpectrumTexture* reflectance = ctx.textures.spectrum_param(p, "reflectance");
   if (reflectance && (eta || k)) p.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
   if (!reflectance) {
-    if (!eta) eta = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named_rgb("metal-Cu-eta")));
-    if (!k) k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named_rgb("metal-Cu-k")));
+    if (!eta) eta = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-eta")));
+    if (!k) k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-k")));
   }
   return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx, p),
                                              read_normal_map(ctx, p));

@@ -20,22 +20,21 @@ class DielectricBxDF {
     unsigned f = eta_ == 1.f ? unsigned(kTransmission) : unsigned(kReflection | kTransmission);
     return f | (is_smooth() ? kSpecular : kGlossy);
   }
-  RGB albedo() const { return RGB(1.f); }
   float eta() const { return eta_; }
 
   std::optional<BSDFSample> sample_f(const Vec3& wo, float uc, Vec2 u) const {
     return is_smooth() ? sample_smooth(wo, uc) : sample_rough(wo, uc, u);
   }
 
-  RGB f(const Vec3& wo, const Vec3& wi) const {
+  SampledSpectrum f(const Vec3& wo, const Vec3& wi) const {
     Half h;
-    if (is_smooth() || !half_vector(wo, wi, &h)) return RGB(0.f);
+    if (is_smooth() || !half_vector(wo, wi, &h)) return SampledSpectrum(0.f);
     float fr = fresnel_dielectric(glm::dot(wo, h.wm), eta_);
     float g = mf_.G(wo, wi), d = mf_.D(h.wm);
-    if (h.reflect) return RGB(d * g * fr / std::abs(4.f * wi.z * wo.z));
+    if (h.reflect) return SampledSpectrum(d * g * fr / std::abs(4.f * wi.z * wo.z));
     float denom = sqr(glm::dot(wi, h.wm) + glm::dot(wo, h.wm) / h.etap) * wi.z * wo.z;
     float ft = d * (1.f - fr) * g * std::abs(glm::dot(wi, h.wm) * glm::dot(wo, h.wm) / denom);
-    return RGB(ft / sqr(h.etap));
+    return SampledSpectrum(ft / sqr(h.etap));
   }
 
   float pdf(const Vec3& wo, const Vec3& wi) const {
@@ -79,14 +78,14 @@ class DielectricBxDF {
     BSDFSample s;
     if (uc < r / (r + t)) {
       s.wi = Vec3(-wo.x, -wo.y, wo.z);
-      s.f = RGB(r / std::abs(s.wi.z));
+      s.f = SampledSpectrum(r / std::abs(s.wi.z));
       s.pdf = r / (r + t);
       s.flags = kReflection | kSpecular;
       return s;
     }
     float etap;
     if (!refract(wo, Vec3(0.f, 0.f, 1.f), eta_, &etap, &s.wi) || s.wi.z == 0.f) return std::nullopt;
-    s.f = RGB(t / std::abs(s.wi.z) / sqr(etap));
+    s.f = SampledSpectrum(t / std::abs(s.wi.z) / sqr(etap));
     s.pdf = t / (r + t);
     s.flags = kTransmission | kSpecular;
     s.eta = etap;

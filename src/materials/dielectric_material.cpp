@@ -10,20 +10,24 @@ namespace eyetrace {
 
 namespace {
 
+// A dispersive index refracts each wavelength its own way, so the path keeps only its hero
+// wavelength (as pbrt-v4 does); a constant index keeps all four.
 class DielectricMaterial final : public Material {
  public:
-  DielectricMaterial(float eta, RoughnessParams roughness, const SpectrumTexture* normal_map)
-      : eta_(eta), roughness_(roughness), normal_map_(normal_map) {}
-  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+  DielectricMaterial(Spectrum eta, bool dispersive, RoughnessParams roughness, const ImageTexture* normal_map)
+      : eta_(std::move(eta)), dispersive_(dispersive), roughness_(roughness), normal_map_(normal_map) {}
+  const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     SurfaceInteraction si = apply_normal_map(normal_map_, hit);
     TrowbridgeReitz mf = roughness_.distribution(TextureEvalContext(si));
-    return make_local_bsdf(arena, si, DielectricBxDF(eta_, mf), hit.ns);
+    if (dispersive_) lambda.terminate_secondary();
+    return make_local_bsdf(arena, si, DielectricBxDF(eta_(lambda[0]), mf), hit.ns);
   }
 
  private:
-  float eta_;
+  Spectrum eta_;
+  bool dispersive_;
   RoughnessParams roughness_;
-  const SpectrumTexture* normal_map_;
+  const ImageTexture* normal_map_;
 };
 
 }  // namespace
@@ -40,16 +44,30 @@ float read_eta_at_550(const PluginParams& params) {
 }
 
 const PluginSpec& dielectric_material_spec() {
-  static const PluginSpec spec{"Material", "a smooth or rough boundary of glass, water and the like",
-                               "No dispersion: a spectral `eta` (e.g. `\"glass-BK7\"`) is used at 550 nm.",
-                               std::vector<ParamSpec>{eta_at_550_param()} + RoughnessParams::declared() +
-                                   std::vector<ParamSpec>{normal_map_param()}};
+  static const PluginSpec spec{
+      "Material", "a smooth or rough boundary of glass, water and the like", "—",
+      std::vector<ParamSpec>{param::float_or_spectrum("eta", 1.5)
+                                 .above(0)
+                                 .describe("index of refraction; a spectrum (e.g. `\"glass-BK7\"`) disperses")} +
+          RoughnessParams::declared() + std::vector<ParamSpec>{normal_map_param()}};
   return spec;
 }
 
 std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx) {
   const PluginParams p(ctx.params, dielectric_material_spec(), "dielectric");
-  return std::make_unique<DielectricMaterial>(read_eta_at_550(p), RoughnessParams::read(ctx, p),
+  Spectrum eta = Spectrum::constant(read_eta_at_550(p));
+  bool dispersive = false;
+  if (p.has("eta") && ctx.params.find("eta")->canonical_type() == "spectrum") {
+    const SpectrumValue v = p.get_spectrum("eta", SpectrumType::Unbounded);
+    if (!v.rgb) {
+      eta = v.spectrum;
+      dispersive = true;
+      for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f)
+        if (!(eta(l) > 0.f) || !std::isfinite(eta(l)))
+          p.fail("eta", fmt::format("index of refraction {} at {} nm must be positive", eta(l), l));
+    }
+  }
+  return std::make_unique<DielectricMaterial>(std::move(eta), dispersive, RoughnessParams::read(ctx, p),
                                               read_normal_map(ctx, p));
 }
 

@@ -1,4 +1,4 @@
-// pbrt-v4's "dielectric" material: "eta" (float or spectrum, used at 550 nm; default 1.5),
+// pbrt-v4's "dielectric" material: "eta" (float, or a spectrum that makes it disperse; 1.5),
 // "roughness" or "uroughness"/"vroughness" (default 0: smooth), "remaproughness" (true).
 #pragma once
 #include <memory>
@@ -10,9 +10,8 @@ namespace eyetrace {
 
 std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx);
 
-// The refractive index of a material's "eta" parameter at 550 nm (pbrt-v4 accepts a float
-// or a spectrum); `def` when absent. Shared by dielectric and coateddiffuse.
-// "eta" as a float or a spectrum read at 550 nm (shared with coateddiffuse).
+// "eta" as a float or a spectrum read at 550 nm (coateddiffuse's coat, whose closed-form
+// constants are computed once; the dielectric itself uses the whole spectrum).
 ParamSpec eta_at_550_param();
 float read_eta_at_550(const PluginParams& params);
 const PluginSpec& dielectric_material_spec();

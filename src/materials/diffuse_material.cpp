@@ -11,17 +11,17 @@ namespace {
 
 class DiffuseMaterial final : public Material {
  public:
-  DiffuseMaterial(const SpectrumTexture* reflectance, const SpectrumTexture* normal_map)
+  DiffuseMaterial(const SpectrumTexture* reflectance, const ImageTexture* normal_map)
       : reflectance_(reflectance), normal_map_(normal_map) {}
-  const BSDF* bsdf(const SurfaceInteraction& hit, ScratchBuffer& arena) const override {
+  const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     SurfaceInteraction si = apply_normal_map(normal_map_, hit);
-    RGB r = reflectance_->evaluate(TextureEvalContext(si));
+    SampledSpectrum r = reflectance_->evaluate(TextureEvalContext(si), lambda);
     return make_local_bsdf(arena, si, LambertianBxDF(r), hit.ns);
   }
 
  private:
   const SpectrumTexture* reflectance_;
-  const SpectrumTexture* normal_map_;
+  const ImageTexture* normal_map_;
 };
 
 }  // namespace

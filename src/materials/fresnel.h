@@ -4,6 +4,7 @@
 #include <complex>
 
 #include "core/math.h"
+#include "core/sampled_spectrum.h"
 
 namespace eyetrace {
 
@@ -35,9 +36,10 @@ inline float fresnel_complex(float cos_i, float eta, float k) {
   return 0.5f * (std::norm(r_parl) + std::norm(r_perp));
 }
 
-inline RGB fresnel_complex(float cos_i, const RGB& eta, const RGB& k) {
-  return RGB(fresnel_complex(cos_i, eta.r, k.r), fresnel_complex(cos_i, eta.g, k.g),
-             fresnel_complex(cos_i, eta.b, k.b));
+inline SampledSpectrum fresnel_complex(float cos_i, const SampledSpectrum& eta, const SampledSpectrum& k) {
+  SampledSpectrum r;
+  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = fresnel_complex(cos_i, eta[i], k[i]);
+  return r;
 }
 
 // Refracts wi (pointing away from the surface) through normal n, eta = n_inside/n_outside

@@ -6,7 +6,7 @@ namespace {
 
 class InterfaceMaterial final : public Material {
  public:
-  const BSDF* bsdf(const SurfaceInteraction&, ScratchBuffer&) const override { return nullptr; }
+  const BSDF* bsdf(const SurfaceInteraction&, SampledWavelengths&, ScratchBuffer&) const override { return nullptr; }
 };
 
 }  // namespace

@@ -11,10 +11,10 @@ namespace eyetrace {
 
 class LambertianBxDF {
  public:
-  explicit LambertianBxDF(const RGB& r) : r_(clamp_unit(r)) {}
+  explicit LambertianBxDF(const SampledSpectrum& r) : r_(clamp_unit(r)) {}
 
-  RGB f(const Vec3& wo, const Vec3& wi) const {
-    if (!same_hemisphere(wo, wi)) return RGB(0.f);
+  SampledSpectrum f(const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(wo, wi)) return SampledSpectrum(0.f);
     return r_ * kInvPi;
   }
   std::optional<BSDFSample> sample_f(const Vec3& wo, float /*uc*/, Vec2 u) const {
@@ -34,10 +34,9 @@ class LambertianBxDF {
     return cosine_hemisphere_pdf(std::abs(wi.z));
   }
   unsigned flags() const { return is_black(r_) ? 0u : unsigned(kReflection | kDiffuse); }
-  RGB albedo() const { return r_; }
 
  private:
-  RGB r_;
+  SampledSpectrum r_;
 };
 
 }  // namespace eyetrace

@@ -7,7 +7,7 @@
 // uses for the cosine factor: f is then scaled by |wi.ns_map| / |wi.ns_hit| so that the
 // integrator's f |wi.ns_hit| is the mapped BSDF's integrand.
 // BxDF requirements: f(wo, wi), sample_f(wo, uc, u) -> optional<BSDFSample> (local wi),
-// pdf(wo, wi), flags(), albedo(); trivially destructible, as the arena never destroys it.
+// pdf(wo, wi), flags(); trivially destructible, as the arena never destroys it.
 #pragma once
 #include <optional>
 #include <type_traits>
@@ -39,9 +39,9 @@ class LocalBSDF final : public BSDF {
   LocalBSDF(const SurfaceInteraction& si, const BxDF& bxdf, const Vec3& hit_ns)
       : frame_(shading_frame(si)), ng_(si.n), hit_ns_(hit_ns), mapped_(hit_ns != si.ns), bxdf_(bxdf) {}
 
-  RGB f(const Vec3& wo, const Vec3& wi) const override {
+  SampledSpectrum f(const Vec3& wo, const Vec3& wi) const override {
     Vec3 lo = frame_.to_local(wo), li = frame_.to_local(wi);
-    if (lo.z == 0.f || !sides_agree(wo, wi, lo, li)) return RGB(0.f);
+    if (lo.z == 0.f || !sides_agree(wo, wi, lo, li)) return SampledSpectrum(0.f);
     return bxdf_.f(lo, li) * cosine_ratio(wi, li);
   }
 
@@ -65,7 +65,6 @@ class LocalBSDF final : public BSDF {
   }
 
   unsigned flags() const override { return bxdf_.flags(); }
-  RGB albedo() const override { return bxdf_.albedo(); }
   const BxDF& bxdf() const { return bxdf_; }
 
  private:

@@ -12,7 +12,7 @@ ParamSpec normal_map_param() {
   return param::string("normalmap").describe("image of tangent-space normals (read linear, wrapped by repetition)");
 }
 
-const SpectrumTexture* read_normal_map(const MaterialContext& ctx, const PluginParams& params) {
+const ImageTexture* read_normal_map(const MaterialContext& ctx, const PluginParams& params) {
   if (!params.has("normalmap")) return nullptr;
   const Param* p = ctx.params.find("normalmap");
   std::string file = params.get_string("normalmap");
@@ -32,12 +32,16 @@ const SpectrumTexture* read_normal_map(const MaterialContext& ctx, const PluginP
   add("filename", path.string());
   add("encoding", "linear");
   add("wrap", "repeat");
-  return ctx.textures.keep(create_imagemap_spectrum_texture(TextureContext{image, Transform(), ctx.textures, ""}));
+  std::unique_ptr<ImageTexture> tex =
+      create_imagemap_image_texture(TextureContext{image, Transform(), ctx.textures, ""});
+  const ImageTexture* map = tex.get();
+  ctx.textures.keep(std::move(tex));
+  return map;
 }
 
-SurfaceInteraction apply_normal_map(const SpectrumTexture* map, const SurfaceInteraction& si) {
+SurfaceInteraction apply_normal_map(const ImageTexture* map, const SurfaceInteraction& si) {
   if (!map) return si;
-  RGB c = map->evaluate(TextureEvalContext(si));
+  RGB c = map->rgb(TextureEvalContext(si));
   Vec3 local = 2.f * c - Vec3(1.f);
   float len2 = glm::dot(local, local);
   if (!(len2 > 0.f) || !std::isfinite(len2)) return si;

@@ -5,15 +5,16 @@
 #include "core/interaction.h"
 #include "core/texture.h"
 #include "scene/registry.h"
+#include "textures/imagemap_texture.h"
 
 namespace eyetrace {
 
 // The image as a texture owned by ctx.textures, or null when the material has no
 // "normalmap". A missing file is an error naming "normalmap" and the path.
 ParamSpec normal_map_param();
-const SpectrumTexture* read_normal_map(const MaterialContext& ctx, const PluginParams& params);
+const ImageTexture* read_normal_map(const MaterialContext& ctx, const PluginParams& params);
 
 // The hit with its shading normal (and tangent) replaced; unchanged if `map` is null.
-SurfaceInteraction apply_normal_map(const SpectrumTexture* map, const SurfaceInteraction& si);
+SurfaceInteraction apply_normal_map(const ImageTexture* map, const SurfaceInteraction& si);
 
 }  // namespace eyetrace

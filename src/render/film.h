@@ -1,4 +1,5 @@
-// The film: accumulates weighted radiance per pixel in double precision. Each camera sample
+// The film: accumulates weighted radiance per pixel in double precision, as linear sRGB: each
+// sample's spectral radiance becomes CIE XYZ and then sRGB (core/spectrum.h) as it arrives. Each camera sample
 // lands in one pixel (the filter is importance-sampled), so pixels are written by one thread.
 // Non-finite samples are counted and discarded, never averaged into the image.
 #pragma once
@@ -8,6 +9,7 @@
 
 #include "core/filter.h"
 #include "core/math.h"
+#include "core/spectrum.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
@@ -32,6 +34,9 @@ class Film {
 
   // Adds radiance L with filter weight w to `pixel` (absolute raster coordinates).
   // Returns false (and counts it) when L or w is not finite.
+  bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+    return add_sample(pixel, sampled_to_rgb(L, lambda), w);
+  }
   bool add_sample(IVec2 pixel, const RGB& L, float w) {
     if (!is_finite(L) || !std::isfinite(w)) {
       nonfinite_.fetch_add(1, std::memory_order_relaxed);

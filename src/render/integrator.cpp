@@ -56,11 +56,12 @@ class SampleBatch {
     pixels_[count_] = pixel;
     indices_[count_] = index;
     samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index);
+    lambdas_[count_] = SampledWavelengths::sample_visible(samples_[count_].wavelength_u);
     if (++count_ == kCameraBatch) flush();
   }
 
   void flush() {
-    camera_.generate_rays(samples_, rays_, size_t(count_));
+    camera_.generate_rays(samples_, lambdas_, rays_, size_t(count_));
     for (int i = 0; i < count_; ++i) integrate(i);
     count_ = 0;
   }
@@ -76,8 +77,9 @@ class SampleBatch {
       return;
     }
     ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
-    RGB L = integrator_.radiance(cr->ray, *ts_.sampler, ts_.arena, tally_) * cr->weight;
-    film_.add_sample(pixels_[i], L, filter_weight);
+    SampledWavelengths& lambda = lambdas_[i];
+    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_) * cr->weight;
+    film_.add_sample(pixels_[i], L, lambda, filter_weight);
     ts_.arena.reset();
   }
 
@@ -90,6 +92,7 @@ class SampleBatch {
   IVec2 pixels_[kCameraBatch];
   int indices_[kCameraBatch];
   CameraSample samples_[kCameraBatch];
+  SampledWavelengths lambdas_[kCameraBatch];
   std::optional<CameraRay> rays_[kCameraBatch];
   int count_ = 0;
 };

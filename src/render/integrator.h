@@ -10,6 +10,7 @@
 #include "core/arena.h"
 #include "core/camera.h"
 #include "core/ray.h"
+#include "core/sampled_spectrum.h"
 #include "core/sampler.h"
 #include "render/tile_progress.h"
 
@@ -64,8 +65,10 @@ class Integrator {
   explicit Integrator(const Scene& scene) : scene_(scene) {}
   virtual ~Integrator() = default;
 
-  // Radiance arriving along `ray` (camera weight not included).
-  virtual RGB radiance(const Ray& ray, Sampler& sampler, ScratchBuffer& arena, RayTally& tally) const = 0;
+  // Radiance arriving along `ray` at the sample's wavelengths (camera weight not included).
+  // A path that splits by wavelength terminates lambda's secondary wavelengths.
+  virtual SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
+                                   RayTally& tally) const = 0;
   virtual std::string to_string() const = 0;
 
   // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel.

@@ -344,9 +344,9 @@ Vec3 PluginParams::get_vector3(const std::string& name) const {
   return has(name) ? list_.get_vector3(name, Vec3(0.f)) : vec3_default(with_default(name));
 }
 
-RGB PluginParams::get_rgb(const std::string& name) const {
-  if (has(name)) return *list_.get_rgb(name);
-  return RGB(float(default_number(name)));
+SpectrumValue PluginParams::get_spectrum(const std::string& name, SpectrumType type) const {
+  if (has(name)) return *list_.get_spectrum(name, type);
+  return {RGB(float(default_number(name))), {}};
 }
 
 float PluginParams::get_spectrum_at(const std::string& name, float lambda_nm) const {

@@ -125,7 +125,8 @@ class PluginParams {
   std::string get_string(const std::string& name) const;
   Vec3 get_point3(const std::string& name) const;
   Vec3 get_vector3(const std::string& name) const;
-  RGB get_rgb(const std::string& name) const;  // Spectrum: as linear RGB
+  // A spectrum parameter; absent: the declared default number c as RGB (c, c, c).
+  SpectrumValue get_spectrum(const std::string& name, SpectrumType type) const;
   float get_spectrum_at(const std::string& name, float lambda_nm) const;
   std::vector<float> get_floats(const std::string& name) const;
   std::vector<int> get_ints(const std::string& name) const;

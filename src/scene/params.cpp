@@ -103,21 +103,17 @@ Vec3 ParameterList::get_vector3(const std::string& name, const Vec3& def) const 
   return p ? vec3_of(*p) : def;
 }
 
-std::optional<RGB> ParameterList::get_rgb(const std::string& name) const {
+std::optional<SpectrumValue> ParameterList::get_spectrum(const std::string& name, SpectrumType type) const {
   const Param* p = find(name);
   if (!p) return std::nullopt;
   std::string t = p->canonical_type();
-  if (t == "rgb") {
-    lookup(name, "rgb", 3);
-    return vec3_of(*p);
-  }
-  if (t == "spectrum" || t == "blackbody") {
-    p->used = true;
-    check_numbers(*p);
-    return spectrum_param_to_rgb(*p);
-  }
-  eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name,
-                 p->type);
+  if (t != "rgb" && t != "spectrum" && t != "blackbody")
+    eyetrace::fail(p->loc, "parameter \"{}\" has type \"{}\" but must be \"rgb\", \"spectrum\" or \"blackbody\"", name,
+                   p->type);
+  if (t == "rgb") lookup(name, "rgb", 3);
+  p->used = true;
+  check_numbers(*p);
+  return spectrum_param_value(*p, type);
 }
 
 float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, float def) const {

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/math.h"
+#include "core/spectrum.h"
 
 namespace eyetrace {
 
@@ -42,8 +43,9 @@ class ParameterList {
   std::string get_string(const std::string& name, const std::string& def) const;
   Vec3 get_point3(const std::string& name, const Vec3& def) const;
   Vec3 get_vector3(const std::string& name, const Vec3& def) const;
-  // An "rgb", "spectrum" or "blackbody" parameter as linear RGB; nullopt if absent.
-  std::optional<RGB> get_rgb(const std::string& name) const;
+  // An "rgb", "spectrum" or "blackbody" parameter; nullopt if absent. `type` is what the
+  // plugin uses it as (a spectrum given as such that is an Illuminant is normalised).
+  std::optional<SpectrumValue> get_spectrum(const std::string& name, SpectrumType type) const;
   // A "spectrum", "rgb" (its green value) or "float" parameter at one wavelength; def if absent.
   float get_spectrum_at(const std::string& name, float lambda_nm, float def) const;
   // Name of a "texture" parameter, or "" when absent.

@@ -1,5 +1,4 @@
-// Spectrum-valued scene parameters ("spectrum" constants, [lambda value] pairs and named
-// spectra, "blackbody" temperatures) checked and converted through core/spectrum.h.
+// Spectrum-valued scene parameters, checked and kept as given (scene/spectrum_param.h).
 #include "scene/spectrum_param.h"
 
 #include <vector>
@@ -49,20 +48,24 @@ Pairs pairs_of(const Param& p) {
 
 }  // namespace
 
-RGB spectrum_param_to_rgb(const Param& p) {
-  std::string type = p.canonical_type();
-  if (type == "blackbody") {
+SpectrumValue spectrum_param_value(const Param& p, SpectrumType type) {
+  std::string t = p.canonical_type();
+  if (t == "rgb") {
+    if (p.numbers.size() != 3) fail(p.loc, "parameter \"{}\" takes 3 values, got {}", p.name, p.numbers.size());
+    return {RGB(float(p.numbers[0]), float(p.numbers[1]), float(p.numbers[2])), {}};
+  }
+  if (t == "blackbody") {
     if (p.numbers.size() != 1) fail(p.loc, "parameter \"{}\": blackbody takes one temperature in kelvin", p.name);
     // Below 100 K the visible tail spans more than float range; such a body is black anyway.
     if (!(p.numbers[0] >= 100.0 && p.numbers[0] <= 1e7))
       fail(p.loc, "parameter \"{}\": blackbody temperature {} K is outside [100, 1e7] K", p.name, p.numbers[0]);
-    return blackbody_to_rgb(float(p.numbers[0]));
+    return {std::nullopt, Spectrum::blackbody(float(p.numbers[0]))};
   }
-  if (type != "spectrum") fail(p.loc, "parameter \"{}\" of type \"{}\" is not a spectrum", p.name, p.type);
-  if (!p.strings.empty()) return named_spectrum_to_rgb(named_of(p));
-  if (p.numbers.size() == 1) return RGB(float(p.numbers[0]));
+  if (t != "spectrum") fail(p.loc, "parameter \"{}\" of type \"{}\" is not a spectrum", p.name, p.type);
+  if (!p.strings.empty()) return {std::nullopt, Spectrum::named(named_of(p), type)};
+  if (p.numbers.size() == 1) return {RGB(float(p.numbers[0])), {}};
   Pairs pairs = pairs_of(p);
-  return reflectance_spectrum_to_rgb(sample_spectrum(pairs.lambda, pairs.value));
+  return {std::nullopt, Spectrum::tabulated(std::move(pairs.lambda), std::move(pairs.value), type)};
 }
 
 float spectrum_param_at(const Param& p, float lambda_nm) {

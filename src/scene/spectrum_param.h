@@ -1,13 +1,16 @@
-// Spectrum-valued scene parameters: a "spectrum" (constant, [lambda value ...] pairs or a
-// named spectrum) or "blackbody" temperature to the renderer's RGB, and a "float",
-// "rgb" or "spectrum" parameter's value at one wavelength. Errors name the parameter.
+// Spectrum-valued scene parameters: "rgb" values, "spectrum" constants, [lambda value] pairs
+// and named spectra, "blackbody" temperatures, checked (errors name the parameter) and kept
+// as given until a plugin says what it uses them as (core/spectrum.h: SpectrumType).
 #pragma once
-#include "core/math.h"
+#include <optional>
+
+#include "core/spectrum.h"
 #include "scene/params.h"
 
 namespace eyetrace {
 
-RGB spectrum_param_to_rgb(const Param& p);
+// `type` matters only to spectra given as such: an Illuminant is normalised to luminance 1.
+SpectrumValue spectrum_param_value(const Param& p, SpectrumType type);
 // A refractive index at 550 nm, say; "rgb" gives its green channel.
 float spectrum_param_at(const Param& p, float lambda_nm);
 

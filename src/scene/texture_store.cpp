@@ -10,7 +10,9 @@ namespace {
 class FloatAsSpectrumTexture final : public SpectrumTexture {
  public:
   explicit FloatAsSpectrumTexture(const FloatTexture* f) : f_(f) {}
-  RGB evaluate(const TextureEvalContext& ctx) const override { return RGB(f_->evaluate(ctx)); }
+  SampledSpectrum evaluate(const TextureEvalContext& ctx, const SampledWavelengths&) const override {
+    return SampledSpectrum(f_->evaluate(ctx));
+  }
 
  private:
   const FloatTexture* f_;
@@ -120,9 +122,11 @@ const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList&
     if (const FloatTexture* f = named_float(tex)) return keep(std::make_unique<FloatAsSpectrumTexture>(f));
     unknown_texture(params, name, tex, "spectrum", names_of(spectra_));
   }
-  std::optional<RGB> rgb = params.get_rgb(name);
-  if (!rgb) return nullptr;
-  return keep(std::make_unique<ConstantSpectrumTexture>(*rgb));
+  // A texture's value is a reflectance-like shape: spectra given as such are not normalised.
+  std::optional<SpectrumValue> v = params.get_spectrum(name, SpectrumType::Albedo);
+  if (!v) return nullptr;
+  if (v->rgb) return keep(std::make_unique<ConstantSpectrumTexture>(*v->rgb));
+  return keep(std::make_unique<ConstantSpectrumTexture>(v->spectrum));
 }
 
 void* TextureStore::texture_system() {

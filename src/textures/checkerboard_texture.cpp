@@ -4,6 +4,7 @@
 
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
+#include "textures/texture_value.h"
 
 namespace eyetrace {
 
@@ -26,13 +27,15 @@ double filtered_square_wave(double x, double r) {
   return std::clamp(v, -1.0, 1.0);
 }
 
-template <typename Base, typename Value>
-class CheckerboardTexture final : public Base {
+template <typename Base>
+class CheckerboardTexture final : public TextureOf<Base> {
+  using Value = typename TextureOf<Base>::Value;
+
  public:
   CheckerboardTexture(const Base* tex1, const Base* tex2, int dimension, TextureMapping2D map2, TextureMapping3D map3)
       : tex1_(tex1), tex2_(tex2), dimension_(dimension), map2_(map2), map3_(map3) {}
 
-  Value evaluate(const TextureEvalContext& ctx) const override {
+  Value value(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const override {
     float w;
     if (dimension_ == 2) {
       TextureCoords c = map2_.map(ctx);
@@ -40,8 +43,8 @@ class CheckerboardTexture final : public Base {
     } else {
       w = checkerboard_3d(map3_.map(ctx));
     }
-    Value t1 = w != 1.f ? tex1_->evaluate(ctx) : Value(0.f);
-    Value t2 = w != 0.f ? tex2_->evaluate(ctx) : Value(0.f);
+    Value t1 = w != 1.f ? TextureOf<Base>::of(*tex1_, ctx, lambda) : Value(0.f);
+    Value t2 = w != 0.f ? TextureOf<Base>::of(*tex2_, ctx, lambda) : Value(0.f);
     return (1.f - w) * t1 + w * t2;
   }
 
@@ -53,7 +56,7 @@ class CheckerboardTexture final : public Base {
   TextureMapping3D map3_;
 };
 
-template <typename Base, typename Value>
+template <typename Base>
 std::unique_ptr<Base> create(const TextureContext& ctx, const PluginParams& p, const Base* tex1, const Base* tex2) {
   int dimension = p.get_int("dimension");
   TextureMapping2D map2;
@@ -64,7 +67,7 @@ std::unique_ptr<Base> create(const TextureContext& ctx, const PluginParams& p, c
     TextureMapping2D::reject(p, "a 3-D checkerboard has no 2-D mapping");
     map3 = TextureMapping3D::read(ctx);
   }
-  return std::make_unique<CheckerboardTexture<Base, Value>>(tex1, tex2, dimension, map2, map3);
+  return std::make_unique<CheckerboardTexture<Base>>(tex1, tex2, dimension, map2, map3);
 }
 
 }  // namespace
@@ -95,13 +98,13 @@ const PluginSpec& checkerboard_texture_spec() {
 
 std::unique_ptr<FloatTexture> create_checkerboard_float_texture(const TextureContext& ctx) {
   const PluginParams p(ctx.params, checkerboard_texture_spec(), "checkerboard");
-  return create<FloatTexture, float>(ctx, p, ctx.textures.float_param(p, "tex1"), ctx.textures.float_param(p, "tex2"));
+  return create<FloatTexture>(ctx, p, ctx.textures.float_param(p, "tex1"), ctx.textures.float_param(p, "tex2"));
 }
 
 std::unique_ptr<SpectrumTexture> create_checkerboard_spectrum_texture(const TextureContext& ctx) {
   const PluginParams p(ctx.params, checkerboard_texture_spec(), "checkerboard");
-  return create<SpectrumTexture, RGB>(ctx, p, ctx.textures.spectrum_param(p, "tex1"),
-                                      ctx.textures.spectrum_param(p, "tex2"));
+  return create<SpectrumTexture>(ctx, p, ctx.textures.spectrum_param(p, "tex1"),
+                                 ctx.textures.spectrum_param(p, "tex2"));
 }
 
 }  // namespace eyetrace

@@ -17,8 +17,10 @@ std::unique_ptr<FloatTexture> create_constant_float_texture(const TextureContext
 }
 
 std::unique_ptr<SpectrumTexture> create_constant_spectrum_texture(const TextureContext& ctx) {
-  return std::make_unique<ConstantSpectrumTexture>(
-      PluginParams(ctx.params, constant_texture_spec(), "constant").get_rgb("value"));
+  const SpectrumValue v =
+      PluginParams(ctx.params, constant_texture_spec(), "constant").get_spectrum("value", SpectrumType::Albedo);
+  if (v.rgb) return std::make_unique<ConstantSpectrumTexture>(*v.rgb);
+  return std::make_unique<ConstantSpectrumTexture>(v.spectrum);
 }
 
 }  // namespace eyetrace

@@ -169,16 +169,20 @@ class FloatImageTexture final : public FloatTexture {
   ImageLookup l_;
 };
 
-class SpectrumImageTexture final : public SpectrumTexture {
+class SpectrumImageTexture final : public ImageTexture {
  public:
   explicit SpectrumImageTexture(ImageLookup l) : l_(std::move(l)) {}
   // Grey images give grey; two-channel (grey, alpha) images use the grey channel.
-  RGB evaluate(const TextureEvalContext& ctx) const override {
+  RGB rgb(const TextureEvalContext& ctx) const override {
     float v[3];
     int n = l_.fetch(ctx, v);
     if (n == 0) return RGB(0.f);
     if (n < 3) return RGB(v[0]);
     return RGB(v[0], v[1], v[2]);
+  }
+  // The RGB to a spectrum at every lookup: the sigmoid table makes that a few dozen ns.
+  SampledSpectrum evaluate(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const override {
+    return Spectrum::from_rgb(rgb(ctx), ctx.spectrum_type).sample(lambda);
   }
 
  private:
@@ -192,6 +196,10 @@ std::unique_ptr<FloatTexture> create_imagemap_float_texture(const TextureContext
 }
 
 std::unique_ptr<SpectrumTexture> create_imagemap_spectrum_texture(const TextureContext& ctx) {
+  return create_imagemap_image_texture(ctx);
+}
+
+std::unique_ptr<ImageTexture> create_imagemap_image_texture(const TextureContext& ctx) {
   return std::make_unique<SpectrumImageTexture>(open_image(ctx));
 }
 

@@ -20,4 +20,12 @@ const PluginSpec& imagemap_texture_spec();
 std::unique_ptr<FloatTexture> create_imagemap_float_texture(const TextureContext& ctx);
 std::unique_ptr<SpectrumTexture> create_imagemap_spectrum_texture(const TextureContext& ctx);
 
+// The spectrum texture, which also answers with the image's RGB itself (what a normal map
+// reads: a direction, not a colour). Its spectrum is that RGB as the context's SpectrumType.
+class ImageTexture : public SpectrumTexture {
+ public:
+  virtual RGB rgb(const TextureEvalContext& ctx) const = 0;
+};
+std::unique_ptr<ImageTexture> create_imagemap_image_texture(const TextureContext& ctx);
+
 }  // namespace eyetrace

@@ -1,21 +1,24 @@
 #include "textures/mix_texture.h"
 
 #include "scene/texture_store.h"
+#include "textures/texture_value.h"
 
 namespace eyetrace {
 
 namespace {
 
-template <typename Base, typename Value>
-class MixTexture final : public Base {
+template <typename Base>
+class MixTexture final : public TextureOf<Base> {
+  using Value = typename TextureOf<Base>::Value;
+
  public:
   MixTexture(const Base* tex1, const Base* tex2, const FloatTexture* amount)
       : tex1_(tex1), tex2_(tex2), amount_(amount) {}
-  Value evaluate(const TextureEvalContext& ctx) const override {
+  Value value(const TextureEvalContext& ctx, const SampledWavelengths& lambda) const override {
     float a = amount_->evaluate(ctx);
     // Skip the texture whose weight is zero (it may be expensive).
-    Value t1 = a != 1.f ? tex1_->evaluate(ctx) : Value(0.f);
-    Value t2 = a != 0.f ? tex2_->evaluate(ctx) : Value(0.f);
+    Value t1 = a != 1.f ? TextureOf<Base>::of(*tex1_, ctx, lambda) : Value(0.f);
+    Value t2 = a != 0.f ? TextureOf<Base>::of(*tex2_, ctx, lambda) : Value(0.f);
     return (1.f - a) * t1 + a * t2;
   }
 
@@ -39,15 +42,15 @@ const PluginSpec& mix_texture_spec() {
 
 std::unique_ptr<FloatTexture> create_mix_float_texture(const TextureContext& ctx) {
   const PluginParams p(ctx.params, mix_texture_spec(), "mix");
-  return std::make_unique<MixTexture<FloatTexture, float>>(
+  return std::make_unique<MixTexture<FloatTexture>>(
       ctx.textures.float_param(p, "tex1"), ctx.textures.float_param(p, "tex2"), ctx.textures.float_param(p, "amount"));
 }
 
 std::unique_ptr<SpectrumTexture> create_mix_spectrum_texture(const TextureContext& ctx) {
   const PluginParams p(ctx.params, mix_texture_spec(), "mix");
-  return std::make_unique<MixTexture<SpectrumTexture, RGB>>(ctx.textures.spectrum_param(p, "tex1"),
-                                                            ctx.textures.spectrum_param(p, "tex2"),
-                                                            ctx.textures.float_param(p, "amount"));
+  return std::make_unique<MixTexture<SpectrumTexture>>(ctx.textures.spectrum_param(p, "tex1"),
+                                                       ctx.textures.spectrum_param(p, "tex2"),
+                                                       ctx.textures.float_param(p, "amount"));
 }
 
 }  // namespace eyetrace

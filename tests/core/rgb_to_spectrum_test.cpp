@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../support/ciede2000.h"
+#include "../support/color_checker.h"
 #include "core/cie_tables.h"
 
 namespace {
@@ -210,29 +211,10 @@ TEST(RGBToSpectrum, ClampsInputsToTheUnitCube) {
   EXPECT_EQ(table(glm::vec3(3.f)).max_value(), 1.f);
 }
 
-// The 24 patches of the X-Rite ColorChecker Classic as 8-bit sRGB (D65): the manufacturer's
-// values as tabulated in Wikipedia's "ColorChecker" article (column "Manufacturer's sRGB color
-// values", hex 735244, c29682, ...). Other public copies of X-Rite's table list the same 24
-// triples (one gives neutral 5 as 122, 122, 122 instead of 122, 122, 121).
-struct Patch {
-  const char* name;
-  int r, g, b;
-};
-const Patch kColorChecker[24] = {
-    {"dark skin", 115, 82, 68},   {"light skin", 194, 150, 130},  {"blue sky", 98, 122, 157},
-    {"foliage", 87, 108, 67},     {"blue flower", 133, 128, 177}, {"bluish green", 103, 189, 170},
-    {"orange", 214, 126, 44},     {"purplish blue", 80, 91, 166}, {"moderate red", 193, 90, 99},
-    {"purple", 94, 60, 108},      {"yellow green", 157, 188, 64}, {"orange yellow", 224, 163, 46},
-    {"blue", 56, 61, 150},        {"green", 70, 148, 73},         {"red", 175, 54, 60},
-    {"yellow", 231, 199, 31},     {"magenta", 187, 86, 149},      {"cyan", 8, 133, 161},
-    {"white 9.5", 243, 243, 242}, {"neutral 8", 200, 200, 200},   {"neutral 6.5", 160, 160, 160},
-    {"neutral 5", 122, 122, 121}, {"neutral 3.5", 85, 85, 85},    {"black 2", 52, 52, 52},
-};
-
 TEST(RGBToSpectrum, ColorCheckerRoundTripsBelowOneCiede2000) {
   double worst = 0.0, sum = 0.0;
   std::string worst_name;
-  for (const Patch& p : kColorChecker) {
+  for (const eyetrace::test::Patch& p : eyetrace::test::kColorChecker) {
     float r = float(srgb_decode(p.r)), g = float(srgb_decode(p.g)), b = float(srgb_decode(p.b));
     double de = round_trip_de00(r, g, b);
     EXPECT_LT(de, 1.0) << p.name;  // imperceptible

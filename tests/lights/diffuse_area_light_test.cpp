@@ -89,8 +89,9 @@ Estimate irradiance_estimate(const Light& light, const LightSampleContext& ctx, 
   Uniform rng(seed);
   std::vector<double> x(count, 0.0);
   for (int i = 0; i < count; ++i) {
-    auto s = light.sample_li(ctx, rng.next2());
-    if (s) x[i] = s->L.g * std::max(0.f, glm::dot(ctx.n, s->wi)) / s->pdf;
+    SampledWavelengths lambda = SampledWavelengths::sample_visible(rng.next());
+    auto s = light.sample_li(ctx, rng.next2(), lambda);
+    if (s) x[i] = luminance_estimate(s->L, lambda) * std::max(0.f, glm::dot(ctx.n, s->wi)) / s->pdf;
   }
   return estimate(x);
 }
@@ -98,7 +99,7 @@ Estimate irradiance_estimate(const Light& light, const LightSampleContext& ctx, 
 TEST(DiffuseAreaLight, DiskOnAxisIrradianceIsPiLSinSquaredAlpha) {
   const float R = 1.5f, h = 2.f, L = 3.f;
   FakeDisk disk(Vec3(0, 0, h), Vec3(0, 0, -1), R);
-  auto light = make_area(disk, {rgb_param("L", 1, L, 1)});
+  auto light = make_area(disk, {rgb_param("L", L, L, L)});
   Estimate e = irradiance_estimate(*light, LightSampleContext{Vec3(0), Vec3(0, 0, 1)}, 200000, 1);
   double sin2 = double(R) * R / (double(R) * R + double(h) * h);
   double expected = kPi * L * sin2;
@@ -124,7 +125,8 @@ TEST(DiffuseAreaLight, OneSidedIsDarkFromBehindTwoSidedIsNot) {
   auto one = make_area(away, {});
   LightSampleContext ctx{Vec3(0), Vec3(0, 0, 1)};
   Uniform rng(3);
-  for (int i = 0; i < 100; ++i) EXPECT_FALSE(one->sample_li(ctx, rng.next2()).has_value());
+  const SampledWavelengths lambda = test::wavelengths();
+  for (int i = 0; i < 100; ++i) EXPECT_FALSE(one->sample_li(ctx, rng.next2(), lambda).has_value());
   auto two = make_area(away, {bool_param("twosided", true)});
   Estimate e = irradiance_estimate(*two, ctx, 100000, 4);
   double expected = kPi * 1.0 * (1.0 / (1.0 + 4.0));
@@ -132,9 +134,9 @@ TEST(DiffuseAreaLight, OneSidedIsDarkFromBehindTwoSidedIsNot) {
 
   SurfaceInteraction hit;
   hit.n = Vec3(0, 0, 1);
-  EXPECT_EQ(one->L(hit, Vec3(0, 0, 1)), RGB(1.f));
-  EXPECT_EQ(one->L(hit, Vec3(0.3f, 0, -1)), RGB(0.f));
-  EXPECT_EQ(two->L(hit, Vec3(0.3f, 0, -1)), RGB(1.f));
+  EXPECT_TRUE(test::same(one->L(hit, Vec3(0, 0, 1), lambda), test::emission(1.f, lambda)));
+  EXPECT_TRUE(one->L(hit, Vec3(0.3f, 0, -1), lambda).is_black());
+  EXPECT_TRUE(test::same(two->L(hit, Vec3(0.3f, 0, -1), lambda), test::emission(1.f, lambda)));
 }
 
 TEST(DiffuseAreaLight, PdfLiEqualsSampleDensity) {
@@ -142,14 +144,15 @@ TEST(DiffuseAreaLight, PdfLiEqualsSampleDensity) {
   auto light = make_area(disk, {});
   LightSampleContext ctx{Vec3(0.2f, 0.1f, 0.f), glm::normalize(Vec3(0.1f, 0, 1))};
   Uniform rng(5);
+  const SampledWavelengths lambda = test::wavelengths();
   for (int i = 0; i < 1000; ++i) {
-    auto s = light->sample_li(ctx, rng.next2());
+    auto s = light->sample_li(ctx, rng.next2(), lambda);
     ASSERT_TRUE(s.has_value());
     SurfaceInteraction hit;
     hit.p = s->p_light;
     hit.n = s->n_light;
     EXPECT_NEAR(light->pdf_li(ctx, s->wi, &hit), s->pdf, 1e-4f * s->pdf);
-    EXPECT_EQ(light->L(hit, -s->wi), s->L);
+    EXPECT_TRUE(test::same(light->L(hit, -s->wi, lambda), s->L, 0.f));
   }
   EXPECT_EQ(light->pdf_li(ctx, Vec3(0, 0, 1), nullptr), 0.f);
 }
@@ -186,7 +189,8 @@ TEST(DiffuseAreaLight, PowerIsPiLAAndPowerParameterSetsIt) {
   EXPECT_NEAR(target->power(), 10.f, 1e-4f);
   SurfaceInteraction hit;
   hit.n = Vec3(0, 0, -1);
-  EXPECT_NEAR(target->L(hit, Vec3(0, 0, -1)).g, 10.f / kPi, 1e-5f);  // L = Phi / (pi A)
+  const float y = test::luminance_of([&](const SampledWavelengths& l) { return target->L(hit, Vec3(0, 0, -1), l); });
+  EXPECT_NEAR(y, 10.f / kPi, 2e-3f * 10.f / kPi);  // L = Phi / (pi A), luminance
 }
 
 // A scratch folder for the images the tests write, removed when the program exits.
@@ -219,13 +223,12 @@ TEST(DiffuseAreaLight, ImageEmissionIsLookedUpAtUOneMinusV) {
   SurfaceInteraction hit;
   hit.n = Vec3(0, 0, -1);
   hit.uv = Vec2(0.25f, 0.75f);
-  EXPECT_EQ(light->L(hit, Vec3(0, 0, -1)), RGB(2, 0, 0));
+  const SampledWavelengths lambda = test::wavelengths();
+  EXPECT_TRUE(test::same(light->L(hit, Vec3(0, 0, -1), lambda), test::emission(RGB(2, 0, 0), lambda), 1e-5f));
   hit.uv = Vec2(0.75f, 0.25f);
-  EXPECT_EQ(light->L(hit, Vec3(0, 0, -1)), RGB(2, 2, 2));
+  EXPECT_TRUE(test::same(light->L(hit, Vec3(0, 0, -1), lambda), test::emission(RGB(2, 2, 2), lambda), 1e-5f));
   hit.uv = Vec2(0.5f, 0.5f);  // the average of all four
-  RGB mid = light->L(hit, Vec3(0, 0, -1));
-  EXPECT_NEAR(mid.r, 1.f, 1e-5f);
-  EXPECT_NEAR(mid.b, 1.f, 1e-5f);
+  EXPECT_TRUE(test::same(light->L(hit, Vec3(0, 0, -1), lambda), test::emission(RGB(1, 1, 1), lambda), 1e-4f));
 }
 
 TEST(DiffuseAreaLight, BadParametersAreErrors) {

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "../support/spectral.h"
+#include "core/light.h"
+#include "core/spectrum.h"
 #include "scene/params.h"
 
 namespace eyetrace {
@@ -42,6 +45,20 @@ inline ParameterList make_params(std::vector<Param> ps) {
   ParameterList list(SourceLoc{"test.pbrt", 3, 1});
   for (auto& p : ps) list.add(std::move(p));
   return list;
+}
+
+// The luminance one sample at wavelengths lambda estimates (unbiased over their draw).
+inline float luminance_estimate(const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  return sampled_to_xyz(L, lambda).y;
+}
+
+// Luminance of the radiance light.sample_li(ctx, u) returns, integrated over wavelengths.
+template <typename LightT>
+float sample_luminance(const LightT& light, const LightSampleContext& ctx, Vec2 u) {
+  return test::luminance_of([&](const SampledWavelengths& l) {
+    auto s = light.sample_li(ctx, u, l);
+    return s ? s->L : SampledSpectrum(0.f);
+  });
 }
 
 // Uniform floats in [0, 1) from a fixed seed: every run sees the same numbers.

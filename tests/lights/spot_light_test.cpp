@@ -15,17 +15,21 @@ std::unique_ptr<Light> make_spot(std::vector<Param> ps, const Transform& t = Tra
   return create_spot_light(LightContext{params, t, ""});
 }
 
+// A grey spectrum's value relative to the white emission (the RGB grey level it stands for).
+float grey(const SampledSpectrum& s) { return s[1] / test::emission(1.f, test::wavelengths())[1]; }
+
 // Irradiance at distance 1 along a direction theta degrees off the +x axis (in the xy plane).
 float intensity_at(const Light& light, const Vec3& apex, float theta_deg) {
   float t = radians(theta_deg);
   Vec3 p = apex + Vec3(std::cos(t), std::sin(t), 0.f);
-  auto s = light.sample_li(LightSampleContext{p, Vec3(0)}, Vec2(0.5f));
-  return s ? s->L.g : 0.f;  // at distance 1, L = I
+  const SampledWavelengths lambda = test::wavelengths();
+  auto s = light.sample_li(LightSampleContext{p, Vec3(0)}, Vec2(0.5f), lambda);
+  return s ? s->L[1] / test::emission(1.f, lambda)[1] : 0.f;  // at distance 1, L = I (grey)
 }
 
 TEST(SpotLight, FalloffAtConeEdgesIsSmoothstep) {
   // Axis +x; full within 20 degrees, zero beyond 30.
-  auto light = make_spot({rgb_param("I", 1, 7, 1), point_param("from", 1, 1, 0), point_param("to", 2, 1, 0),
+  auto light = make_spot({rgb_param("I", 7, 7, 7), point_param("from", 1, 1, 0), point_param("to", 2, 1, 0),
                           float_param("coneangle", 30), float_param("conedeltaangle", 10)});
   Vec3 apex(1, 1, 0);
   float cs = std::cos(radians(20.f)), ce = std::cos(radians(30.f));
@@ -48,22 +52,25 @@ TEST(SpotLight, FalloffAtConeEdgesIsSmoothstep) {
 
 TEST(SpotLight, DefaultsPointAlongPlusZWithThirtyDegreeCone) {
   auto light = make_spot({});
-  auto s = light->sample_li(LightSampleContext{Vec3(0, 0, 2), Vec3(0)}, Vec2(0.5f));
+  const SampledWavelengths lambda = test::wavelengths();
+  auto s = light->sample_li(LightSampleContext{Vec3(0, 0, 2), Vec3(0)}, Vec2(0.5f), lambda);
   ASSERT_TRUE(s.has_value());
-  EXPECT_FLOAT_EQ(s->L.r, 0.25f);
+  EXPECT_TRUE(test::same(s->L, test::emission(0.25f, lambda), 1e-6f));
   float t31 = radians(31.f);
-  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(std::sin(t31), 0, std::cos(t31)), Vec3(0)}, Vec2(0.5f)));
-  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(0, 0, -2), Vec3(0)}, Vec2(0.5f)));
+  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(std::sin(t31), 0, std::cos(t31)), Vec3(0)}, Vec2(0.5f),
+                                test::wavelengths()));
+  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(0, 0, -2), Vec3(0)}, Vec2(0.5f), test::wavelengths()));
 }
 
 TEST(SpotLight, TransformMovesAndTurnsTheCone) {
   // -90 degrees about x turns +z onto +y; then up by 3.
   auto light = make_spot({}, translate(Vec3(0, 3, 0)) * rotate(-90.f, Vec3(1, 0, 0)));
-  auto s = light->sample_li(LightSampleContext{Vec3(0, 5, 0), Vec3(0)}, Vec2(0.5f));
+  const SampledWavelengths lambda = test::wavelengths();
+  auto s = light->sample_li(LightSampleContext{Vec3(0, 5, 0), Vec3(0)}, Vec2(0.5f), lambda);
   ASSERT_TRUE(s.has_value());
-  EXPECT_NEAR(s->L.r, 0.25f, 1e-5f);
+  EXPECT_TRUE(test::same(s->L, test::emission(0.25f, lambda), 1e-5f));
   EXPECT_NEAR(glm::distance(s->p_light, Vec3(0, 3, 0)), 0.f, 1e-5f);
-  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(0, 3, 2), Vec3(0)}, Vec2(0.5f)));
+  EXPECT_FALSE(light->sample_li(LightSampleContext{Vec3(0, 3, 2), Vec3(0)}, Vec2(0.5f), test::wavelengths()));
 }
 
 // Power by midpoint quadrature of I(theta) 2 pi sin(theta) d(theta).
@@ -73,7 +80,7 @@ double integrated_power(const SpotLight& light) {
   for (int i = 0; i < n; ++i) {
     double theta = (i + 0.5) * kPi / n;
     Vec3 w(0.f, float(std::sin(theta)), float(std::cos(theta)));
-    sum += light.intensity(w).g * 2.0 * kPi * std::sin(theta) * (kPi / n);
+    sum += grey(light.intensity(w, test::wavelengths())) * 2.0 * kPi * std::sin(theta) * (kPi / n);
   }
   return sum;
 }
@@ -100,9 +107,9 @@ TEST(SpotLight, DeltaLargerThanConeWarnsAndFallsOffFromTheAxis) {
   set_warnings_enabled(true);
   EXPECT_EQ(warning_count(), before + 1);
   const auto& spot = dynamic_cast<const SpotLight&>(*light);
-  EXPECT_FLOAT_EQ(spot.intensity(Vec3(0, 0, 1)).r, 1.f);
+  EXPECT_FLOAT_EQ(grey(spot.intensity(Vec3(0, 0, 1), test::wavelengths())), 1.f);
   float t5 = radians(5.f);
-  float i5 = spot.intensity(Vec3(std::sin(t5), 0, std::cos(t5))).r;
+  float i5 = grey(spot.intensity(Vec3(std::sin(t5), 0, std::cos(t5)), test::wavelengths()));
   EXPECT_GT(i5, 0.f);
   EXPECT_LT(i5, 1.f);
 }

@@ -6,6 +6,8 @@
 //  - reciprocity f(wo, wi) = f(wi, wo) for reflection (transmission: dielectric_test.cpp).
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include <functional>
 #include <random>
 
@@ -34,13 +36,14 @@ SurfaceInteraction flat_hit() {
   return si;
 }
 
-const RGB kCuEta(0.104f, 0.978f, 1.205f), kCuK(3.273f, 2.592f, 2.369f);
+const SampledSpectrum kCuEta = test::channels(0.104f, 0.978f, 1.205f), kCuK = test::channels(3.273f, 2.592f, 2.369f);
 
 std::vector<Case> cases() {
   auto mf = [](float ax, float ay) { return TrowbridgeReitz(ax, ay); };
   auto coat = [](float eta) { return CoatConstants::make(eta); };
   return {
-      {"lambertian", [](auto& a, auto& si) { return make_local_bsdf(a, si, LambertianBxDF(RGB(1.f, 0.8f, 0.3f))); }},
+      {"lambertian",
+       [](auto& a, auto& si) { return make_local_bsdf(a, si, LambertianBxDF(test::channels(1.f, 0.8f, 0.3f))); }},
       {"dielectric_smooth",
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, DielectricBxDF(1.5f, mf(0.f, 0.f))); }, true},
       {"dielectric_rough",
@@ -52,18 +55,24 @@ std::vector<Case> cases() {
       {"conductor_rough",
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, ConductorBxDF(mf(0.3f, 0.3f), kCuEta, kCuK)); }},
       {"conductor_aniso",
-       [=](auto& a, auto& si) { return make_local_bsdf(a, si, ConductorBxDF(mf(0.1f, 0.4f), RGB(1.f), RGB(8.f))); }},
+       [=](auto& a, auto& si) {
+         return make_local_bsdf(a, si, ConductorBxDF(mf(0.1f, 0.4f), SampledSpectrum(1.f), SampledSpectrum(8.f)));
+       }},
       {"coated_smooth_white",
        [=](auto& a, auto& si) {
-         return make_local_bsdf(a, si, CoatedDiffuseBxDF(coat(1.5f), mf(0.f, 0.f), RGB(1.f), RGB(0.f)));
+         return make_local_bsdf(
+             a, si, CoatedDiffuseBxDF(coat(1.5f), mf(0.f, 0.f), SampledSpectrum(1.f), SampledSpectrum(0.f)));
        }},
       {"coated_rough_white",
        [=](auto& a, auto& si) {
-         return make_local_bsdf(a, si, CoatedDiffuseBxDF(coat(1.5f), mf(0.3f, 0.3f), RGB(1.f), RGB(0.f)));
+         return make_local_bsdf(
+             a, si, CoatedDiffuseBxDF(coat(1.5f), mf(0.3f, 0.3f), SampledSpectrum(1.f), SampledSpectrum(0.f)));
        }},
       {"coated_rough_dense",
        [=](auto& a, auto& si) {
-         return make_local_bsdf(a, si, CoatedDiffuseBxDF(coat(2.4f), mf(0.6f, 0.6f), RGB(0.9f, 0.5f, 0.1f), RGB(0.2f)));
+         return make_local_bsdf(
+             a, si,
+             CoatedDiffuseBxDF(coat(2.4f), mf(0.6f, 0.6f), test::channels(0.9f, 0.5f, 0.1f), SampledSpectrum(0.2f)));
        }},
   };
 }
@@ -97,18 +106,18 @@ TEST_P(BsdfProperties, DirectionalAlbedoIsAtMostOne) {
   for (bool below : {false, true})
     for (float theta : {0.f, 30.f, 60.f, 80.f, 88.f}) {
       Vec3 wo = direction(theta, 0.7f, below);
-      RGB sum(0.f), sum2(0.f);
+      SampledSpectrum sum(0.f), sum2(0.f);
       for (int i = 0; i < n; ++i) {
         auto s = b->sample_f(wo, u01(rng), Vec2(u01(rng), u01(rng)));
         if (!s) continue;
-        RGB w = s->f * std::abs(s->wi.z) / s->pdf;
+        SampledSpectrum w = s->f * std::abs(s->wi.z) / s->pdf;
         if (s->flags & kTransmission) w *= sqr(s->eta);  // energy, not radiance
         sum += w;
         sum2 += w * w;
       }
-      RGB mean = sum / float(n);
-      RGB se = glm::sqrt(glm::max(RGB(0.f), sum2 / float(n) - mean * mean) / float(n));
-      for (int c = 0; c < 3; ++c)
+      SampledSpectrum mean = sum / float(n);
+      SampledSpectrum se = sqrt(test::max0(sum2 / float(n) - mean * mean) / float(n));
+      for (int c = 0; c < kSpectrumSamples; ++c)
         EXPECT_LE(mean[c], 1.f + 4.f * se[c] + 1e-4f) << GetParam().name << " theta " << theta << " below " << below;
     }
 }
@@ -129,9 +138,10 @@ TEST_P(BsdfProperties, SamplesAgreeWithEvaluation) {
         if (GetParam().all_specular) EXPECT_EQ(b->pdf(wo, s->wi), 0.f) << "specular directions have no density";
         continue;
       }
-      RGB f = b->f(wo, s->wi);
+      SampledSpectrum f = b->f(wo, s->wi);
       float pdf = b->pdf(wo, s->wi);
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(s->f[c], f[c], 1e-3f * std::max(1.f, f[c])) << GetParam().name;
+      for (int c = 0; c < kSpectrumSamples; ++c)
+        EXPECT_NEAR(s->f[c], f[c], 1e-3f * std::max(1.f, f[c])) << GetParam().name;
       EXPECT_NEAR(s->pdf, pdf, 1e-3f * std::max(1.f, pdf)) << GetParam().name;
       ++checked;
     }
@@ -179,8 +189,8 @@ TEST_P(BsdfProperties, ReflectionIsReciprocal) {
   for (int i = 0; i < 500; ++i) {
     Vec3 wo = sample_uniform_hemisphere(Vec2(u01(rng), u01(rng)));
     Vec3 wi = sample_uniform_hemisphere(Vec2(u01(rng), u01(rng)));
-    RGB a = b->f(wo, wi), c = b->f(wi, wo);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], c[k], 1e-4f * std::max(1.f, a[k])) << GetParam().name;
+    SampledSpectrum a = b->f(wo, wi), c = b->f(wi, wo);
+    for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_NEAR(a[k], c[k], 1e-4f * std::max(1.f, a[k])) << GetParam().name;
   }
 }
 

@@ -2,6 +2,8 @@
 // without absorption reflects everything) and its parameters.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include <random>
 
 #include "core/arena.h"
@@ -28,28 +30,29 @@ Param number(const std::string& type, const std::string& name, std::vector<doubl
 }
 
 // Mean of f cos / pdf over n samples, and its standard error.
-std::pair<RGB, RGB> albedo(const BSDF& b, const Vec3& wo, int n, unsigned seed) {
+std::pair<SampledSpectrum, SampledSpectrum> albedo(const BSDF& b, const Vec3& wo, int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u01(0.f, kOneMinusEpsilon);
-  RGB sum(0.f), sum2(0.f);
+  SampledSpectrum sum(0.f), sum2(0.f);
   for (int i = 0; i < n; ++i) {
     auto s = b.sample_f(wo, u01(rng), Vec2(u01(rng), u01(rng)));
     if (!s) continue;
-    RGB w = s->f * std::abs(s->wi.z) / s->pdf;
+    SampledSpectrum w = s->f * std::abs(s->wi.z) / s->pdf;
     sum += w;
     sum2 += w * w;
   }
-  RGB mean = sum / float(n);
-  return {mean, glm::sqrt(glm::max(RGB(0.f), sum2 / float(n) - mean * mean) / float(n))};
+  SampledSpectrum mean = sum / float(n);
+  return {mean, sqrt(test::max0(sum2 / float(n) - mean * mean) / float(n))};
 }
 
 TEST(CoatedDiffuseBxDF, WithoutCoatItIsLambertian) {
-  CoatedDiffuseBxDF b(CoatConstants::make(1.f), TrowbridgeReitz(0.f, 0.f), RGB(0.3f, 0.6f, 0.9f), RGB(0.f));
+  CoatedDiffuseBxDF b(CoatConstants::make(1.f), TrowbridgeReitz(0.f, 0.f), test::channels(0.3f, 0.6f, 0.9f),
+                      SampledSpectrum(0.f));
   Vec3 wo = glm::normalize(Vec3(0.4f, 0.1f, 0.6f)), wi = glm::normalize(Vec3(-0.2f, 0.5f, 0.3f));
-  RGB f = b.f(wo, wi);
-  EXPECT_NEAR(f.r, 0.3f / kPi, 1e-4f);
-  EXPECT_NEAR(f.g, 0.6f / kPi, 1e-4f);
-  EXPECT_NEAR(f.b, 0.9f / kPi, 1e-4f);
+  SampledSpectrum f = b.f(wo, wi);
+  EXPECT_NEAR(f[0], 0.3f / kPi, 1e-4f);
+  EXPECT_NEAR(f[1], 0.6f / kPi, 1e-4f);
+  EXPECT_NEAR(f[2], 0.9f / kPi, 1e-4f);
 }
 
 TEST(CoatedDiffuseBxDF, MeanCoatTransmittanceIsOneMinusDiffuseFresnel) {
@@ -76,12 +79,13 @@ TEST(CoatedDiffuseBxDF, WhiteNonAbsorbingLayerReflectsAllLight) {
   // With R = 1, no absorption and a smooth coat, the model's albedo is F + (1 - F) = 1 for
   // every direction: energy is conserved exactly, not merely bounded.
   ScratchBuffer arena;
-  const BSDF* b = make_local_bsdf(
-      arena, hit(), CoatedDiffuseBxDF(CoatConstants::make(1.5f), TrowbridgeReitz(0.f, 0.f), RGB(1.f), RGB(0.f)));
+  const BSDF* b = make_local_bsdf(arena, hit(),
+                                  CoatedDiffuseBxDF(CoatConstants::make(1.5f), TrowbridgeReitz(0.f, 0.f),
+                                                    SampledSpectrum(1.f), SampledSpectrum(0.f)));
   for (float theta : {0.f, 45.f, 75.f, 89.f}) {
     Vec3 wo(std::sin(radians(theta)), 0.f, std::cos(radians(theta)));
     auto [mean, se] = albedo(*b, wo, 200000, 17);
-    EXPECT_NEAR(mean.g, 1.f, 4.f * se.g + 1e-4f) << theta;
+    EXPECT_NEAR(mean[1], 1.f, 4.f * se[1] + 1e-4f) << theta;
   }
 }
 
@@ -89,13 +93,14 @@ TEST(CoatedDiffuseBxDF, AbsorbingLayerIsDarker) {
   ScratchBuffer arena;
   SurfaceInteraction si = hit();
   auto coat = CoatConstants::make(1.5f);
-  const BSDF* clear =
-      make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f)));
-  const BSDF* tinted =
-      make_local_bsdf(arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), RGB(0.8f), RGB(0.f, 0.f, 0.5f)));
+  const BSDF* clear = make_local_bsdf(
+      arena, si, CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), SampledSpectrum(0.8f), SampledSpectrum(0.f)));
+  const BSDF* tinted = make_local_bsdf(
+      arena, si,
+      CoatedDiffuseBxDF(coat, TrowbridgeReitz(0.f, 0.f), SampledSpectrum(0.8f), test::channels(0.f, 0.f, 0.5f)));
   Vec3 wo(0.f, 0.f, 1.f), wi = glm::normalize(Vec3(0.3f, 0.f, 1.f));
-  EXPECT_NEAR(tinted->f(wo, wi).r, clear->f(wo, wi).r, 1e-7f);
-  EXPECT_LT(tinted->f(wo, wi).b, 0.5f * clear->f(wo, wi).b);
+  EXPECT_NEAR(tinted->f(wo, wi)[0], clear->f(wo, wi)[0], 1e-7f);
+  EXPECT_LT(tinted->f(wo, wi)[2], 0.5f * clear->f(wo, wi)[2]);
 }
 
 TEST(CoatedDiffuseMaterial, ReadsEveryPbrtV4Parameter) {
@@ -112,9 +117,10 @@ TEST(CoatedDiffuseMaterial, ReadsEveryPbrtV4Parameter) {
   auto m = create_coateddiffuse_material(MaterialContext{p, store, ""});
   for (const auto& param : p.params()) EXPECT_TRUE(param.used) << param.name;
   ScratchBuffer arena;
-  const BSDF* b = m->bsdf(hit(), arena);
+  SampledWavelengths lambda = test::wavelengths();
+  const BSDF* b = m->bsdf(hit(), lambda, arena);
   EXPECT_EQ(b->flags(), unsigned(kReflection | kDiffuse | kGlossy));
-  EXPECT_TRUE(is_finite(b->albedo()));
+  EXPECT_TRUE(is_finite(b->f(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1)))));
 }
 
 }  // namespace

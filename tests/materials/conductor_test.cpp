@@ -1,6 +1,8 @@
 // The "conductor" material: complex Fresnel per channel, pbrt-v4's parameter forms.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include "core/arena.h"
 #include "materials/conductor_material.h"
 #include "scene/spectrum_param.h"
@@ -27,42 +29,57 @@ Param param(const std::string& type, const std::string& name, std::vector<double
 }
 
 // Reflectance of a smooth conductor seen along the normal: the specular sample's weight.
-RGB normal_reflectance(const ParameterList& p) {
+// At the test wavelengths (about 494, 559, 635, 398 nm).
+SampledSpectrum normal_reflectance(const ParameterList& p) {
   TextureStore store;
   auto m = create_conductor_material(MaterialContext{p, store, ""});
   ScratchBuffer arena;
-  const BSDF* b = m->bsdf(hit(), arena);
+  SampledWavelengths lambda = test::wavelengths();
+  const BSDF* b = m->bsdf(hit(), lambda, arena);
   auto s = b->sample_f(Vec3(0.f, 0.f, 1.f), 0.5f, Vec2(0.5f));
   EXPECT_TRUE(s && s->is_specular());
-  return s ? s->f * std::abs(s->wi.z) / s->pdf : RGB(-1.f);
+  return s ? s->f * std::abs(s->wi.z) / s->pdf : SampledSpectrum(-1.f);
 }
 
-RGB expected_f0(RGB n, RGB k) { return ((n - 1.f) * (n - 1.f) + k * k) / ((n + 1.f) * (n + 1.f) + k * k); }
+SampledSpectrum expected_f0(SampledSpectrum n, SampledSpectrum k) {
+  SampledSpectrum r;
+  for (int c = 0; c < kSpectrumSamples; ++c)
+    r[c] = ((n[c] - 1.f) * (n[c] - 1.f) + k[c] * k[c]) / ((n[c] + 1.f) * (n[c] + 1.f) + k[c] * k[c]);
+  return r;
+}
+
+// A named spectrum at the test wavelengths, straight from its table.
+SampledSpectrum named_at(const char* name) {
+  SampledSpectrum s;
+  for (int c = 0; c < kSpectrumSamples; ++c)
+    s[c] = evaluate_named_spectrum(*find_named_spectrum(name), test::wavelengths()[c]);
+  return s;
+}
 
 TEST(ConductorMaterial, NormalIncidenceReflectance) {
   ParameterList p;
   p.add(param("rgb", "eta", {0.2, 0.9, 1.1}));
   p.add(param("rgb", "k", {3.9, 2.4, 2.1}));
-  RGB r = normal_reflectance(p), e = expected_f0(RGB(0.2f, 0.9f, 1.1f), RGB(3.9f, 2.4f, 2.1f));
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(r[c], e[c], 1e-5f);
+  const SampledWavelengths l = test::wavelengths();
+  const auto unbounded = [&](RGB c) { return Spectrum::from_rgb(c, SpectrumType::Unbounded).sample(l); };
+  SampledSpectrum r = normal_reflectance(p),
+                  e = expected_f0(unbounded(RGB(0.2f, 0.9f, 1.1f)), unbounded(RGB(3.9f, 2.4f, 2.1f)));
+  for (int c = 0; c < kSpectrumSamples; ++c) EXPECT_NEAR(r[c], e[c], 1e-5f);
 }
 
 TEST(ConductorMaterial, DefaultsToCopper) {
   ParameterList p;
-  Param eta = param("spectrum", "eta", {}, {"metal-Cu-eta"}), k = param("spectrum", "k", {}, {"metal-Cu-k"});
-  RGB r = normal_reflectance(p), e = expected_f0(spectrum_param_to_rgb(eta), spectrum_param_to_rgb(k));
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(r[c], e[c], 1e-5f);
-  EXPECT_GT(r.r, r.g);
-  EXPECT_GT(r.g, r.b);
+  SampledSpectrum r = normal_reflectance(p), e = expected_f0(named_at("metal-Cu-eta"), named_at("metal-Cu-k"));
+  for (int c = 0; c < kSpectrumSamples; ++c) EXPECT_NEAR(r[c], e[c], 1e-5f);
+  EXPECT_GT(r[2], r[1]);  // copper reflects red (635 nm) more than green (559 nm)
+  EXPECT_GT(r[1], r[3]);  // and green more than violet (398 nm)
 }
 
 TEST(ConductorMaterial, ReflectanceParameterGivesThatNormalReflectance) {
   ParameterList p;
   p.add(param("rgb", "reflectance", {0.9, 0.5, 0.1}));
-  RGB r = normal_reflectance(p);
-  EXPECT_NEAR(r.r, 0.9f, 1e-4f);
-  EXPECT_NEAR(r.g, 0.5f, 1e-4f);
-  EXPECT_NEAR(r.b, 0.1f, 1e-4f);
+  SampledSpectrum r = normal_reflectance(p), e = test::albedo(RGB(0.9f, 0.5f, 0.1f), test::wavelengths());
+  for (int c = 0; c < kSpectrumSamples; ++c) EXPECT_NEAR(r[c], e[c], 1e-4f);
 }
 
 TEST(ConductorMaterial, ReflectanceAndEtaTogetherIsAnError) {
@@ -83,12 +100,13 @@ TEST(ConductorMaterial, GrazingReflectanceApproachesOne) {
   TextureStore store;
   auto m = create_conductor_material(MaterialContext{p, store, ""});
   ScratchBuffer arena;
-  const BSDF* b = m->bsdf(hit(), arena);
+  SampledWavelengths lambda = test::wavelengths();
+  const BSDF* b = m->bsdf(hit(), lambda, arena);
   Vec3 wo(std::sin(1.56f), 0.f, std::cos(1.56f));
   auto s = b->sample_f(wo, 0.5f, Vec2(0.5f));
   ASSERT_TRUE(s);
-  RGB r = s->f * std::abs(s->wi.z) / s->pdf;
-  for (int c = 0; c < 3; ++c) EXPECT_GT(r[c], 0.95f);
+  SampledSpectrum r = s->f * std::abs(s->wi.z) / s->pdf;
+  for (int c = 0; c < kSpectrumSamples; ++c) EXPECT_GT(r[c], 0.95f);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // refraction, Snell's law, radiance scaling, and its "eta" parameter forms.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include <random>
 
 #include "core/arena.h"
@@ -12,6 +14,8 @@
 
 namespace eyetrace {
 namespace {
+
+SampledWavelengths g_lambda = test::wavelengths();
 
 SurfaceInteraction hit() {
   SurfaceInteraction si;
@@ -30,9 +34,12 @@ Param param(const std::string& type, const std::string& name, std::vector<double
   return p;
 }
 
-float eta_of(const Material& m) {
+// The index the BSDF uses; `dispersed` tells whether the path kept only its hero wavelength.
+float eta_of(const Material& m, bool* dispersed = nullptr) {
   ScratchBuffer arena;
-  auto* b = dynamic_cast<const LocalBSDF<DielectricBxDF>*>(m.bsdf(hit(), arena));
+  SampledWavelengths lambda = test::wavelengths();
+  auto* b = dynamic_cast<const LocalBSDF<DielectricBxDF>*>(m.bsdf(hit(), lambda, arena));
+  if (dispersed) *dispersed = lambda.secondary_terminated();
   EXPECT_NE(b, nullptr);
   return b ? b->bxdf().eta() : 0.f;
 }
@@ -51,8 +58,8 @@ TEST(DielectricBxDF, ChoosesReflectionWithFresnelProbability) {
   EXPECT_TRUE(t->flags & kTransmission);
   EXPECT_NEAR(r->pdf, f, 1e-6f);
   EXPECT_NEAR(t->pdf, 1.f - f, 1e-6f);
-  EXPECT_NEAR(r->f.r * std::abs(r->wi.z) / r->pdf, 1.f, 1e-5f);
-  EXPECT_NEAR(t->f.r * std::abs(t->wi.z) / t->pdf, 1.f / (1.5f * 1.5f), 1e-5f);
+  EXPECT_NEAR(r->f[0] * std::abs(r->wi.z) / r->pdf, 1.f, 1e-5f);
+  EXPECT_NEAR(t->f[0] * std::abs(t->wi.z) / t->pdf, 1.f / (1.5f * 1.5f), 1e-5f);
   EXPECT_EQ(t->eta, 1.5f);
   // Mirror and Snell directions.
   EXPECT_NEAR(r->wi.x, -wo.x, 1e-6f);
@@ -79,7 +86,7 @@ TEST(DielectricBxDF, EtaOneIsInvisible) {
   auto s = d.sample_f(wo, 0.3f, Vec2(0.5f));
   ASSERT_TRUE(s);
   EXPECT_NEAR(glm::length(s->wi + wo), 0.f, 1e-6f);
-  EXPECT_NEAR(s->f.r * std::abs(s->wi.z) / s->pdf, 1.f, 1e-6f);
+  EXPECT_NEAR(s->f[0] * std::abs(s->wi.z) / s->pdf, 1.f, 1e-6f);
   EXPECT_EQ(d.flags(), unsigned(kTransmission | kSpecular));
 }
 
@@ -95,7 +102,7 @@ TEST(DielectricBxDF, RoughTransmissionObeysGeneralisedReciprocity) {
       Vec3 wo = sample_uniform_hemisphere(Vec2(u01(rng), u01(rng)));
       Vec3 wi = sample_uniform_hemisphere(Vec2(u01(rng), u01(rng)));
       wi.z = -wi.z;
-      float a = d.f(wo, wi).r, c = d.f(wi, wo).r;
+      float a = d.f(wo, wi)[0], c = d.f(wi, wo)[0];
       EXPECT_NEAR(c, eta * eta * a, 1e-4f * std::max(1.f, c));
       nonzero += a > 0.f;
     }
@@ -112,18 +119,28 @@ TEST(DielectricMaterial, EtaForms) {
   {
     ParameterList p;
     p.add(param("float", "eta", {1.33}));
-    EXPECT_FLOAT_EQ(eta_of(*create_dielectric_material(MaterialContext{p, store, ""})), 1.33f);
+    bool dispersed = true;
+    EXPECT_FLOAT_EQ(eta_of(*create_dielectric_material(MaterialContext{p, store, ""}), &dispersed), 1.33f);
+    EXPECT_FALSE(dispersed);
   }
   {
     ParameterList p;
     p.add(param("spectrum", "eta", {}, {"glass-BK7"}));
-    EXPECT_NEAR(eta_of(*create_dielectric_material(MaterialContext{p, store, ""})), 1.5185f, 5e-4f);
+    // The hero wavelength is about 494 nm: Schott gives n_F' = 1.52283 at 479.99 nm and
+    // n_e = 1.51872 at 546.07 nm; the path keeps its hero wavelength only.
+    bool dispersed = false;
+    const float eta = eta_of(*create_dielectric_material(MaterialContext{p, store, ""}), &dispersed);
+    const float l = test::wavelengths()[0];
+    EXPECT_NEAR(eta, 1.52283f + (l - 479.99f) * (1.51872f - 1.52283f) / (546.07f - 479.99f), 5e-4f);
+    EXPECT_TRUE(dispersed);
     EXPECT_TRUE(p.find("eta")->used);
   }
   {
     ParameterList p;
     p.add(param("spectrum", "eta", {400, 1.6, 700, 1.4}));
-    EXPECT_NEAR(eta_of(*create_dielectric_material(MaterialContext{p, store, ""})), 1.5f, 1e-5f);
+    const float l = test::wavelengths()[0];
+    EXPECT_NEAR(eta_of(*create_dielectric_material(MaterialContext{p, store, ""})), 1.6f - 0.2f * (l - 400.f) / 300.f,
+                1e-5f);
   }
 }
 
@@ -147,7 +164,7 @@ TEST(DielectricMaterial, RoughnessIsRemapped) {
   p.add(param("float", "roughness", {0.01}));
   auto m = create_dielectric_material(MaterialContext{p, store, ""});
   ScratchBuffer arena;
-  EXPECT_EQ(m->bsdf(hit(), arena)->flags() & kGlossy, unsigned(kGlossy));
+  EXPECT_EQ(m->bsdf(hit(), g_lambda, arena)->flags() & kGlossy, unsigned(kGlossy));
   ParameterList q;
   q.add(param("float", "roughness", {0.0005}));
   Param b;
@@ -156,7 +173,7 @@ TEST(DielectricMaterial, RoughnessIsRemapped) {
   b.bools = {false};
   q.add(b);
   auto smooth = create_dielectric_material(MaterialContext{q, store, ""});
-  EXPECT_EQ(smooth->bsdf(hit(), arena)->flags() & kSpecular, unsigned(kSpecular));
+  EXPECT_EQ(smooth->bsdf(hit(), g_lambda, arena)->flags() & kSpecular, unsigned(kSpecular));
 }
 
 }  // namespace

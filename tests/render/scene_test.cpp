@@ -18,13 +18,15 @@ namespace {
 
 class NullMaterial : public Material {
  public:
-  const BSDF* bsdf(const SurfaceInteraction&, ScratchBuffer&) const override { return nullptr; }
+  const BSDF* bsdf(const SurfaceInteraction&, SampledWavelengths&, ScratchBuffer&) const override { return nullptr; }
 };
 
 class RecordingLight : public Light {
  public:
   explicit RecordingLight(bool infinite) : infinite_(infinite) {}
-  std::optional<LightLiSample> sample_li(const LightSampleContext&, Vec2) const override { return std::nullopt; }
+  std::optional<LightLiSample> sample_li(const LightSampleContext&, Vec2, const SampledWavelengths&) const override {
+    return std::nullopt;
+  }
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return infinite_; }

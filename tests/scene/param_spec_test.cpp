@@ -115,7 +115,7 @@ TEST(ParamSpec, DefaultsComeFromTheTable) {
   EXPECT_EQ(p.get_float("lensradius"), 0.f);
   EXPECT_EQ(p.get_int("count"), 4);
   EXPECT_EQ(p.get_string("mapping"), "angle");
-  EXPECT_EQ(p.get_rgb("L"), RGB(1.f));
+  EXPECT_EQ(*p.get_spectrum("L", SpectrumType::Illuminant).rgb, RGB(1.f));
   EXPECT_FALSE(p.has("optional"));
   // Reading an undeclared name, or an absent one without a default, is the plugin's bug.
   EXPECT_THROW(p.get_float("fvo"), std::logic_error);

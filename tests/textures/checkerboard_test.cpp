@@ -2,6 +2,8 @@
 // parameters, the solid (3D) checker and the closed-form filtered average.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/checkerboard_texture.h"
@@ -46,9 +48,11 @@ TEST(Checkerboard, UvScaleAndDelta) {
   p.add(number("rgb", "tex2", {0, 0, 1}));
   TextureStore store;
   auto t = create_checkerboard_spectrum_texture(TextureContext{p, Transform(), store, ""});
-  EXPECT_EQ(t->evaluate(at_uv(0.2f, 0.1f)), RGB(0, 0, 1));
-  EXPECT_EQ(t->evaluate(at_uv(0.4f, 0.1f)), RGB(1, 0, 0));
-  EXPECT_EQ(t->evaluate(at_uv(0.4f, 0.3f)), RGB(0, 0, 1));
+  const SampledWavelengths l = test::wavelengths();
+  const SampledSpectrum red = test::albedo(RGB(1, 0, 0), l), blue = test::albedo(RGB(0, 0, 1), l);
+  EXPECT_TRUE(test::same(t->evaluate(at_uv(0.2f, 0.1f), l), blue, 0.f));
+  EXPECT_TRUE(test::same(t->evaluate(at_uv(0.4f, 0.1f), l), red, 0.f));
+  EXPECT_TRUE(test::same(t->evaluate(at_uv(0.4f, 0.3f), l), blue, 0.f));
   for (const auto& param : p.params()) EXPECT_TRUE(param.used) << param.name;
 }
 

@@ -2,7 +2,9 @@
 // centres; 8-bit values are decoded with the sRGB formula written out below; wrap modes;
 // missing and unreadable files are errors that name the parameter and the path.
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include "../support/spectral.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -85,14 +87,21 @@ TEST_F(ImagemapTest, FloatImageTexelsReadBackExactly) {
   ParameterList p;
   p.add(str("filename", "rgb.exr"));
   TextureStore store;
-  auto t = create_imagemap_spectrum_texture(TextureContext{p, Transform(), store, dir_.string()});
+  auto t = create_imagemap_image_texture(TextureContext{p, Transform(), store, dir_.string()});
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
-      RGB v = t->evaluate(texel(x, y));
+      RGB v = t->rgb(texel(x, y));
       EXPECT_NEAR(v.r, x / 4.f, 1e-6f) << x << "," << y;
       EXPECT_NEAR(v.g, y / 2.f, 1e-6f) << x << "," << y;
       EXPECT_NEAR(v.b, 0.125f * (x + 4 * y), 1e-6f) << x << "," << y;
     }
+  // As a spectrum: the texel's RGB as a reflectance, or unbounded when the use asks for it.
+  const SampledWavelengths lambda = test::wavelengths();
+  TextureEvalContext c = texel(3, 1);
+  EXPECT_TRUE(test::same(t->evaluate(c, lambda), test::albedo(t->rgb(c), lambda), 0.f));
+  c.spectrum_type = SpectrumType::Unbounded;
+  EXPECT_TRUE(
+      test::same(t->evaluate(c, lambda), Spectrum::from_rgb(t->rgb(c), SpectrumType::Unbounded).sample(lambda), 0.f));
   // A float lookup of a colour image averages the channels (as pbrt-v4).
   auto f = create_imagemap_float_texture(TextureContext{p, Transform(), store, dir_.string()});
   EXPECT_NEAR(f->evaluate(texel(3, 1)), (0.75f + 0.5f + 0.875f) / 3.f, 1e-6f);
@@ -103,10 +112,10 @@ TEST_F(ImagemapTest, BilinearHalfwayBetweenTexels) {
   p.add(str("filename", (dir_ / "rgb.exr").string()));  // absolute path
   p.add(str("wrap", "clamp"));
   TextureStore store;
-  auto t = create_imagemap_spectrum_texture(TextureContext{p, Transform(), store, ""});
+  auto t = create_imagemap_image_texture(TextureContext{p, Transform(), store, ""});
   TextureEvalContext c;
   c.uv = Vec2(2.f / kW, 0.75f);  // between texels x = 1 and 2 of the top row
-  EXPECT_NEAR(t->evaluate(c).r, 0.375f, 1e-6f);
+  EXPECT_NEAR(t->rgb(c).r, 0.375f, 1e-6f);
 }
 
 TEST_F(ImagemapTest, EightBitPngIsDecodedFromSrgb) {
@@ -127,8 +136,8 @@ TEST_F(ImagemapTest, LinearEncodingScaleAndInvert) {
   lin.add(str("filename", "grey.png"));
   lin.add(str("encoding", "linear"));
   lin.add(number("float", "scale", {2.0}));
-  auto t = create_imagemap_spectrum_texture(TextureContext{lin, Transform(), store, dir_.string()});
-  EXPECT_NEAR(t->evaluate(texel(3, 0)).g, 2.0 * 128 / 255.0, 1e-5);
+  auto t = create_imagemap_image_texture(TextureContext{lin, Transform(), store, dir_.string()});
+  EXPECT_NEAR(t->rgb(texel(3, 0)).g, 2.0 * 128 / 255.0, 1e-5);
   ParameterList inv;
   inv.add(str("filename", "grey.png"));
   inv.add(str("encoding", "gamma 2.2"));
@@ -148,13 +157,13 @@ TEST_F(ImagemapTest, WrapModes) {
     p.add(str("filename", "rgb.exr"));
     p.add(str("wrap", wrap));
     p.add(str("filter", "point"));
-    return create_imagemap_spectrum_texture(TextureContext{p, Transform(), store, dir_.string()});
+    return create_imagemap_image_texture(TextureContext{p, Transform(), store, dir_.string()});
   };
   TextureEvalContext outside = texel(1, 0);
   outside.uv.x += 1.f;  // one period to the right
-  EXPECT_NEAR(make("repeat")->evaluate(outside).r, 0.25f, 1e-6f);
-  EXPECT_NEAR(make("clamp")->evaluate(outside).r, 0.75f, 1e-6f);  // last column
-  EXPECT_EQ(make("black")->evaluate(outside), RGB(0.f));
+  EXPECT_NEAR(make("repeat")->rgb(outside).r, 0.25f, 1e-6f);
+  EXPECT_NEAR(make("clamp")->rgb(outside).r, 0.75f, 1e-6f);  // last column
+  EXPECT_EQ(make("black")->rgb(outside), RGB(0.f));
 }
 
 TEST_F(ImagemapTest, WideFootprintSeesTheImageAverage) {
@@ -164,11 +173,11 @@ TEST_F(ImagemapTest, WideFootprintSeesTheImageAverage) {
   p.add(str("filename", "rgb.exr"));
   p.add(str("filter", "trilinear"));
   TextureStore store;
-  auto t = create_imagemap_spectrum_texture(TextureContext{p, Transform(), store, dir_.string()});
+  auto t = create_imagemap_image_texture(TextureContext{p, Transform(), store, dir_.string()});
   TextureEvalContext c = texel(1, 0);
-  EXPECT_NEAR(t->evaluate(c).g, 0.f, 1e-6f);
+  EXPECT_NEAR(t->rgb(c).g, 0.f, 1e-6f);
   c.footprint = 4.f;
-  EXPECT_NEAR(t->evaluate(c).g, 0.25f, 1e-3f);
+  EXPECT_NEAR(t->rgb(c).g, 0.25f, 1e-3f);
 }
 
 TEST_F(ImagemapTest, MissingFileNamesParameterAndPath) {
@@ -176,7 +185,7 @@ TEST_F(ImagemapTest, MissingFileNamesParameterAndPath) {
   p.add(str("filename", "nope.exr"));
   TextureStore store;
   try {
-    create_imagemap_spectrum_texture(TextureContext{p, Transform(), store, dir_.string()});
+    create_imagemap_image_texture(TextureContext{p, Transform(), store, dir_.string()});
     FAIL() << "no error";
   } catch (const SceneError& e) {
     std::string m = e.what();

@@ -2,6 +2,8 @@
 // named textures.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/checkerboard_texture.h"
@@ -32,11 +34,14 @@ TEST(ConstantTexture, ValueAndDefault) {
   TextureStore store;
   ParameterList empty;
   EXPECT_EQ(create_constant_float_texture(TextureContext{empty, Transform(), store, ""})->evaluate({}), 1.f);
-  EXPECT_EQ(create_constant_spectrum_texture(TextureContext{empty, Transform(), store, ""})->evaluate({}), RGB(1.f));
+  const SampledWavelengths l = test::wavelengths();
+  EXPECT_TRUE(
+      test::same(create_constant_spectrum_texture(TextureContext{empty, Transform(), store, ""})->evaluate({}, l),
+                 SampledSpectrum(1.f), 0.f));
   ParameterList p;
   p.add(number("rgb", "value", {0.1, 0.2, 0.3}));
-  EXPECT_EQ(create_constant_spectrum_texture(TextureContext{p, Transform(), store, ""})->evaluate({}),
-            RGB(0.1f, 0.2f, 0.3f));
+  EXPECT_TRUE(test::same(create_constant_spectrum_texture(TextureContext{p, Transform(), store, ""})->evaluate({}, l),
+                         test::albedo(RGB(0.1f, 0.2f, 0.3f), l), 0.f));
 }
 
 TEST(ScaleTexture, MultipliesTexByScale) {
@@ -46,10 +51,8 @@ TEST(ScaleTexture, MultipliesTexByScale) {
   p.add(number("rgb", "tex", {0.2, 0.4, 0.8}));
   p.add(texture_ref("scale", "half"));
   auto t = create_scale_spectrum_texture(TextureContext{p, Transform(), store, ""});
-  RGB v = t->evaluate({});
-  EXPECT_FLOAT_EQ(v.r, 0.1f);
-  EXPECT_FLOAT_EQ(v.g, 0.2f);
-  EXPECT_FLOAT_EQ(v.b, 0.4f);
+  const SampledWavelengths l = test::wavelengths();
+  EXPECT_TRUE(test::same(t->evaluate({}, l), 0.5f * test::albedo(RGB(0.2f, 0.4f, 0.8f), l), 1e-6f));
   ParameterList q;
   q.add(number("float", "tex", {3.0}));
   q.add(number("float", "scale", {-2.0}));
@@ -72,8 +75,9 @@ TEST(MixTexture, LinearBlend) {
   s.add(number("rgb", "tex1", {1, 0, 0}));
   s.add(number("rgb", "tex2", {0, 0, 1}));
   s.add(number("float", "amount", {0.75}));
-  EXPECT_EQ(create_mix_spectrum_texture(TextureContext{s, Transform(), store, ""})->evaluate({}),
-            RGB(0.25f, 0.f, 0.75f));
+  const SampledWavelengths l = test::wavelengths();
+  EXPECT_TRUE(test::same(create_mix_spectrum_texture(TextureContext{s, Transform(), store, ""})->evaluate({}, l),
+                         0.25f * test::albedo(RGB(1, 0, 0), l) + 0.75f * test::albedo(RGB(0, 0, 1), l), 1e-6f));
 }
 
 TEST(MixTexture, AmountFromATexture) {

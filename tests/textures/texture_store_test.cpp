@@ -2,6 +2,8 @@
 // references that do not resolve.
 #include <gtest/gtest.h>
 
+#include "../support/spectral.h"
+
 #include "scene/texture_store.h"
 #include "textures/constant_texture.h"
 
@@ -36,9 +38,11 @@ TEST(TextureStore, ConstantsAndDefaults) {
   EXPECT_EQ(store.float_param(p, "roughness", 0.f)->evaluate({}), 0.25f);
   EXPECT_EQ(store.float_param(p, "thickness", 0.01f)->evaluate({}), 0.01f);
   EXPECT_EQ(store.float_param_or_null(p, "uroughness"), nullptr);
-  EXPECT_EQ(store.spectrum_param(p, "reflectance", RGB(0.5f))->evaluate({}), RGB(0.1f, 0.2f, 0.3f));
-  EXPECT_EQ(store.spectrum_param(p, "k", RGB(0.f))->evaluate({}), RGB(0.5f));
-  EXPECT_EQ(store.spectrum_param(p, "albedo", RGB(0.7f))->evaluate({}), RGB(0.7f));
+  const SampledWavelengths l = test::wavelengths();
+  EXPECT_TRUE(test::same(store.spectrum_param(p, "reflectance", RGB(0.5f))->evaluate({}, l),
+                         test::albedo(RGB(0.1f, 0.2f, 0.3f), l), 0.f));
+  EXPECT_TRUE(test::same(store.spectrum_param(p, "k", RGB(0.f))->evaluate({}, l), SampledSpectrum(0.5f), 1e-4f));
+  EXPECT_TRUE(test::same(store.spectrum_param(p, "albedo", RGB(0.7f))->evaluate({}, l), SampledSpectrum(0.7f), 1e-4f));
   EXPECT_EQ(store.spectrum_param_or_null(p, "eta"), nullptr);
   for (const auto& q : p.params()) EXPECT_TRUE(q.used) << q.name;
 }
@@ -54,7 +58,8 @@ TEST(TextureStore, NamedTextures) {
   EXPECT_EQ(store.float_param(p, "roughness", 0.f), store.named_float("bumps"));
   EXPECT_EQ(store.spectrum_param(p, "reflectance", RGB(0.f)), store.named_spectrum("paint"));
   // A float texture where a spectrum is wanted: grey.
-  EXPECT_EQ(store.spectrum_param(p, "albedo", RGB(0.f))->evaluate({}), RGB(0.3f));
+  EXPECT_TRUE(test::same(store.spectrum_param(p, "albedo", RGB(0.f))->evaluate({}, test::wavelengths()),
+                         SampledSpectrum(0.3f), 0.f));
   EXPECT_EQ(store.named_float("nothing"), nullptr);
 }
 
