@@ -1,11 +1,15 @@
 // `eyetrace optics --camera 'Camera "navarro" ...'`: the optics of the eye (or lens) a Camera
-// directive describes, without rendering: paraxial constants, pupils and real-ray spot sizes
-// as text or JSON, and optionally a spot diagram PNG. The front door of the optics library.
+// directive describes, without rendering: paraxial constants, pupils, real-ray spot sizes and
+// chromatic aberration (dispersion laws, chromatic difference of refraction, transverse
+// chromatic aberration) as text or JSON, and optionally a figure (spot diagram above the
+// refraction-vs-wavelength curve). The front door of the optics library.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "app/commands.h"
 #include "cameras/lens_system_camera.h"
@@ -26,6 +30,9 @@ struct OpticsArgs {
   std::string object_distance;  // metres; empty = infinity
   std::string plot;
   bool strict = false;
+  std::string chromatic_range = "400,700";  // nm
+  std::string chromatic_step;               // nm; empty = 10, or the range's width if smaller
+  std::string tca_wavelengths = "450,650";  // nm
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -55,6 +62,48 @@ double parse_distance(const std::string& text) {
   return v;
 }
 
+// Two comma-separated numbers.
+std::pair<double, double> parse_pair(const char* flag, const std::string& text) {
+  const size_t comma = text.find(',');
+  char* end = nullptr;
+  const std::string a = text.substr(0, comma), b = comma == std::string::npos ? "" : text.substr(comma + 1);
+  const double x = std::strtod(a.c_str(), &end);
+  const bool ok_a = !a.empty() && end == a.c_str() + a.size();
+  const double y = std::strtod(b.c_str(), &end);
+  const bool ok_b = !b.empty() && end == b.c_str() + b.size();
+  if (comma == std::string::npos || !ok_a || !ok_b || !std::isfinite(x) || !std::isfinite(y))
+    throw_error(fmt::format("{} \"{}\": expected two wavelengths in nm, e.g. 400,700", flag, text));
+  return {x, y};
+}
+
+// The chromatic options of the three flags; each flag is checked on its own so the error names it.
+optics::ChromaticOptions parse_chromatic(const OpticsArgs& a) {
+  optics::ChromaticOptions o;
+  auto check = [](const char* flag, const std::string& text, const optics::ChromaticOptions& c) {
+    try {
+      optics::validate(c);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
+    }
+  };
+  optics::ChromaticOptions range;
+  std::tie(range.min_wavelength_nm, range.max_wavelength_nm) = parse_pair("--chromatic-range", a.chromatic_range);
+  range.step_nm = std::min(range.step_nm, std::abs(range.max_wavelength_nm - range.min_wavelength_nm));
+  check("--chromatic-range", a.chromatic_range, range);
+  o.min_wavelength_nm = range.min_wavelength_nm, o.max_wavelength_nm = range.max_wavelength_nm;
+  o.step_nm = range.step_nm;
+  if (!a.chromatic_step.empty()) {
+    char* end = nullptr;
+    o.step_nm = std::strtod(a.chromatic_step.c_str(), &end);
+    if (end != a.chromatic_step.c_str() + a.chromatic_step.size())
+      throw_error(fmt::format("--chromatic-step \"{}\": expected a step in nm, e.g. 10", a.chromatic_step));
+    check("--chromatic-step", a.chromatic_step, o);
+  }
+  std::tie(o.tca_short_nm, o.tca_long_nm) = parse_pair("--tca-wavelengths", a.tca_wavelengths);
+  check("--tca-wavelengths", a.tca_wavelengths, o);
+  return o;
+}
+
 // The prescription of the --camera directive. Reading it checks every parameter of the
 // directive (view parameters such as fov and mapping too) against the camera's declared ones,
 // as render does.
@@ -63,20 +112,28 @@ optics::Prescription camera_prescription(const std::string& text) {
   return prescription_from_camera_params(e.name, e.params, ".");
 }
 
-// The spot diagram: one panel per field, converted to the linear image write_image expects.
-void write_spot_plot(const std::string& path, const optics::Prescription& p, const optics::ReportOptions& o) {
+// The figure: the spot diagram (one panel per field) above the chromatic refraction curve,
+// converted to the linear image write_image expects.
+void write_plot(const std::string& path, const optics::Prescription& p, const optics::ReportOptions& o,
+                const nlohmann::json& report) {
   std::vector<optics::SpotResult> spots;
   for (double field : o.fields_deg) spots.push_back(optics::trace_spot(p, {field, o.object_distance_m, o.spot_grid}));
   const int panel = 256;
-  const optics::RgbImage rgb = optics::spot_diagram(spots, panel * static_cast<int>(spots.size()), panel);
+  const optics::RgbImage spot = optics::spot_diagram(spots, panel * static_cast<int>(spots.size()), panel);
+  const optics::RgbImage curve = optics::chromatic_plot(report, std::max(spot.width, 720), 400);
+  optics::RgbImage rgb(std::max(spot.width, curve.width), spot.height + curve.height);
+  rgb.blit(spot, (rgb.width - spot.width) / 2, 0);
+  rgb.blit(curve, 0, spot.height);
   Image image;
   image.width = rgb.width;
   image.height = rgb.height;
   image.pixels.resize(rgb.rgb.size());
   for (size_t i = 0; i < rgb.rgb.size(); ++i) image.pixels[i] = srgb_to_linear(rgb.rgb[i] / 255.f);
   write_image(path, image,
-              {{"eyetrace:spot_scale_um_per_pixel", fmt::format("{}", rgb.um_per_pixel)},
-               {"eyetrace:scale_bar_um", fmt::format("{}", rgb.scale_bar_um)}});
+              {{"eyetrace:spot_scale_um_per_pixel", fmt::format("{}", spot.um_per_pixel)},
+               {"eyetrace:scale_bar_um", fmt::format("{}", spot.scale_bar_um)},
+               {"eyetrace:spot_diagram_height", fmt::format("{}", spot.height)},
+               {"eyetrace:lca_diopters", report["chromatic"]["lca_diopters"].dump()}});
 }
 
 int run_optics(const OpticsArgs& a) {
@@ -85,17 +142,18 @@ int run_optics(const OpticsArgs& a) {
   optics::ReportOptions o;
   o.fields_deg = parse_fields(a.fields);
   o.object_distance_m = parse_distance(a.object_distance);
+  o.chromatic = parse_chromatic(a);
   try {
     const nlohmann::json report = optics::optics_report(p, o);
     if (a.json)
       fmt::print("{}\n", report.dump(2));
     else
       fmt::print("{}", optics::format_report(report));
-    if (!a.plot.empty()) write_spot_plot(a.plot, p, o);
+    if (!a.plot.empty()) write_plot(a.plot, p, o, report);
   } catch (const optics::OpticsError& e) {
     throw_error(fmt::format("optics: {}", e.what()));
   }
-  if (!a.plot.empty() && !a.json) fmt::print("spot diagram written to {}\n", a.plot);
+  if (!a.plot.empty() && !a.json) fmt::print("spot diagram and chromatic refraction curve written to {}\n", a.plot);
   return 0;
 }
 
@@ -112,7 +170,15 @@ CommandRunner add_optics_command(CLI::App& app) {
   c->add_option("--fields", args->fields, "Field angles for real-ray spots, degrees (default 0,10,20,30,40)");
   c->add_option("--object-distance", args->object_distance,
                 "Distance of the spot sources in metres from the entrance pupil (default: infinity)");
-  c->add_option("--plot", args->plot, "Write a spot diagram image (.png or .exr)");
+  c->add_option("--plot", args->plot,
+                "Write a figure (.png or .exr): the spot diagram above the refraction-vs-wavelength curve");
+  c->add_option("--chromatic-range", args->chromatic_range,
+                "Wavelengths of the chromatic difference of refraction, nm: MIN,MAX (default 400,700; within "
+                "[360, 1020], where the dispersion laws are used)");
+  c->add_option("--chromatic-step", args->chromatic_step,
+                "Step of the chromatic refraction list, nm (default 10, or the range's width if smaller)");
+  c->add_option("--tca-wavelengths", args->tca_wavelengths,
+                "Transverse chromatic aberration between these wavelengths, nm: SHORT,LONG (default 450,650)");
   return [args] { return run_optics(*args); };
 }
 

@@ -126,7 +126,12 @@ Prescription arizona(const EyeModel& m, double A) {
       s.profile = SurfaceProfile::from_radius(-5.224557 + 0.2 * A, -1.353971 - 0.431762 * A);
   }
   for (Medium& medium : p.media)
-    if (medium.name == "lens") medium.index = 1.42 + 0.00256 * A - 0.00022 * A * A;
+    if (medium.name == "lens") {
+      medium.index = 1.42 + 0.00256 * A - 0.00022 * A * A;
+      // The model publishes n_d (this formula) and V_d (constant): the Abbe line goes through
+      // the accommodated n_d, so n_F - n_C = (n_d - 1) / V_d grows with it.
+      if (medium.dispersion.law == DispersionLaw::AbbeLinear) medium.dispersion.abbe_nd = medium.index;
+    }
   for (Surface& s : p.surfaces)
     if (s.medium == "lens") s.index_after = p.find_medium("lens")->index;
   return p;

@@ -15,7 +15,7 @@
 namespace eyetrace::optics {
 
 enum class DispersionLaw {
-  None,               // constant index (Gullstrand, and anything without published dispersion)
+  None,               // constant index (pbrt lens files, and anything without dispersion data)
   NavarroHerzberger,  // Navarro 1985: weights of the indices at 365, 486.1, 656.3, 1014 nm
   Cornu,              // n(lambda) = n_inf + K / (lambda - lambda0), lambda in nm (Le Grand)
   AbbeLinear,         // n(lambda) = nd + (lambda - 589.3)(nd - 1) / (Vd (486.1 - 656.3)) (Arizona)

@@ -43,6 +43,10 @@ struct Prescription {
   std::vector<Surface> surfaces;           // object side first, image surface last
   std::vector<Medium> media;               // by name; lets at_wavelength() re-evaluate indices
   std::vector<std::string> notes;          // caveats (unverified data, extrapolation, ...)
+  // Where the media's dispersion laws come from; dispersion_assumed when the model's authors
+  // publish no dispersion and the laws are a choice made here (see docs/eye-models.md).
+  std::string dispersion_source;
+  bool dispersion_assumed = false;
 
   int image_index() const { return static_cast<int>(surfaces.size()) - 1; }
   int stop_index() const;  // -1 when there is none (validate() requires one)

@@ -99,7 +99,7 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
   check_keys(j,
              {"format", "format_version", "model", "variant", "title", "source", "data_source", "status", "units",
               "sign_convention", "conic_convention", "reference_wavelength_nm", "object_index", "media", "surfaces",
-              "notes", "accommodation"},
+              "notes", "accommodation", "dispersion_source", "dispersion_assumed"},
              origin);
   if (text(j, "format", origin) != "eyetrace-prescription")
     throw OpticsError(fmt::format("{}: 'format' must be \"eyetrace-prescription\"", origin));
@@ -117,6 +117,12 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
   p.object_index = number_or(j, "object_index", 1.0, origin);
   if (j.contains("notes"))
     for (const json& n : j.at("notes")) p.notes.push_back(n.get<std::string>());
+  p.dispersion_source = text(j, "dispersion_source", origin, false);
+  if (j.contains("dispersion_assumed")) {
+    if (!j["dispersion_assumed"].is_boolean())
+      throw OpticsError(fmt::format("{}: 'dispersion_assumed' must be true or false", origin));
+    p.dispersion_assumed = j["dispersion_assumed"].get<bool>();
+  }
 
   if (!j.contains("media") || !j["media"].is_array())
     throw OpticsError(fmt::format("{}: 'media' must be a list", origin));
@@ -205,7 +211,9 @@ json prescription_to_json(const Prescription& p) {
           {"object_index", p.object_index},
           {"media", media},
           {"surfaces", surfaces},
-          {"notes", p.notes}};
+          {"notes", p.notes},
+          {"dispersion_source", p.dispersion_source},
+          {"dispersion_assumed", p.dispersion_assumed}};
 }
 
 Prescription load_embedded_prescription(const std::string& file_name) {

@@ -10,12 +10,15 @@
 //     "surfaces": [ { "name": "cornea anterior", "radius_mm": 7.72, "conic": -0.26,
 //                     "thickness_mm": 0.55, "medium": "cornea", "semi_diameter_mm": 4.82,
 //                     "role": "refract" }, ... ],
-//     "notes": [ "..." ] }
+//     "notes": [ "..." ],
+//     "dispersion_source": "Navarro et al. (1985) ...", "dispersion_assumed": false }
 //
 // An eye model file adds "accommodation" (read by eye_model.h; ignored here).
 // radius_mm null = flat; semi_diameter_mm null or 0 = unlimited; role refract | stop | image.
 // Dispersion laws: "none", "navarro-herzberger", "cornu" (n_inf, k_nm, lambda0_nm),
-// "abbe-linear" (nd, vd). Unknown keys are errors, so a misspelt field is never ignored.
+// "abbe-linear" (nd, vd). dispersion_source (where the laws come from) and dispersion_assumed
+// (true when the model's authors publish none and the laws are a choice made here) are optional.
+// Unknown keys are errors, so a misspelt field is never ignored.
 #pragma once
 
 #include <string>

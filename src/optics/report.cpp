@@ -1,4 +1,4 @@
-// Optics report and spot diagram (contents: see report.h).
+// Optics report, spot diagram and chromatic refraction curve (contents: see report.h).
 #include "optics/report.h"
 
 #include <algorithm>
@@ -20,6 +20,70 @@ json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr
 
 // Rounded to 1e-6 so reports diff cleanly.
 double round6(double v) { return std::round(v * 1e6) / 1e6; }
+double round8(double v) { return std::round(v * 1e8) / 1e8; }
+
+// The dispersion laws and where they come from; the chromatic difference of refraction; the
+// transverse chromatic aberration at the spot fields (see report.h).
+void add_chromatic(json& r, const Prescription& p, const ReportOptions& options) {
+  ChromaticOptions c = options.chromatic;
+  c.centroid_grid = options.spot_grid;
+  validate(c);
+  json media = json::array();
+  for (const Medium& m : p.media)
+    media.push_back(
+        {{"medium", m.name},
+         {"law", to_string(m.dispersion.law)},
+         {"index_reference", m.index},
+         {"index_at_range_ends", {round8(m.index_at(c.min_wavelength_nm)), round8(m.index_at(c.max_wavelength_nm))}}});
+  r["dispersion"] = {{"source", p.dispersion_source}, {"assumed", p.dispersion_assumed}, {"media", media}};
+
+  const std::vector<RefractionAtWavelength> curve = chromatic_refraction(p, c);
+  json list = json::array();
+  for (const RefractionAtWavelength& w : curve)
+    list.push_back({{"wavelength_nm", w.wavelength_nm}, {"refraction_diopters", round6(w.refraction_D)}});
+  r["chromatic_refraction"] = list;
+  r["chromatic"] = {{"min_wavelength_nm", c.min_wavelength_nm},
+                    {"max_wavelength_nm", c.max_wavelength_nm},
+                    {"step_nm", c.step_nm},
+                    {"lca_diopters", round6(curve.back().refraction_D - curve.front().refraction_D)}};
+
+  json fields = json::array();
+  for (double field : options.fields_deg) {
+    const TransverseChromatic t = transverse_chromatic_aberration(p, field, options.object_distance_m, c);
+    auto value = [](bool ok, double v) { return ok ? json(round6(v) + 0.0) : json(nullptr); };  // no -0
+    json f = {{"field_deg", field},
+              {"tca_arcmin", value(t.ok, t.tca_arcmin)},
+              {"retina_um", value(t.ok, t.retina_um)},
+              {"short_angle_deg", value(t.ok, t.short_angle_deg)},
+              {"long_angle_deg", value(t.ok, t.long_angle_deg)},
+              {"centroid_tca_arcmin", value(t.centroid_ok, t.centroid_tca_arcmin)},
+              {"centroid_retina_um", value(t.centroid_ok, t.centroid_retina_um)}};
+    if (!t.ok) f["lost"] = t.lost;
+    fields.push_back(f);
+  }
+  r["tca"] = {{"short_wavelength_nm", c.tca_short_nm},
+              {"long_wavelength_nm", c.tca_long_nm},
+              {"mapping_wavelength_nm", p.wavelength_nm},
+              {"object_distance_m", finite_or_null(options.object_distance_m)},
+              {"fields", fields}};
+}
+
+// Law names with the media that follow each, in the order of the media table:
+// "navarro-herzberger (cornea, aqueous, lens, vitreous)".
+std::string dispersion_summary(const json& media) {
+  std::vector<std::pair<std::string, std::string>> groups;
+  for (const json& m : media) {
+    const std::string law = m.at("law").get<std::string>(), name = m.at("medium").get<std::string>();
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == law; });
+    if (it == groups.end())
+      groups.emplace_back(law, name);
+    else
+      it->second += ", " + name;
+  }
+  std::string out;
+  for (const auto& [law, names] : groups) out += (out.empty() ? "" : "; ") + law + " (" + names + ")";
+  return out;
+}
 
 }  // namespace
 
@@ -65,8 +129,48 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
   }
   r["spot"] = spots;
   r["surfaces"] = prescription_to_json(p)["surfaces"];
+  add_chromatic(r, p, options);
   return r;
 }
+
+namespace {
+
+template <class Num>
+std::string format_chromatic(const json& r, Num num) {
+  const json& d = r["dispersion"];
+  std::string out =
+      fmt::format("  dispersion{}: {}\n", d["assumed"].get<bool>() ? " (assumed: not published with the model)" : "",
+                  dispersion_summary(d["media"]));
+  if (!d["source"].get<std::string>().empty()) out += fmt::format("    source: {}\n", d["source"].get<std::string>());
+  const json& c = r["chromatic"];
+  if (std::all_of(d["media"].begin(), d["media"].end(), [](const json& m) { return m["law"] == "none"; }))
+    return out + fmt::format("  chromatic: no medium disperses: refraction {} D at every wavelength, no TCA\n",
+                             num(r["chromatic_refraction"][0]["refraction_diopters"], "{:+.3f}"));
+  out += fmt::format("  chromatic difference of refraction, {:g}-{:g} nm every {:g} nm (D; LCA {} D):\n",
+                     c["min_wavelength_nm"].get<double>(), c["max_wavelength_nm"].get<double>(),
+                     c["step_nm"].get<double>(), num(c["lca_diopters"], "{:.3f}"));
+  const json& list = r["chromatic_refraction"];
+  for (size_t i = 0; i < list.size(); i += 6) {
+    out += "   ";
+    for (size_t j = i; j < std::min(list.size(), i + 6); ++j)
+      out += fmt::format(" {:>5g} {:>+7.3f}", list[j]["wavelength_nm"].get<double>(),
+                         list[j]["refraction_diopters"].get<double>() + 0.0);
+    out += "\n";
+  }
+  const json& t = r["tca"];
+  out += fmt::format(
+      "  transverse chromatic aberration {0:g}-{1:g} nm (visual angle of the {0:g} nm image minus the {1:g} nm "
+      "image; + = {0:g} nm farther out):\n",
+      t["short_wavelength_nm"].get<double>(), t["long_wavelength_nm"].get<double>());
+  for (const json& f : t["fields"])
+    out += fmt::format(
+        "    field {:>5.1f} deg: TCA {:>8} arcmin, on the retina {:>8} um; spot centroids {:>8} arcmin{}\n",
+        f["field_deg"].get<double>(), num(f["tca_arcmin"], "{:+.3f}"), num(f["retina_um"], "{:+.2f}"),
+        num(f["centroid_tca_arcmin"], "{:+.3f}"), f.contains("lost") ? " (" + f["lost"].get<std::string>() + ")" : "");
+  return out;
+}
+
+}  // namespace
 
 std::string format_report(const json& r) {
   auto num = [](const json& v, const char* fmt_spec = "{:.4f}") {
@@ -94,6 +198,7 @@ std::string format_report(const json& r) {
     out += fmt::format("    field {:>5.1f} deg: RMS radius {:>9} um, 50% of rays within {:>9} um ({} of {} rays)\n",
                        s["field_deg"].get<double>(), num(s["rms_radius_um"], "{:.2f}"),
                        num(s["ee50_radius_um"], "{:.2f}"), s["rays"].get<int>(), s["rays_launched"].get<int>());
+  if (r.contains("dispersion")) out += format_chromatic(r, num);
   for (const json& n : r["notes"]) out += fmt::format("  note: {}\n", n.get<std::string>());
   return out;
 }
@@ -102,7 +207,7 @@ RgbImage spot_diagram(const std::vector<SpotResult>& spots, int width, int heigh
   if (width < 16 || height < 16 || spots.empty())
     throw OpticsError(fmt::format("spot diagram: needs >= 16 x 16 pixels and at least one spot (got {} x {}, {} spots)",
                                   width, height, spots.size()));
-  RgbImage img{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 3, 255)};
+  RgbImage img(width, height);
   auto put = [&](int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
     if (x < 0 || y < 0 || x >= width || y >= height) return;
     std::uint8_t* px = &img.rgb[(static_cast<size_t>(y) * width + x) * 3];
@@ -136,6 +241,79 @@ RgbImage spot_diagram(const std::vector<SpotResult>& spots, int width, int heigh
     for (int t = 0; t < 3; ++t)
       for (int x = 0; x < bar; ++x) put(left + 6 + x, height - 8 + t, 0, 0, 0);
   }
+  return img;
+}
+
+namespace {
+
+// A 1-2-2.5-5 step close to span / wanted.
+double nice_step(double span, int wanted) {
+  const double raw = span / wanted;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 2.5, 5.0})
+    if (m * decade >= raw) return m * decade;
+  return 10.0 * decade;
+}
+
+}  // namespace
+
+RgbImage chromatic_plot(const json& report, int width, int height) {
+  if (width < 240 || height < 160)
+    throw OpticsError(fmt::format("chromatic plot: needs >= 240 x 160 pixels (got {} x {})", width, height));
+  const json& list = report.at("chromatic_refraction");
+  if (list.size() < 2) throw OpticsError("chromatic plot: needs at least two wavelengths");
+  const int scale = width >= 480 && height >= 240 ? 2 : 1;
+  const int glyph_h = RgbImage::text_height(scale);
+  const int left = 6 * 6 * scale, right = 16 * scale, top = 2 * glyph_h + 10 * scale, bottom = 2 * glyph_h + 10 * scale;
+  RgbImage img(width, height);
+  const Rgb black{0, 0, 0}, grid{225, 225, 225}, curve{31, 119, 180}, marker{214, 39, 40}, axis0{150, 150, 150};
+
+  double lam0 = list.front()["wavelength_nm"].get<double>(), lam1 = list.back()["wavelength_nm"].get<double>();
+  double r0 = 1e300, r1 = -1e300;
+  for (const json& e : list) {
+    r0 = std::min(r0, e["refraction_diopters"].get<double>());
+    r1 = std::max(r1, e["refraction_diopters"].get<double>());
+  }
+  if (r1 - r0 < 0.1) r0 -= 0.05, r1 += 0.05;  // a flat curve (no dispersion) still gets an axis
+  const double ystep = nice_step(r1 - r0, 6), xstep = nice_step(lam1 - lam0, 6);
+  r0 = std::floor(r0 / ystep) * ystep, r1 = std::ceil(r1 / ystep) * ystep;
+  const int x0 = left, x1 = width - right, y0 = top, y1 = height - bottom;
+  auto px = [&](double lam) { return x0 + (lam - lam0) / (lam1 - lam0) * (x1 - x0); };
+  auto py = [&](double d) { return y1 - (d - r0) / (r1 - r0) * (y1 - y0); };
+
+  for (double v = std::ceil(lam0 / xstep) * xstep; v <= lam1 + 1e-9; v += xstep) {
+    img.line(px(v), y0, px(v), y1, grid);
+    const std::string label = fmt::format("{:g}", v);
+    img.text(static_cast<int>(px(v)) - RgbImage::text_width(label, scale) / 2, y1 + 4 * scale, label, black, scale);
+  }
+  const int decimals = ystep < 0.1 ? 2 : 1;
+  for (double v = r0; v <= r1 + 1e-9 * ystep; v += ystep) {
+    img.line(x0, py(v), x1, py(v), std::abs(v) < 1e-9 * ystep ? axis0 : grid);
+    const std::string label = std::abs(v) < 1e-9 * ystep ? std::string("0") : fmt::format("{:+.{}f}", v, decimals);
+    img.text(x0 - 4 * scale - RgbImage::text_width(label, scale), static_cast<int>(py(v)) - glyph_h / 2, label, black,
+             scale);
+  }
+  // The prescription's own wavelength: a dashed vertical line.
+  const double own = report.at("wavelength_nm").get<double>();
+  if (own >= lam0 && own <= lam1)
+    for (double y = y0; y < y1; y += 8.0) img.line(px(own), y, px(own), std::min<double>(y + 4.0, y1), marker, scale);
+  img.line(x0, y0, x1, y0, black), img.line(x0, y1, x1, y1, black);
+  img.line(x0, y0, x0, y1, black), img.line(x1, y0, x1, y1, black);
+  for (size_t i = 0; i + 1 < list.size(); ++i)
+    img.line(px(list[i]["wavelength_nm"].get<double>()), py(list[i]["refraction_diopters"].get<double>()),
+             px(list[i + 1]["wavelength_nm"].get<double>()), py(list[i + 1]["refraction_diopters"].get<double>()),
+             curve, 2 * scale);
+  for (const json& e : list)
+    img.line(px(e["wavelength_nm"].get<double>()), py(e["refraction_diopters"].get<double>()),
+             px(e["wavelength_nm"].get<double>()), py(e["refraction_diopters"].get<double>()), curve, 3 * scale + 1);
+
+  const std::string variant = report.value("variant", "");
+  const std::string title =
+      fmt::format("{}{}: refraction (D) vs wavelength, LCA {:.2f} D", report.value("model", ""),
+                  variant.empty() ? "" : " " + variant, report.at("chromatic").at("lca_diopters").get<double>());
+  img.text(x0, 5 * scale, title, black, scale);
+  const std::string xlabel = fmt::format("wavelength (nm), dashed: {:g} nm", own);
+  img.text((x0 + x1 - RgbImage::text_width(xlabel, scale)) / 2, y1 + glyph_h + 8 * scale, xlabel, black, scale);
   return img;
 }
 

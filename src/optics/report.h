@@ -1,16 +1,18 @@
-// Optics report of a prescription: paraxial constants and real-ray spot sizes as JSON, the same
-// as readable text, and a spot diagram rasterised into an RGB buffer (the caller writes the
-// image file: the optics library does no image I/O).
+// Optics report of a prescription: paraxial constants, real-ray spot sizes and chromatic
+// aberration as JSON, the same as readable text, and its figures (spot diagram, chromatic
+// refraction curve) rasterised into RGB buffers (the caller writes the image files: the optics
+// library does no image I/O).
 #pragma once
 
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "optics/chromatic.h"
 #include "optics/prescription.h"
+#include "optics/raster.h"
 #include "optics/spot.h"
 
 namespace eyetrace::optics {
@@ -19,6 +21,7 @@ struct ReportOptions {
   std::vector<double> fields_deg{0.0, 10.0, 20.0, 30.0, 40.0};
   double object_distance_m = std::numeric_limits<double>::infinity();  // spot source distance
   int spot_grid = 64;
+  ChromaticOptions chromatic;  // wavelengths of the chromatic section (TCA at fields_deg, object_distance_m)
 };
 
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
@@ -30,23 +33,30 @@ inline constexpr double kEmmetropia_D = 0.005;
 // focal_lengths_mm [front, back], back_focal_distance_mm, stop_diameter_mm,
 // entrance_pupil / exit_pupil {position_mm, diameter_mm, magnification},
 // spot: [{field_deg, rms_radius_um (null when no ray passes), rays, rays_launched}],
-// spot_object_distance_m (null = infinity), surfaces (the prescription as a table).
+// spot_object_distance_m (null = infinity), surfaces (the prescription as a table);
+// chromatic aberration (chromatic.h):
+//   dispersion {source, assumed, media: [{medium, law, index_reference, index_at_range_ends}]},
+//   chromatic_refraction: [{wavelength_nm, refraction_diopters}] from min to max every step,
+//   chromatic {min_wavelength_nm, max_wavelength_nm, step_nm, lca_diopters (= refraction at
+//   max - at min)},
+//   tca {short_wavelength_nm, long_wavelength_nm, mapping_wavelength_nm, object_distance_m,
+//   fields: [{field_deg, tca_arcmin, retina_um (both null when a chief ray is lost, with `lost`
+//   saying why), short_angle_deg, long_angle_deg, centroid_tca_arcmin, centroid_retina_um (the
+//   spots' centroids instead of the chief rays, the pupil filled with a spot_grid grid)}]}.
+// Throws OpticsError for invalid chromatic options (naming them).
 nlohmann::json optics_report(const Prescription& prescription, const ReportOptions& options = {});
 
 // Human-readable text of an optics_report() result.
 std::string format_report(const nlohmann::json& report);
 
-struct RgbImage {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgb;  // row-major, top row first, 3 bytes per pixel
-  double um_per_pixel = 0.0;      // common scale of every panel
-  double scale_bar_um = 0.0;      // length of the black bar drawn in each panel
-};
-
 // One panel per spot, left to right in the order given, on a common scale: light axes through
 // each centroid, the points, and a black scale bar (length scale_bar_um) along each panel's
 // bottom edge. width/height in pixels (each >= 16).
 RgbImage spot_diagram(const std::vector<SpotResult>& spots, int width, int height);
+
+// The chromatic difference of refraction of an optics_report() result as a curve: refraction (D)
+// against wavelength (nm) with axes, ticks, labels, a dashed line at the prescription's
+// wavelength and the LCA in the title. width >= 240, height >= 160 pixels.
+RgbImage chromatic_plot(const nlohmann::json& report, int width, int height);
 
 }  // namespace eyetrace::optics

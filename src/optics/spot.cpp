@@ -24,17 +24,14 @@ struct Launcher {
   double z_pupil;  // entrance-pupil plane
   double z_start;  // launch plane, in front of the first surface everywhere
 
-  // Traces the ray that crosses the entrance-pupil plane at (x, y).
+  // Traces the ray that crosses the entrance-pupil plane at (x, y). It starts on the launch
+  // plane, also for a finite source: the tracer's intersections lose precision with the origin's
+  // distance (a source 100 km away blurred the 20 deg spot of Navarro's eye by a third).
   TraceResult trace(double x, double y) const {
     const glm::dvec3 target(x, y, z_pupil);
     Ray ray;
-    if (at_infinity) {
-      ray.direction = direction;
-      ray.origin = target - ((z_pupil - z_start) / direction.z) * direction;
-    } else {
-      ray.origin = source;
-      ray.direction = glm::normalize(target - source);
-    }
+    ray.direction = at_infinity ? direction : glm::normalize(target - source);
+    ray.origin = target - ((z_pupil - z_start) / ray.direction.z) * ray.direction;
     return system.trace_forward(ray);
   }
 };

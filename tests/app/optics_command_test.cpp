@@ -1,0 +1,96 @@
+// `eyetrace optics`: the chromatic section of the report (JSON and text), its options and their
+// errors, and the --plot figure (spot diagram above the chromatic refraction curve).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "render/image_io.h"
+
+namespace eyetrace {
+namespace {
+
+std::string run(const std::string& args, int* status, bool with_stderr = true) {
+  const std::string command =
+      std::string(EYETRACE_BINARY_DIR "/bin/eyetrace ") + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  const int s = pclose(pipe);
+  *status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  return out;
+}
+
+TEST(OpticsCommand, ChromaticJson) {
+  int status = -1;
+  const nlohmann::json r = nlohmann::json::parse(run("optics --json --camera 'Camera \"kooijman\"'", &status, false));
+  ASSERT_EQ(status, 0);
+  ASSERT_EQ(r["chromatic_refraction"].size(), 31u);
+  EXPECT_EQ(r["chromatic_refraction"][0]["wavelength_nm"].get<double>(), 400.0);
+  EXPECT_TRUE(r["chromatic_refraction"][0].contains("refraction_diopters"));
+  EXPECT_TRUE(r["dispersion"]["assumed"].get<bool>());  // Kooijman publishes none
+  EXPECT_EQ(r["dispersion"]["media"][0]["law"].get<std::string>(), "cornu");
+  ASSERT_EQ(r["tca"]["fields"].size(), 5u);
+  for (const auto& f : r["tca"]["fields"]) EXPECT_TRUE(f["tca_arcmin"].is_number()) << f.dump();
+
+  const nlohmann::json narrow = nlohmann::json::parse(
+      run("optics --json --chromatic-range 450,650 --chromatic-step 50 --tca-wavelengths 470,620 --fields 20", &status,
+          false));
+  ASSERT_EQ(status, 0);
+  ASSERT_EQ(narrow["chromatic_refraction"].size(), 5u);
+  EXPECT_EQ(narrow["chromatic_refraction"][4]["wavelength_nm"].get<double>(), 650.0);
+  EXPECT_EQ(narrow["tca"]["short_wavelength_nm"].get<double>(), 470.0);
+  EXPECT_EQ(narrow["tca"]["fields"].size(), 1u);
+}
+
+TEST(OpticsCommand, ChromaticText) {
+  int status = -1;
+  const std::string text = run("optics --camera 'Camera \"gullstrand\"'", &status);
+  ASSERT_EQ(status, 0) << text;
+  EXPECT_NE(text.find("dispersion (assumed"), std::string::npos) << text;
+  EXPECT_NE(text.find("chromatic difference of refraction, 400-700 nm every 10 nm"), std::string::npos) << text;
+  EXPECT_NE(text.find("transverse chromatic aberration 450-650 nm"), std::string::npos) << text;
+}
+
+TEST(OpticsCommand, BadWavelengthsNameTheFlag) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--chromatic-range 300,700", "--chromatic-range \"300,700\": chromatic range: 300 nm is outside [360, 1020] nm"},
+      {"--chromatic-range 400,1100", "--chromatic-range \"400,1100\": chromatic range: 1100 nm is outside"},
+      {"--chromatic-range 700,400", "--chromatic-range \"700,400\""},
+      {"--chromatic-range 400", "--chromatic-range \"400\": expected two wavelengths"},
+      {"--chromatic-step 0", "--chromatic-step \"0\""},
+      {"--chromatic-step x", "--chromatic-step \"x\""},
+      {"--tca-wavelengths 450,1100", "--tca-wavelengths \"450,1100\": tca wavelengths: 1100 nm is outside"},
+      {"--tca-wavelengths 650,450", "--tca-wavelengths \"650,450\""},
+  };
+  for (auto [args, expected] : cases) {
+    int status = -1;
+    const std::string out = run(std::string("optics ") + args, &status);
+    EXPECT_EQ(status, 1) << args;
+    EXPECT_NE(out.find(expected), std::string::npos) << args << ": " << out;
+  }
+}
+
+TEST(OpticsCommand, PlotHasSpotsAndCurve) {
+  const std::string dir = std::string(EYETRACE_BINARY_DIR) + "/tests/optics_command_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/navarro.png";
+  std::filesystem::remove(path);
+  int status = -1;
+  const std::string out = run("optics --fields 0,20 --plot " + path, &status);
+  ASSERT_EQ(status, 0) << out;
+  const Image image = read_image(path);
+  EXPECT_EQ(image.width, 720);         // the curve's width (two 256-pixel spot panels are narrower)
+  EXPECT_EQ(image.height, 256 + 400);  // spot diagram above, curve below
+  EXPECT_EQ(read_image_attribute(path, "eyetrace:spot_diagram_height"), "256");
+  EXPECT_NEAR(std::stod(read_image_attribute(path, "eyetrace:lca_diopters")), 2.485, 0.001);
+}
+
+}  // namespace
+}  // namespace eyetrace
