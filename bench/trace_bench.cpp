@@ -123,6 +123,7 @@ void BM_IndicesByLaw(benchmark::State& state) {
     i = (i + 1) & (lambda.size() - 1);
   }
   state.SetItemsProcessed(state.iterations());
+  state.counters["max_error"] = 0.0;  // the law is the definition
 }
 BENCHMARK(BM_IndicesByLaw);
 

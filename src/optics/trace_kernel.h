@@ -86,6 +86,11 @@ template <class A>
 bool any(const xsimd::batch_bool<double, A>& m) {
   return xsimd::any(m);
 }
+inline bool all(bool m) { return m; }
+template <class A>
+bool all(const xsimd::batch_bool<double, A>& m) {
+  return xsimd::all(m);
+}
 inline double sqrt(double x) { return std::sqrt(x); }
 template <class A>
 xsimd::batch<double, A> sqrt(const xsimd::batch<double, A>& x) {
@@ -240,7 +245,9 @@ EYETRACE_KERNEL_INLINE Moved<V> step(const Interface& f, const V& ox, const V& o
   const V refraction = select(g2 > 0.0, select(refracted, V(kOk), V(code(TraceStatus::TotalInternalReflection))),
                               V(code(TraceStatus::Missed)));
   const V nx = eta.eta * dx + gamma * gx, ny = eta.eta * dy + gamma * gy, nz = eta.eta * dz + gamma * gz;
-  if (eta.all) return {select(status == kOk, refraction, status), px, py, pz + f.z, nx, ny, nz};
+  // Per-lane indices refract every lane too, unless two media have the same index at a lane's
+  // wavelength: checked once, the selects below are for that case only.
+  if (eta.all || all(eta.refracts)) return {select(status == kOk, refraction, status), px, py, pz + f.z, nx, ny, nz};
   status = select((status == kOk) & eta.refracts, refraction, status);
   return {status,
           px,
@@ -298,7 +305,8 @@ EYETRACE_KERNEL_INLINE bool refraction_at(const Interface& f, const MediumLaw* l
       eta = uniform_eta<V>(e);
       return true;
     }
-    eta = eta_of(n_from / n);
+    // Into air (the cornea of a reverse trace) n_from / 1 is n_from exactly: one division less.
+    eta = eta_of(to.law < 0 && to.index == 1.0 ? n_from : n_from / n);
     return true;
   }
 }
