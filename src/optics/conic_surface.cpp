@@ -1,9 +1,11 @@
-// Surface profiles: sag, reach and normal. The intersection itself is inline in the header
-// (with the reasons for each root choice) because the tracer's hot loop calls it.
+// Surface profiles: sag, reach and normal. The intersection is the sequential trace's kernel
+// (trace_kernel.h, with the reasons for each root choice) run for one ray.
 #include "optics/conic_surface.h"
 
 #include <cmath>
 #include <limits>
+
+#include "optics/trace_kernel.h"
 
 namespace eyetrace::optics {
 
@@ -33,8 +35,10 @@ double SurfaceProfile::sag(double r2) const {
 
 ProfileHit intersect(const SurfaceProfile& profile, const glm::dvec3& origin, const glm::dvec3& direction,
                      double t_tolerance) {
-  const double c = profile.is_flat() ? 0.0 : profile.curvature;
-  return intersect_conic(c, 1.0 + profile.conic, origin, direction, t_tolerance);
+  const double c = profile.is_flat() ? 0.0 : profile.curvature, k = 1.0 + profile.conic;
+  const kernel::Hit<double> hit = kernel::intersect(c, k, k * c, c == 0.0, origin.x, origin.y, origin.z, direction.x,
+                                                    direction.y, direction.z, t_tolerance);
+  return hit.hit ? ProfileHit{true, hit.t} : ProfileHit{};
 }
 
 glm::dvec3 normal(const SurfaceProfile& profile, const glm::dvec3& p) {

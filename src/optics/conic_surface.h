@@ -41,58 +41,21 @@ struct ProfileHit {
   double t = 0.0;  // ray parameter: hit point = origin + t * direction
 };
 
-// Smallest t >= -t_tolerance at which the ray meets the sheet of the profile through the vertex
-// (see conic_surface.cpp for why each root is taken or rejected). t_tolerance lets a ray that
-// starts exactly on a surface (a stop placed on a lens vertex) meet it at t = 0.
-// direction need not be normalised. Never produces NaN: a miss is hit == false.
-ProfileHit intersect(const SurfaceProfile& profile, const glm::dvec3& origin, const glm::dvec3& direction,
-                     double t_tolerance = 1e-9);
+// How far behind its origin (ray parameter, mm for a unit direction) a ray may still meet a
+// surface: lets a ray that starts exactly on a surface (the stop lies on the anterior lens
+// vertex, thickness 0) meet the next one at t = 0.
+inline constexpr double kBehindTolerance_mm = 1e-9;
+// A root lies on the vertex sheet of the conic when 1 - k c z >= -kSheetTolerance (see
+// trace_kernel.h): round-off in z may put a hit on the rim of a closed conic just past it.
+inline constexpr double kSheetTolerance = 1e-9;
 
-// Same as intersect() with the profile given as raw numbers (k = 1 + Q): the hot-path form
-// used by the compiled tracer, inline so the per-surface loop has no call. Why each step is
-// done this way:
-//  - The implicit form F = c (x^2 + y^2 + k z^2) - 2 z has no 1/c, so planes (c = 0) and nearly
-//    flat surfaces go through the same formula without loss of precision.
-//  - The quadratic a t^2 + 2 b t + f = 0 is solved in the cancellation-free form
-//    q = -(b + sign(b) sqrt(b^2 - a f)), t = f/q and t = q/a. The root f/q stays finite when
-//    a -> 0 (a paraboloid hit by a ray parallel to its axis, or a plane), where the textbook
-//    formula would divide a vanishing difference by a vanishing a.
-//  - A conicoid has two sheets (hyperboloid) or two halves (sphere, ellipsoid). Solving
-//    k c z^2 - 2 z + c r^2 = 0 for z gives z = (1 -+ sqrt(1 - k c^2 r^2)) / (k c); the sag
-//    formula, i.e. the part containing the vertex, is the '-' branch, on which
-//    1 - k c z = +sqrt(...) >= 0. The far sheet of a hyperboloid and the far half of a sphere or
-//    ellipsoid have 1 - k c z <= 0. So a root lies on the physical surface iff 1 - k c z >= 0.
-//  - Of the roots on that branch the first one along the ray (smallest t >= -t_tolerance) is
-//    taken: a sequential ray meets each surface once, at its first physical crossing; a root
-//    behind the origin would mean travelling backwards.
-inline ProfileHit intersect_conic(double c, double k, const glm::dvec3& o, const glm::dvec3& d, double t_tolerance) {
-  const double a = c * (d.x * d.x + d.y * d.y + k * d.z * d.z);
-  const double b = c * (o.x * d.x + o.y * d.y + k * o.z * d.z) - d.z;
-  const double f = c * (o.x * o.x + o.y * o.y + k * o.z * o.z) - 2.0 * o.z;
-  double t0, t1;
-  if (a == 0.0) {
-    // Linear: plane, or a ray parallel to a paraboloid's axis (or a hyperboloid's
-    // asymptote). One crossing, none when the ray runs parallel to a plane.
-    if (b == 0.0) return {};
-    t0 = t1 = -f / (2.0 * b);
-  } else {
-    const double disc = b * b - a * f;
-    // disc < 0: the line misses the conicoid (a grazing ray that round-off pushed below 0
-    // included). disc == 0 grazes: kept as a hit at the double root.
-    if (!(disc >= 0.0)) return {};
-    const double q = -(b + std::copysign(std::sqrt(disc), b));
-    if (q == 0.0) {
-      t0 = t1 = 0.0;  // b == 0 and f == 0: tangent at the ray origin
-    } else {
-      t0 = f / q;
-      t1 = q / a;  // overflows to +-inf when a is tiny: rejected by the finiteness test
-      if (t1 < t0) std::swap(t0, t1);
-    }
-  }
-  if (std::isfinite(t0) && t0 >= -t_tolerance && 1.0 - k * c * (o.z + t0 * d.z) >= -1e-9) return {true, t0};
-  if (std::isfinite(t1) && t1 >= -t_tolerance && 1.0 - k * c * (o.z + t1 * d.z) >= -1e-9) return {true, t1};
-  return {};
-}
+// Smallest t >= -t_tolerance at which the ray meets the sheet of the profile through the vertex
+// (trace_kernel.h says why each root is taken or rejected; this is the sequential trace's own
+// intersection, run for one ray). t_tolerance lets a ray that starts exactly on a surface (a
+// stop placed on a lens vertex) meet it at t = 0. direction need not be normalised. Never
+// produces NaN: a miss is hit == false.
+ProfileHit intersect(const SurfaceProfile& profile, const glm::dvec3& origin, const glm::dvec3& direction,
+                     double t_tolerance = kBehindTolerance_mm);
 
 // Unit surface normal at a point on the profile (local frame), oriented towards -z at the vertex,
 // i.e. (0, 0, -1) there: the gradient of F = c(x^2 + y^2 + k z^2) - 2z, halved and normalised.

@@ -1,7 +1,9 @@
 // Exact real-ray trace through a sequential system, forward (object -> image) and in reverse
 // (image -> object, as the renderer's eye camera traces from a retina point out into the world).
 // A Prescription is compiled once into a flat array of interfaces; tracing then allocates
-// nothing, throws nothing and reports every lost ray by kind instead of producing NaN.
+// nothing, throws nothing and reports every lost ray by kind instead of producing NaN. Each ray
+// can be traced at its own wavelength: the indices then come from the media's dispersion laws.
+// One kernel (trace_kernel.h) intersects and refracts for the single-ray and the batched trace.
 #pragma once
 
 #include <cstddef>
@@ -42,9 +44,63 @@ struct TraceResult {
   bool ok() const { return status == TraceStatus::Ok; }
 };
 
+// Rays the batch trace works on at once, in structure-of-arrays form (trace_kernel.h): callers
+// that gather rays for trace_range_batch gather this many (any count is accepted).
+inline constexpr std::size_t kTraceBatchSize = 16;
+
+// The instruction set the batch trace runs on: AVX2 (4 rays a register) where the CPU has it
+// and the build targets it, else the baseline (SSE2 on x86-64, 2 rays a register); chosen at
+// start-up. The results are the same bits on either. Tests and benchmarks may switch;
+// set_trace_batch_isa returns false (and changes nothing) when the CPU or build lacks the set.
+enum class TraceBatchIsa { Baseline, Avx2 };
+TraceBatchIsa trace_batch_isa();
+bool set_trace_batch_isa(TraceBatchIsa isa);
+const char* to_string(TraceBatchIsa isa);
+
+namespace trace_detail {
+
+// The compiled form of one surface, as the kernel (trace_kernel.h) reads it.
+struct Interface {
+  double z;            // vertex position
+  double c;            // curvature
+  double k;            // 1 + conic
+  double kc;           // k c
+  double sd2;          // semi-diameter squared, +inf when unlimited
+  double n_before;     // index before (object side) at the compiled wavelength
+  double n_after;      // index after (image side) at the compiled wavelength
+  double eta_forward;  // n_before / n_after, 1 when the surface does not refract
+  double eta_reverse;  // n_after / n_before, likewise
+  SurfaceRole role;
+  bool plane;  // c == 0: every ray meets it in one point or not at all
+  // At any other wavelength: each side's medium is either one of CompiledSystem's dispersion
+  // laws (law >= 0) or has the same index at every wavelength (law < 0: that index).
+  struct Side {
+    int law = -1;
+    double index = 1.0;
+  };
+  Side before, after;
+  // Both sides constant: n_before / n_after and its inverse from the media table (1 when the
+  // surface does not refract), the same at every wavelength.
+  double eta_forward_any = 1.0, eta_reverse_any = 1.0;
+};
+
+// A medium's index at any wavelength, Medium::index_at: index + law(lambda) - law(reference).
+struct MediumLaw {
+  Dispersion dispersion;
+  double index;
+  double reference_nm;
+  double at_reference;  // dispersion.evaluate(reference_nm)
+};
+
+}  // namespace trace_detail
+
 class CompiledSystem {
  public:
-  // Validates the prescription (throws OpticsError) and flattens it.
+  // Validates the prescription (throws OpticsError) and flattens it. The indices at the
+  // prescription's wavelength are the surfaces' index_after; at any other wavelength they are
+  // those at_wavelength(prescription, lambda) gives: each surface's medium from the media
+  // table, re-evaluated by its dispersion law (a medium the table lacks keeps the surface's
+  // index at every wavelength, where at_wavelength would throw).
   explicit CompiledSystem(const Prescription& prescription);
 
   int surface_count() const { return static_cast<int>(interfaces_.size()); }
@@ -53,6 +109,13 @@ class CompiledSystem {
   double vertex_z(int surface) const { return interfaces_[surface].z; }
   double index_before(int surface) const { return interfaces_[surface].n_before; }
   double index_after(int surface) const { return interfaces_[surface].n_after; }
+  // The wavelength the system was compiled at (the prescription's wavelength_nm).
+  double wavelength_nm() const { return wavelength_nm_; }
+  // True when some medium has a dispersion law: then the trace depends on the wavelength.
+  bool dispersive() const { return !laws_.empty(); }
+  // Indices at lambda_nm as the per-wavelength trace uses them (the kernel's own evaluation).
+  double index_before(int surface, double lambda_nm) const;
+  double index_after(int surface, double lambda_nm) const;
 
   // Object space -> image surface: the ray starts in object space (index object_index) in
   // front of surface 0 and ends on the image surface.
@@ -67,37 +130,40 @@ class CompiledSystem {
   // retina ray to the stop plane (ray aiming). If points is not null it receives the hit
   // point of every surface reached, |last - first| + 1 entries at most.
   TraceResult trace_range(const Ray& ray, int first, int last, glm::dvec3* points = nullptr) const;
+  // The same at wavelength lambda_nm: equal, bit for bit, to the trace through
+  // CompiledSystem(at_wavelength(prescription, lambda_nm)). A wavelength outside
+  // [kMinWavelength_nm, kMaxWavelength_nm] is clamped into it and NaN means the compiled
+  // wavelength, so the trace still never throws.
+  TraceResult trace_range(const Ray& ray, int first, int last, double lambda_nm, glm::dvec3* points = nullptr) const;
 
-  // The same for many rays at once (results[j] as trace_range(rays[j], first, last) would
-  // give, bit for bit). Faster per ray: see sequential_trace.cpp. No allocation.
-  void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first, int last) const;
+  // The same for many rays at once: results[j] is what trace_range(rays[j], first, last,
+  // lambda_nm[j]) gives, bit for bit; lambda_nm == nullptr traces every ray at the compiled
+  // wavelength, as trace_range(rays[j], first, last). Faster per ray (rays in batches of
+  // kTraceBatchSize, several per SIMD register). No allocation.
+  void trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t count, int first,
+                         int last) const;
+  void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first, int last) const {
+    trace_range_batch(rays, nullptr, results, count, first, last);
+  }
   void trace_reverse_batch(const Ray* rays, TraceResult* results, std::size_t count) const {
-    trace_range_batch(rays, results, count, image_index() - 1, 0);
+    trace_range_batch(rays, nullptr, results, count, image_index() - 1, 0);
   }
 
- private:
-  struct Interface {
-    double z;            // vertex position
-    double c;            // curvature
-    double k;            // 1 + conic
-    double sd2;          // semi-diameter squared, +inf when unlimited
-    double n_before;     // index before (object side)
-    double n_after;      // index after (image side)
-    double eta_forward;  // n_before / n_after, 1 when the surface does not refract
-    double eta_reverse;  // n_after / n_before, likewise
-    SurfaceRole role;
-  };
-  struct Lanes;  // rays of a batch in structure-of-arrays form (sequential_trace.cpp)
-  template <bool Forward>
-  static TraceStatus step(const Interface& f, glm::dvec3& o, glm::dvec3& d);
-  template <bool Forward>
-  static void batch_step(const Interface& f, int index, Lanes& lanes, std::size_t n);
-  void trace_lanes(const Ray* rays, TraceResult* results, std::size_t n, int first, int last) const;
-  template <bool Forward>
-  TraceResult trace_impl(const Ray& ray, int first, int last, glm::dvec3* points) const;
+  // The compiled data as the kernel reads it (trace_kernel.h).
+  const std::vector<trace_detail::Interface>& interfaces() const { return interfaces_; }
+  const std::vector<trace_detail::MediumLaw>& laws() const { return laws_; }
 
-  std::vector<Interface> interfaces_;
+ private:
+  template <bool Forward, bool PerRayWavelength>
+  TraceResult trace_one(const Ray& ray, int first, int last, double lambda_nm, glm::dvec3* points) const;
+  void trace_block(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t n, int first,
+                   int last) const;
+
+  std::vector<trace_detail::Interface> interfaces_;
+  std::vector<trace_detail::MediumLaw> laws_;  // the distinct media with a dispersion law
   int stop_index_ = -1;
+  double wavelength_nm_ = 0.0;
+  bool herzberger_ = false;  // some law needs the Herzberger weights of the wavelength
 };
 
 }  // namespace eyetrace::optics
