@@ -71,10 +71,11 @@ PluginSpec make_eye_spec(bool with_model) {
                         "lens). Implies a curved retina."),
           param::real("wavelength")
               .range(optics::kMinWavelength_nm, optics::kMaxWavelength_nm)
-              .shown_default("model's reference")
+              .shown_default("dispersive")
               .with_unit("nm")
-              .describe("Indices follow each model's dispersion law (Navarro, Le Grand's Cornu, Arizona's Abbe line); "
-                        "Gullstrand and Kooijman have none."),
+              .describe("A monochromatic eye: every ray is traced at this wavelength. Absent, the eye disperses: each "
+                        "sample's hero wavelength is traced through each medium's dispersion law (`eyetrace optics` "
+                        "lists them; Gullstrand's and Kooijman's are assumed)."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
@@ -172,6 +173,7 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
   s.fov_deg = params.get_double("fov");
   parse_field_mapping(params.get_string("mapping"), &s.mapping);  // the table admits only known names
   s.scene_units_per_mm = 1e-3 / params.get_double("sceneunit");
+  s.dispersive = !params.has("wavelength");
   return s;
 }
 

@@ -37,6 +37,10 @@ class LensSystemCamera : public Camera {
     double film_half_mm = 0.0;  // > 0: a physical flat film whose shorter half-axis is this
     double scene_units_per_mm = 1e-3;
     std::string name = "eye";  // for to_string()
+    // Trace each sample's hero wavelength through the media's dispersion laws (the others
+    // are terminated: each wavelength leaves the eye its own way). Off, or for a system
+    // without dispersion, every ray is traced at the prescription's wavelength.
+    bool dispersive = false;
     PupilSampler::Options pupil;
   };
   // Throws optics::OpticsError when the system cannot be used (invalid, or no ray passes at the
@@ -66,6 +70,7 @@ class LensSystemCamera : public Camera {
   const PupilSampler& pupil() const { return pupil_; }
   const FieldAngleTable& field_angles() const { return angles_; }
   const Settings& settings() const { return settings_; }
+  bool dispersive() const { return dispersive_; }
   // Upper bound of every weight generate_ray returns, and the constant that makes the mean
   // weight at the image centre 1 (1 / integral of cos dw over the passing directions there).
   double max_weight() const { return max_weight_; }
@@ -99,6 +104,7 @@ class LensSystemCamera : public Camera {
   PupilSampler pupil_;
   double normalisation_ = 1.0;
   double max_weight_ = 0.0;
+  bool dispersive_ = false;
 };
 
 // A field-of-view/mapping combination the system cannot serve (message names why).

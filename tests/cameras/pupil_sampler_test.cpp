@@ -21,11 +21,15 @@ std::unique_ptr<LensSystemCamera> make_eye(const std::string& params, IVec2 res 
   return std::unique_ptr<LensSystemCamera>(dynamic_cast<LensSystemCamera*>(c.release()));
 }
 
-bool passes(const LensSystemCamera& cam, double arc, glm::dvec2 q) {
+// At the compiled wavelength, or at lambda_nm (a dispersive eye's rays).
+bool passes(const LensSystemCamera& cam, double arc, glm::dvec2 q, double lambda_nm = 0.0) {
   const glm::dvec2 p = cam.retina().point(arc);
   const glm::dvec3 from(p.x, 0.0, p.y);
   const optics::Ray ray{from, glm::dvec3(q.x, q.y, cam.pupil().z_plane()) - from};
-  return cam.system().trace_range(ray, cam.system().image_index() - 1, 0).ok();
+  const int first = cam.system().image_index() - 1;
+  return (lambda_nm > 0.0 ? cam.system().trace_range(ray, first, 0, lambda_nm)
+                          : cam.system().trace_range(ray, first, 0))
+      .ok();
 }
 
 // Fraction of generated rays that reach the scene, over random film and lens samples.
@@ -59,7 +63,7 @@ TEST(PupilSampler, UsefulRayFractionAtLeast95Percent) {
 // grown by 30% in each direction, at a spacing of 1/300 of it.
 // Returns the fraction of passing grid rays found outside (0 is required where the passing
 // region is convex, see below).
-double passing_outside_fraction(const LensSystemCamera& cam, const std::string& label) {
+double passing_outside_fraction(const LensSystemCamera& cam, const std::string& label, double lambda_nm = 0.0) {
   const PupilSampler& ps = cam.pupil();
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -75,7 +79,7 @@ double passing_outside_fraction(const LensSystemCamera& cam, const std::string& 
     for (int i = 0; i <= 200; ++i)
       for (int j = 0; j <= 100; ++j) {
         const glm::dvec2 q(c.x - 10.0 + 0.1 * i, 0.1 * j);
-        if (passes(cam, arc, q)) lo = glm::min(lo, q), hi = glm::max(hi, q);
+        if (passes(cam, arc, q, lambda_nm)) lo = glm::min(lo, q), hi = glm::max(hi, q);
       }
     if (lo.x > hi.x) lo = c, hi = c;
     lo -= glm::dvec2(0.1);
@@ -87,7 +91,7 @@ double passing_outside_fraction(const LensSystemCamera& cam, const std::string& 
     for (int i = 0; i < 300; ++i)
       for (int j = 0; j < 300; ++j) {
         const glm::dvec2 q(lo.x + (hi.x - lo.x) * (i + 0.5) / 300, lo.y + (hi.y - lo.y) * (j + 0.5) / 300);
-        if (!passes(cam, arc, q)) continue;
+        if (!passes(cam, arc, q, lambda_nm)) continue;
         ++passing;
         if (!ps.contains(arc, q)) ++outside;
       }
@@ -114,6 +118,21 @@ TEST(PupilSampler, NoPassingRayOutsideTheSampledRegion) {
       passing_outside_fraction(*make_eye("\"string model\" \"kooijman\" \"float pupildiameter\" 0.5 \"float fov\" 120"),
                                "kooijman 0.5 mm"),
       0.0);
+}
+
+// A dispersive eye traces each sample at its own wavelength through tables built at the
+// reference wavelength: they must hold the passing rays at the ends of the sampled range too
+// (the lens behind the iris moves the passing region with the wavelength).
+TEST(PupilSampler, DispersiveEyeHoldsEveryWavelength) {
+  for (double lambda : {360.0, 830.0}) {
+    auto cam = make_eye("\"float pupildiameter\" 5 \"float fov\" 60");
+    ASSERT_TRUE(cam->dispersive());
+    EXPECT_EQ(passing_outside_fraction(*cam, fmt::format("navarro 5 mm at {} nm", lambda), lambda), 0.0);
+    auto acc = make_eye(
+        "\"string model\" \"legrand\" \"float pupildiameter\" 6 \"float accommodation\" 5 "
+        "\"float fov\" 120");
+    EXPECT_EQ(passing_outside_fraction(*acc, fmt::format("legrand accommodated at {} nm", lambda), lambda), 0.0);
+  }
 }
 
 // A multi-element camera lens (pbrt's double Gauss, US patent 2,673,491 at 50 mm) wide open,
