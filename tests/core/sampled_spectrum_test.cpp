@@ -23,9 +23,9 @@ TEST(SampledWavelengths, FourStratifiedWavelengthsWithTheirDensity) {
     for (int i = 0; i < kSpectrumSamples; ++i) {
       float up = u + float(i) / kSpectrumSamples;
       if (up >= 1.f) up -= 1.f;
-      EXPECT_NEAR(w[i], sample_visible_wavelength(up), 1e-3f) << u << " " << i;
-      // The closed-form density equals the density formula at the wavelength drawn.
-      EXPECT_NEAR(w.pdf()[i], visible_wavelength_pdf(w[i]), 1e-5f * visible_wavelength_pdf(w[i])) << u;
+      EXPECT_NEAR(w[i], sample_visible_wavelength(up), 2e-3f) << u << " " << i;
+      // The tabulated sampler's density is the formula's within 0.5 % (the widest cells, in the tails).
+      EXPECT_NEAR(w.pdf()[i], visible_wavelength_pdf(w[i]), 5e-3f * visible_wavelength_pdf(w[i])) << u;
       EXPECT_GE(w[i], kLambdaMin);
       EXPECT_LE(w[i], kLambdaMax);
     }
