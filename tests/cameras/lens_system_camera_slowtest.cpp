@@ -31,7 +31,9 @@ void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Co
     cs.p_film = Vec2(res.x * u(rng), res.y * u(rng));
     cs.p_lens = Vec2(std::min(u(rng), kOneMinusEpsilon), std::min(u(rng), kOneMinusEpsilon));
     ++counts.samples;
-    const auto r = cam.generate_ray(cs);
+    cs.wavelength_u = u(rng);
+    SampledWavelengths lambda = SampledWavelengths::sample_visible(cs.wavelength_u);
+    const auto r = cam.generate_ray(cs, lambda);
     if (!r) continue;
     ++counts.rays;
     const Ray& ray = r->ray;
@@ -51,7 +53,11 @@ void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Co
     ASSERT_TRUE(rp) << label;
     const glm::dvec3 o(-double(ray.o.x) * mm_per_unit, double(ray.o.y) * mm_per_unit, -double(ray.o.z) * mm_per_unit);
     const glm::dvec3 d(-double(ray.d.x), double(ray.d.y), -double(ray.d.z));
-    const optics::TraceResult back = cam.system().trace_forward({o + 1e-3 * d, -d});
+    // A dispersive eye traced the hero wavelength: the way back is at that wavelength too.
+    const optics::Ray reversed{o + 1e-3 * d, -d};
+    const optics::TraceResult back =
+        cam.dispersive() ? cam.system().trace_range(reversed, 0, cam.system().image_index(), double(lambda[0]))
+                         : cam.system().trace_forward(reversed);
     ++counts.reversed;
     // Rays within float rounding of an aperture edge may flip: counted, bounded below.
     if (!back.ok() || glm::length(back.ray.origin - rp->position) > 1e-4) {

@@ -19,8 +19,11 @@
 namespace eyetrace {
 namespace {
 
+// Monochromatic at 589.3 nm unless the test names a wavelength: these tests check geometry
+// (focus, mapping, reversibility) at the reference wavelength; dispersion is tested apart.
 std::unique_ptr<LensSystemCamera> eye_camera(const std::string& params, IVec2 res = IVec2(256, 256)) {
-  SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");
+  const std::string mono = params.find("wavelength") == std::string::npos ? " \"float wavelength\" 589.3" : "";
+  SceneEntity e = parse_directive_text("Camera \"eye\" " + params + mono, "Camera", "test");
   CameraContext ctx{e.params, Transform(), res, ""};
   std::unique_ptr<Camera> c = create_eye_camera(ctx);
   return std::unique_ptr<LensSystemCamera>(dynamic_cast<LensSystemCamera*>(c.release()));

@@ -433,7 +433,8 @@ TEST(WavelengthTrace, DispersiveWhenAMediumHasALaw) {
   EXPECT_TRUE(CompiledSystem(eye("navarro")).dispersive());
   EXPECT_TRUE(CompiledSystem(eye("legrand")).dispersive());
   EXPECT_TRUE(CompiledSystem(eye("arizona")).dispersive());
-  EXPECT_FALSE(CompiledSystem(eye("gullstrand")).dispersive());  // published without dispersion
+  // Gullstrand publishes none; eyetrace gives it Navarro's laws (docs/eye-models.md).
+  EXPECT_TRUE(CompiledSystem(eye("gullstrand")).dispersive());
   // Media the table lacks (this hand-made lens names "glass") keep their index at every
   // wavelength, where at_wavelength() would refuse the prescription.
   const CompiledSystem lens(thin_lens());

@@ -22,7 +22,7 @@ Image render(const std::string& lens_dimensions, uint64_t seed, double accommoda
   o.crop = Vec4(0.4f, 0.6f, 0.4f, 0.6f);
   o.seed = seed;
   o.camera = parse_directive_text(
-      "Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 50 "
+      "Camera \"navarro\" \"float pupildiameter\" 5 \"float fov\" 50 \"float wavelength\" 589.3 "
       "\"float accommodation\" " +
           std::to_string(accommodation),
       "Camera", "test");
