@@ -92,6 +92,7 @@ void register_builtin_plugins(Registry& r) {
   r.integrators.add("direct", create_direct_integrator, direct_integrator_spec());
 
   r.built_in.push_back({"film", "rgb", &film_spec()});
+  r.built_in.push_back({"film", "spectral", &spectral_film_spec()});
 }
 
 std::vector<PluginListing> Registry::listing() const {

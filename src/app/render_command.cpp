@@ -11,6 +11,7 @@
 
 #include "app/commands.h"
 #include "app/interrupt.h"
+#include "cameras/lens_system_camera.h"
 #include "render/progress.h"
 #include "render/render_state.h"
 #include "scene/parser.h"
@@ -93,6 +94,10 @@ void resume_from(const std::string& path, uint64_t fingerprint, RenderSetup& set
     throw_error(
         fmt::format("--resume: render state \"{}\" is for a {}x{} image (or another crop), this render is {}x{}", path,
                     s.resolution.x, s.resolution.y, f.resolution().x, f.resolution().y));
+  if (s.spectral_buckets != f.buckets().count)
+    throw_error(
+        fmt::format("--resume: render state \"{}\" is for a film with {} spectral buckets, this render's has {}", path,
+                    s.spectral_buckets, f.buckets().count));
   if (s.fingerprint != fingerprint)
     throw_error(fmt::format(
         "--resume: render state \"{}\" was made for another scene or other options (the scene "
@@ -103,6 +108,56 @@ void resume_from(const std::string& path, uint64_t fingerprint, RenderSetup& set
   tiles = std::move(s.tiles);
 }
 
+// What turns a spectral film's buckets, seen through a lens-system camera (an eye model or
+// "realistic"), into spectral irradiance on the retina (or film): E = n'^2 * T * value / C, with
+// C the camera's weight normalisation (1 / the cos-weighted solid angle of the passing cone at
+// the image centre, in the image-space medium), n' that medium's index at the bucket's centre
+// and T = 1 (no ocular media absorption or Fresnel loss is modelled). docs/spectral.md derives it.
+struct RetinalIrradiance {
+  double weight_normalisation = 0.0;  // C, 1/sr
+  std::string medium;                 // the image-space medium (the vitreous of an eye)
+  std::vector<double> centres_nm, index, factor_sr;
+
+  std::map<std::string, std::string> metadata() const {
+    auto list = [](const std::vector<double>& v) {
+      std::string s;
+      for (double x : v) s += (s.empty() ? "" : " ") + fmt::format("{:.9g}", x);
+      return s;
+    };
+    return {{"eyetrace:camera_weight_normalisation", fmt::format("{:.9g}", weight_normalisation)},
+            {"eyetrace:image_medium", medium},
+            {"eyetrace:image_medium_index", list(index)},
+            {"eyetrace:retinal_irradiance_factors", list(factor_sr)}};
+  }
+  nlohmann::json json() const {
+    return {{"camera_weight_normalisation_per_sr", weight_normalisation},
+            {"image_medium", medium},
+            {"bucket_centres_nm", centres_nm},
+            {"image_medium_index", index},
+            {"factor_sr", factor_sr}};
+  }
+};
+
+std::optional<RetinalIrradiance> retinal_irradiance(const RenderSetup& setup) {
+  const SpectralBuckets& b = setup.film->buckets();
+  const auto* camera = dynamic_cast<const LensSystemCamera*>(setup.camera.get());
+  if (!b.spectral() || !camera) return std::nullopt;
+  const optics::Prescription& p = camera->prescription();
+  const optics::Surface& last = p.surfaces.at(size_t(p.image_index() - 1));  // the medium before the image
+  const optics::Medium* medium = p.find_medium(last.medium);
+  RetinalIrradiance r;
+  r.weight_normalisation = camera->weight_normalisation();
+  r.medium = last.medium.empty() ? "air" : last.medium;
+  for (int i = 0; i < b.count; ++i) {
+    const double centre = b.centre(i);
+    const double n = medium ? medium->index_at(centre) : last.index_after;
+    r.centres_nm.push_back(centre);
+    r.index.push_back(n);
+    r.factor_sr.push_back(n * n / r.weight_normalisation);
+  }
+  return r;
+}
+
 struct Snapshot {
   bool interrupted = false;
   bool final = false;
@@ -110,7 +165,7 @@ struct Snapshot {
 
 // Writes the image as it stands and, unless it is final, the state to resume it from.
 void save(const std::string& output, const RenderArgs& a, const RenderSetup& setup, const TileProgress& tiles,
-          uint64_t fingerprint, Snapshot kind) {
+          uint64_t fingerprint, Snapshot kind, const std::optional<RetinalIrradiance>& irradiance) {
   int spp = setup.sampler->samples_per_pixel();
   std::map<std::string, std::string> meta = {{"eyetrace:samples_per_pixel", std::to_string(tiles.min_done())},
                                              {"eyetrace:samples_requested", std::to_string(spp)},
@@ -119,6 +174,8 @@ void save(const std::string& output, const RenderArgs& a, const RenderSetup& set
                                              {"eyetrace:camera", setup.camera->to_string()}};
   // A render stopped mid-pass has tiles one pass ahead: each pixel is still a proper mean.
   if (tiles.max_done() != tiles.min_done()) meta["eyetrace:samples_per_pixel_max"] = std::to_string(tiles.max_done());
+  meta.merge(setup.film->image_metadata());
+  if (irradiance) meta.merge(irradiance->metadata());
   if (!kind.final) {
     RenderState s;
     s.fingerprint = fingerprint;
@@ -126,6 +183,7 @@ void save(const std::string& output, const RenderArgs& a, const RenderSetup& set
     s.bounds = setup.film->bounds();
     s.samples_per_pixel = spp;
     s.tiles = tiles;
+    s.spectral_buckets = setup.film->buckets().count;
     s.accumulators = setup.film->accumulators();
     s.nonfinite_samples = setup.film->nonfinite_samples();
     write_render_state(state_path(output), s);
@@ -155,11 +213,13 @@ int run_render(const RenderArgs& a) {
   o.spp = a.spp;
   if (a.seed >= 0) o.seed = uint64_t(a.seed);
   o.max_memory_bytes = a.max_memory_gib > 0 ? uint64_t(a.max_memory_gib * 1073741824.0) : default_memory_limit();
+  o.output = a.output;
 
   ProgressLine progress(!a.quiet);
   RenderSetup setup = build_render_setup(desc, o);
   std::string output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(output);
+  const std::optional<RetinalIrradiance> irradiance = retinal_irradiance(setup);
   const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup), setup.files_read);
   const int spp = setup.sampler->samples_per_pixel();
   TileProgress tiles = TileProgress::start(setup.film->bounds());
@@ -182,7 +242,7 @@ int run_render(const RenderArgs& a) {
     ro.on_pass = [&](const TileProgress& t) {
       auto now = std::chrono::steady_clock::now();
       if (t.min_done() >= spp || std::chrono::duration<double>(now - last_checkpoint).count() < a.checkpoint) return;
-      save(output, a, setup, t, fingerprint, Snapshot{});
+      save(output, a, setup, t, fingerprint, Snapshot{}, irradiance);
       last_checkpoint = std::chrono::steady_clock::now();
     };
   setup.integrator->render(*setup.camera, *setup.sampler, *setup.film, ro, counters);
@@ -192,11 +252,11 @@ int run_render(const RenderArgs& a) {
 
   const bool complete = tiles.min_done() >= spp;
   if (complete) {
-    save(output, a, setup, tiles, fingerprint, Snapshot{false, true});
+    save(output, a, setup, tiles, fingerprint, Snapshot{false, true}, irradiance);
     std::error_code ec;
     std::filesystem::remove(state_path(output), ec);  // finished: nothing left to resume
   } else if (tiles.max_done() > 0) {
-    save(output, a, setup, tiles, fingerprint, Snapshot{true, false});
+    save(output, a, setup, tiles, fingerprint, Snapshot{true, false}, irradiance);
     fmt::print(stderr,
                "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
                output, tiles.min_done(), spp,
@@ -213,7 +273,15 @@ int run_render(const RenderArgs& a) {
                counters.nonfinite_samples
                    ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load())
                    : "");
-  if (!a.stats.empty())
+  if (!a.stats.empty()) {
+    const SpectralBuckets& b = setup.film->buckets();
+    nlohmann::json film = {{"type", b.spectral() ? "spectral" : "rgb"}};
+    if (b.spectral()) {
+      film["buckets"] = b.count;
+      film["lambda_min_nm"] = b.lambda_min;
+      film["lambda_max_nm"] = b.lambda_max;
+    }
+    if (irradiance) film["retinal_irradiance"] = irradiance->json();
     write_stats(a, {{"scene", a.scene},
                     {"output", output},
                     {"seconds", seconds},
@@ -235,7 +303,9 @@ int run_render(const RenderArgs& a) {
                     {"threads", a.threads},
                     {"resolution", {setup.film->resolution().x, setup.film->resolution().y}},
                     {"camera", setup.camera->to_string()},
+                    {"film", film},
                     {"warnings", warning_count()}});
+  }
   return complete ? 0 : 128 + interrupt.signal_number();
 }
 

@@ -1,5 +1,8 @@
 #include "render/film.h"
 
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace eyetrace {
@@ -13,8 +16,58 @@ PixelBounds crop_to_pixels(IVec2 res, Vec4 crop) {
   return b;
 }
 
-Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale)
-    : resolution_(resolution), bounds_(bounds), filter_(std::move(filter)), scale_(scale), pixels_(bounds.area()) {}
+std::string SpectralBuckets::channel_name(int b) const {
+  std::string lambda = fmt::format("{:.3f}nm", centre(b));
+  std::replace(lambda.begin(), lambda.end(), '.', ',');
+  return "S0." + lambda;
+}
+
+Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale, SpectralBuckets buckets)
+    : resolution_(resolution),
+      bounds_(bounds),
+      filter_(std::move(filter)),
+      scale_(scale),
+      buckets_(buckets),
+      pixels_(bounds.area()) {
+  if (buckets_.count < 0 || buckets_.count > SpectralBuckets::kMaxCount ||
+      (buckets_.spectral() && !(buckets_.lambda_min < buckets_.lambda_max)))
+    throw std::invalid_argument("Film: invalid spectral buckets");
+  bucket_sums_.assign(bounds.area() * size_t(buckets_.count), 0.0);
+}
+
+bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+  const RGB rgb = sampled_to_rgb(L, lambda);
+  const SampledSpectrum pdf = lambda.pdf();
+  bool finite = is_finite(rgb) && std::isfinite(w);
+  // Every term first, so that a sample with any non-finite part changes nothing.
+  const double norm = 1.0 / (double(kSpectrumSamples) * buckets_.width());
+  int bucket[kSpectrumSamples];
+  double term[kSpectrumSamples];
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    bucket[i] = -1;
+    term[i] = 0.0;
+    if (pdf[i] == 0.f) continue;  // terminated: stands for nothing
+    if (!std::isfinite(L[i])) finite = false;
+    bucket[i] = buckets_.bucket_of(lambda[i]);
+    if (bucket[i] < 0) continue;
+    term[i] = double(w) * double(L[i]) / double(pdf[i]) * norm;
+    if (!std::isfinite(term[i])) finite = false;
+  }
+  if (!finite) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  const size_t i_px = index(pixel);
+  Pixel& px = pixels_[i_px];
+  px.sum[0] += double(w) * rgb.r;
+  px.sum[1] += double(w) * rgb.g;
+  px.sum[2] += double(w) * rgb.b;
+  px.weight += w;
+  double* sums = &bucket_sums_[i_px * size_t(buckets_.count)];
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (bucket[i] >= 0) sums[bucket[i]] += term[i];
+  return true;
+}
 
 RGB Film::pixel_value(IVec2 p) const {
   const Pixel& px = pixels_[index(p)];
@@ -23,32 +76,66 @@ RGB Film::pixel_value(IVec2 p) const {
   return RGB(float(px.sum[0] * k), float(px.sum[1] * k), float(px.sum[2] * k));
 }
 
+float Film::bucket_value(IVec2 p, int b) const {
+  const size_t i = index(p);
+  const double weight = pixels_[i].weight;
+  if (weight == 0) return 0.f;
+  return float(bucket_sums_[i * size_t(buckets_.count) + size_t(b)] * (scale_ / weight));
+}
+
 Image Film::image() const {
   Image img;
   img.width = bounds_.width();
   img.height = bounds_.height();
-  img.channels = 3;
-  img.pixels.resize(size_t(img.width) * img.height * 3);
+  img.channels = 3 + buckets_.count;
+  if (buckets_.spectral()) {
+    img.channel_names = {"R", "G", "B"};
+    for (int b = 0; b < buckets_.count; ++b) img.channel_names.push_back(buckets_.channel_name(b));
+  }
+  img.pixels.resize(size_t(img.width) * img.height * img.channels);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
-      RGB v = pixel_value(bounds_.lo + IVec2(x, y));
+      const IVec2 p = bounds_.lo + IVec2(x, y);
+      RGB v = pixel_value(p);
       for (int c = 0; c < 3; ++c) img.at(x, y, c) = std::isfinite(v[c]) ? v[c] : 0.f;
+      for (int b = 0; b < buckets_.count; ++b) {
+        const float s = bucket_value(p, b);
+        img.at(x, y, 3 + b) = std::isfinite(s) ? s : 0.f;
+      }
     }
   return img;
 }
 
+std::map<std::string, std::string> Film::image_metadata() const {
+  if (!buckets_.spectral()) return {};
+  // As pbrt-v4's SpectralFilm writes them (the layout of Fichet et al. 2021), and the buckets
+  // themselves, since the channel names give only their centres.
+  return {
+      {"spectralLayoutVersion", "1.0"},
+      {"emissiveUnits", "W.m^-2.sr^-1"},
+      {"eyetrace:spectral_buckets", fmt::format("{} {} {}", buckets_.count, buckets_.lambda_min, buckets_.lambda_max)}};
+}
+
 std::vector<double> Film::accumulators() const {
+  const size_t n = size_t(buckets_.count);
   std::vector<double> acc;
-  acc.reserve(pixels_.size() * 4);
-  for (const Pixel& p : pixels_) acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight});
+  acc.reserve(pixels_.size() * accumulators_per_pixel());
+  for (size_t i = 0; i < pixels_.size(); ++i) {
+    const Pixel& p = pixels_[i];
+    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight});
+    acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * n),
+               bucket_sums_.begin() + std::ptrdiff_t((i + 1) * n));
+  }
   return acc;
 }
 
 void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
-  if (acc.size() != pixels_.size() * 4) throw std::invalid_argument("Film::restore: wrong number of accumulators");
+  const size_t per = accumulators_per_pixel(), n = size_t(buckets_.count);
+  if (acc.size() != pixels_.size() * per) throw std::invalid_argument("Film::restore: wrong number of accumulators");
   for (size_t i = 0; i < pixels_.size(); ++i) {
-    const double* a = &acc[4 * i];
+    const double* a = &acc[per * i];
     pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3]};
+    std::copy(a + 4, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * n));
   }
   nonfinite_ = nonfinite_samples;
 }

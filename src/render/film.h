@@ -2,9 +2,23 @@
 // sample's spectral radiance becomes CIE XYZ and then sRGB (core/spectrum.h) as it arrives. Each camera sample
 // lands in one pixel (the filter is importance-sampled), so pixels are written by one thread.
 // Non-finite samples are counted and discarded, never averaged into the image.
+//
+// A spectral film (pbrt-v4's Film "spectral") also keeps, per pixel, one sum per wavelength
+// bucket: equal buckets over [lambda_min, lambda_max]. A sample's wavelengths are the renderer's
+// (drawn from pbrt-v4's visible-wavelength density over 360-830 nm, as for the RGB film), and
+// each wavelength lambda_i with density pdf_i > 0 that falls into bucket b adds
+//   w * L_i / (pdf_i * N * width)          (N = 4 wavelengths per sample, width in nm)
+// to that bucket's sum, so that the expected value of a sample's bucket term is the mean of
+// L over the bucket, (1 / width) * integral of L over it: a constant spectrum c gives c in every
+// bucket. A terminated wavelength (pdf 0) adds nothing; its hero stands for all four (pdf / 4).
+// The buckets share the pixel's weight sum with R, G, B, so a pixel's bucket value is its sum
+// divided by the same weight: a lost camera ray (zero radiance) darkens the buckets as it
+// darkens RGB. The R, G, B channels of a spectral film are exactly those of an RGB film.
 #pragma once
 #include <atomic>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/filter.h"
@@ -24,19 +38,47 @@ struct PixelBounds {
 // pbrt's cropwindow (x0, x1, y0, y1 as fractions) to pixel bounds, as pbrt-v4 rounds them.
 PixelBounds crop_to_pixels(IVec2 resolution, Vec4 crop);
 
+// The wavelength buckets of a spectral film; count 0 is an RGB film.
+struct SpectralBuckets {
+  static constexpr int kMaxCount = 512;
+  int count = 0;
+  float lambda_min = 400.f, lambda_max = 700.f;  // nm
+
+  bool spectral() const { return count > 0; }
+  double width() const { return (double(lambda_max) - double(lambda_min)) / count; }  // nm
+  double centre(int b) const { return double(lambda_min) + (b + 0.5) * width(); }
+  // The bucket lambda falls into, -1 outside [lambda_min, lambda_max] (lambda_max itself is in
+  // the last bucket).
+  int bucket_of(float lambda) const {
+    if (!(lambda >= lambda_min && lambda <= lambda_max)) return -1;
+    const int b = int(double(count) * (double(lambda) - lambda_min) / (double(lambda_max) - lambda_min));
+    return b < count ? b : count - 1;
+  }
+  // The EXR channel name of bucket b, as pbrt-v4's SpectralFilm names it (after Fichet et al.,
+  // "An OpenEXR Layout for Spectral Images", JCGT 2021): "S0." and the bucket centre in nm with
+  // three decimals, its '.' written as ',' (OpenEXR separates layers with '.'): "S0.409,375nm".
+  std::string channel_name(int b) const;
+};
+
 class Film {
  public:
   // `scale` multiplies every pixel (pbrt-v4's iso/exposure imaging ratio).
-  Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale = 1.f);
+  Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale = 1.f,
+       SpectralBuckets buckets = {});
   IVec2 resolution() const { return resolution_; }
   const PixelBounds& bounds() const { return bounds_; }
   const Filter& filter() const { return *filter_; }
+  const SpectralBuckets& buckets() const { return buckets_; }
 
   // Adds radiance L with filter weight w to `pixel` (absolute raster coordinates).
-  // Returns false (and counts it) when L or w is not finite.
+  // Returns false (and counts it) when w, or L at a wavelength with non-zero density, or any
+  // colour or bucket term it gives, is not finite: nothing of such a sample is kept.
   bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+    if (buckets_.spectral()) return add_spectral_sample(pixel, L, lambda, w);
     return add_sample(pixel, sampled_to_rgb(L, lambda), w);
   }
+  // An RGB sample: adds to R, G, B and the weight, nothing to the buckets (the renderer uses it
+  // for zero radiance only: a lost camera ray).
   bool add_sample(IVec2 pixel, const RGB& L, float w) {
     if (!is_finite(L) || !std::isfinite(w)) {
       nonfinite_.fetch_add(1, std::memory_order_relaxed);
@@ -50,14 +92,21 @@ class Film {
     return true;
   }
   RGB pixel_value(IVec2 pixel) const;
-  Image image() const;  // the crop region, top row first
+  // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
+  float bucket_value(IVec2 pixel, int b) const;
+  // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, named.
+  Image image() const;
+  // Header attributes that describe the channels (the spectral layout's version and units).
+  std::map<std::string, std::string> image_metadata() const;
   uint64_t nonfinite_samples() const { return nonfinite_; }
 
-  // The exact accumulators, 4 doubles per pixel (weighted r, g, b sums and the weight sum),
-  // row-major over bounds(): a checkpoint stores them, and a film restored from them
-  // continues bit for bit as if it had never stopped.
+  // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums and
+  // the weight sum, then (spectral film) the weighted sum of each bucket: 4 + buckets().count
+  // doubles per pixel. A checkpoint stores them, and a film restored from them continues bit
+  // for bit as if it had never stopped.
   std::vector<double> accumulators() const;
-  // Throws std::invalid_argument unless `acc` holds 4 values per pixel.
+  size_t accumulators_per_pixel() const { return 4 + size_t(buckets_.count); }
+  // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
 
  private:
@@ -65,12 +114,15 @@ class Film {
     double sum[3] = {0, 0, 0};
     double weight = 0;
   };
+  bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
   size_t index(IVec2 p) const { return size_t(p.y - bounds_.lo.y) * bounds_.width() + (p.x - bounds_.lo.x); }
   IVec2 resolution_;
   PixelBounds bounds_;
   std::unique_ptr<Filter> filter_;
   float scale_;
+  SpectralBuckets buckets_;
   std::vector<Pixel> pixels_;
+  std::vector<double> bucket_sums_;  // buckets_.count per pixel, in pixel order
   std::atomic<uint64_t> nonfinite_{0};
 };
 

@@ -32,6 +32,12 @@ void write_image(const std::string& path, const Image& image, const std::map<std
   bool is_float = ext == ".exr" || ext == ".hdr" || ext == ".pfm";
   if (!is_float && ext != ".png" && ext != ".jpg" && ext != ".jpeg" && ext != ".tif" && ext != ".tiff")
     throw_error(fmt::format("output \"{}\": unsupported image extension \"{}\" (use .exr or .png)", path, ext));
+  if (!is_float && image.channels != 3)
+    throw_error(fmt::format("output \"{}\": a {}-channel image (a spectral film's) can only be written as .exr", path,
+                            image.channels));
+  if (!image.channel_names.empty() && int(image.channel_names.size()) != image.channels)
+    throw_error(fmt::format("output \"{}\": {} channel names for {} channels", path, image.channel_names.size(),
+                            image.channels));
   fs::path target(path);
   fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
@@ -42,6 +48,7 @@ void write_image(const std::string& path, const Image& image, const std::map<std
 
   OIIO::ImageSpec spec(image.width, image.height, image.channels,
                        is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
   for (const auto& [k, v] : metadata) spec.attribute(k, v);
   std::vector<float> buffer = image.pixels;
   if (!is_float) {
@@ -73,6 +80,7 @@ Image read_image(const std::string& path) {
   img.width = spec.width;
   img.height = spec.height;
   img.channels = spec.nchannels;
+  img.channel_names = spec.channelnames;
   img.pixels.resize(size_t(img.width) * img.height * img.channels);
   if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
     throw_error(fmt::format("image \"{}\": read failed: {}", path, in->geterror()));

@@ -10,13 +10,18 @@ namespace eyetrace {
 struct Image {
   int width = 0, height = 0, channels = 3;
   std::vector<float> pixels;  // linear, row-major, top row first
+  // One name per channel (EXR), or empty: R, G, B. A spectral film's image is R, G, B and its
+  // buckets (render/film.h).
+  std::vector<std::string> channel_names;
   float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
   float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 
-// .exr: linear half/float RGB with `metadata` as string attributes; .png/.jpg/.tif: sRGB
-// 8-bit after clamping. Throws SceneError naming the file on failure.
+// .exr: linear float32 channels (named as `channel_names`) with `metadata` as string
+// attributes; .png/.jpg/.tif: sRGB 8-bit after clamping, 3-channel images only (anything else
+// is an error: a spectral image is EXR only). Throws SceneError naming the file on failure.
 void write_image(const std::string& path, const Image& image, const std::map<std::string, std::string>& metadata = {});
+// All channels as float, in the file's channel order, with their names.
 Image read_image(const std::string& path);
 // Reads one string attribute from an image header ("" if absent).
 std::string read_image_attribute(const std::string& path, const std::string& name);

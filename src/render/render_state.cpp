@@ -81,7 +81,7 @@ void write_render_state(const std::string& path, const RenderState& s) {
   w.put(RenderState::kVersion);
   w.put(s.fingerprint);
   for (int v : {s.resolution.x, s.resolution.y, s.bounds.lo.x, s.bounds.lo.y, s.bounds.hi.x, s.bounds.hi.y,
-                s.samples_per_pixel, TileProgress::kTileSize, s.tiles.tiles.x, s.tiles.tiles.y})
+                s.samples_per_pixel, TileProgress::kTileSize, s.tiles.tiles.x, s.tiles.tiles.y, s.spectral_buckets})
     w.put(int32_t(v));
   w.put_array(s.tiles.done);
   w.put(s.nonfinite_samples);
@@ -131,20 +131,24 @@ RenderState read_render_state(const std::string& path) {
     r.corrupt(fmt::format("format version {}, this eyetrace reads version {}", version, RenderState::kVersion));
   RenderState s;
   s.fingerprint = r.get<uint64_t>();
-  int32_t v[10];
+  int32_t v[11];
   for (int32_t& x : v) x = r.get<int32_t>();
   s.resolution = IVec2(v[0], v[1]);
   s.bounds = PixelBounds{IVec2(v[2], v[3]), IVec2(v[4], v[5])};
   s.samples_per_pixel = v[6];
   if (v[7] != TileProgress::kTileSize) r.corrupt("it was written with another tile size");
   s.tiles.tiles = IVec2(v[8], v[9]);
+  s.spectral_buckets = v[10];
+  if (s.spectral_buckets < 0 || s.spectral_buckets > SpectralBuckets::kMaxCount)
+    r.corrupt(
+        fmt::format("its spectral bucket count {} is outside [0, {}]", s.spectral_buckets, SpectralBuckets::kMaxCount));
   s.tiles.done = r.get_array<int>();
   s.nonfinite_samples = r.get<uint64_t>();
   s.accumulators = r.get_array<double>();
   if (r.position() + 8 != bytes.size()) r.corrupt("it has trailing bytes");
   bool sane = s.bounds.lo.x >= 0 && s.bounds.lo.y >= 0 && s.bounds.hi.x > s.bounds.lo.x &&
               s.bounds.hi.y > s.bounds.lo.y && s.tiles.matches(s.bounds) &&
-              s.accumulators.size() == s.bounds.area() * 4;
+              s.accumulators.size() == s.bounds.area() * (4 + size_t(s.spectral_buckets));
   if (!sane) r.corrupt("its film and tile sizes disagree");
   for (int d : s.tiles.done)
     if (d < 0 || d > s.samples_per_pixel) r.corrupt("a tile count is outside [0, samples per pixel]");

@@ -1,7 +1,8 @@
 // A render's resumable state, saved next to the output image as "<output>.state": the film's
-// exact double accumulators, the samples each tile holds, and the fingerprint (scene/scene_fingerprint.h) of everything
-// that decides the image, so `eyetrace render --resume` continues a stopped render to the
-// same bits an uninterrupted one gives, and refuses a state made for another scene.
+// exact double accumulators (RGB, weight and, for a spectral film, one per wavelength bucket), the samples each tile
+// holds, and the fingerprint (scene/scene_fingerprint.h) of everything that decides the image, so `eyetrace render
+// --resume` continues a stopped render to the same bits an uninterrupted one gives, and refuses a state made for
+// another scene.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -14,13 +15,16 @@
 namespace eyetrace {
 
 struct RenderState {
-  static constexpr uint32_t kVersion = 1;
+  // 2: the film's spectral bucket count is stored and the accumulators hold 4 + buckets
+  // doubles per pixel (version 1: 4, RGB films only).
+  static constexpr uint32_t kVersion = 2;
   uint64_t fingerprint = 0;  // of the scene and every option that changes the image
   IVec2 resolution{0};
   PixelBounds bounds;
   int samples_per_pixel = 0;  // requested
   TileProgress tiles;
-  std::vector<double> accumulators;  // Film::accumulators()
+  int spectral_buckets = 0;          // Film::buckets().count (0: an RGB film)
+  std::vector<double> accumulators;  // Film::accumulators(): 4 + spectral_buckets per pixel
   uint64_t nonfinite_samples = 0;
 };
 

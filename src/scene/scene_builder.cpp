@@ -1,5 +1,7 @@
 #include "scene/scene_builder.h"
 
+#include <cctype>
+#include <filesystem>
 #include <set>
 
 #include "scene/registry.h"
@@ -14,40 +16,76 @@ struct FilmSettings {
   PixelBounds bounds;
   std::string filename = "pbrt.exr";
   float scale = 1.f;
+  SpectralBuckets buckets;  // count 0: an RGB film
 };
+
+// The parameters every film takes (pbrt-v4's FilmBaseParameters, PixelSensor and RGB film).
+std::vector<ParamSpec> film_base_params() {
+  return {
+      param::integer("xresolution", 1280).range(1, 1 << 15).with_unit("pixels"),
+      param::integer("yresolution", 720).range(1, 1 << 15).with_unit("pixels"),
+      param::reals("cropwindow").size(4).range(0, 1).describe("x0 x1 y0 y1, fractions of the image"),
+      param::integers("pixelbounds").size(4).describe("x0 x1 y0 y1, pixels (a crop window takes precedence)"),
+      param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
+      param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
+      param::real("exposuretime", 1).above(0).with_unit("s"),
+      param::boolean("savefp16", true).describe("ignored"),
+      param::real("maxcomponentvalue").describe("ignored"),
+      param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
+      param::string("sensor", "cie1931").describe("ignored"),
+      param::real("whitebalance", 0).describe("ignored"),
+  };
+}
 
 }  // namespace
 
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
+      "Film", "the image: its size, crop window, output file and exposure",
+      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16`, `maxcomponentvalue`, `diagonal`, "
+      "`sensor` and `whitebalance` are accepted and ignored.",
+      film_base_params()};
+  return spec;
+}
+
+const PluginSpec& spectral_film_spec() {
+  static const PluginSpec spec{
       "Film",
-      "the image: its size, crop window, output file and exposure",
-      "`gbuffer` and `spectral` are accepted and rendered as `rgb`, with a warning. `savefp16`, "
-      "`maxcomponentvalue`, `diagonal`, `sensor` and `whitebalance` are accepted and ignored.",
-      {
-          param::integer("xresolution", 1280).range(1, 1 << 15).with_unit("pixels"),
-          param::integer("yresolution", 720).range(1, 1 << 15).with_unit("pixels"),
-          param::reals("cropwindow").size(4).range(0, 1).describe("x0 x1 y0 y1, fractions of the image"),
-          param::integers("pixelbounds").size(4).describe("x0 x1 y0 y1, pixels (a crop window takes precedence)"),
-          param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
-          param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
-          param::real("exposuretime", 1).above(0).with_unit("s"),
-          param::boolean("savefp16", true).describe("ignored"),
-          param::real("maxcomponentvalue").describe("ignored"),
-          param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
-          param::string("sensor", "cie1931").describe("ignored"),
-          param::real("whitebalance", 0).describe("ignored"),
-      }};
+      "the `rgb` film's R, G, B plus one channel per wavelength bucket: the mean spectral radiance over the bucket "
+      "(docs/spectral.md)",
+      "Default range 400–700 nm (pbrt-v4: 360–830 nm). Wavelengths are drawn as for `rgb` (pbrt-v4's visible "
+      "density over 360–830 nm), not uniformly over [lambdamin, lambdamax], so R, G, B are the `rgb` film's. "
+      "EXR only; always float32 (`savefp16` ignored).",
+      film_base_params() + std::vector<ParamSpec>{
+                               param::integer("nbuckets", 16)
+                                   .range(1, SpectralBuckets::kMaxCount)
+                                   .describe("wavelength buckets of equal width"),
+                               param::real("lambdamin", 400)
+                                   .range(kLambdaMin, kLambdaMax)
+                                   .with_unit("nm")
+                                   .describe("short end of the first bucket"),
+                               param::real("lambdamax", 700)
+                                   .range(kLambdaMin, kLambdaMax)
+                                   .with_unit("nm")
+                                   .describe("long end of the last bucket; above lambdamin"),
+                           }};
   return spec;
 }
 
 namespace {
 
+bool has_extension(const std::string& path, const std::string& ext) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e == ext;
+}
+
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
-    fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb", film.name);
-  if (film.name != "rgb") warn(film.loc, fmt::format("film \"{}\" is rendered as an \"rgb\" film", film.name));
-  const PluginParams p(film.params, film_spec(), film.name);
+    fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
+  if (film.name == "gbuffer") warn(film.loc, "film \"gbuffer\" is rendered as an \"rgb\" film");
+  const bool spectral = film.name == "spectral";
+  const PluginParams p(film.params, spectral ? spectral_film_spec() : film_spec(), film.name);
   FilmSettings f;
   f.resolution = IVec2(p.get_int("xresolution"), p.get_int("yresolution"));
   if (o.resolution) {  // --resolution: checked here, the scene's values by the table
@@ -73,6 +111,22 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
   f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  if (spectral) {
+    f.buckets.count = p.get_int("nbuckets");
+    f.buckets.lambda_min = p.get_float("lambdamin");
+    f.buckets.lambda_max = p.get_float("lambdamax");
+    if (!(f.buckets.lambda_min < f.buckets.lambda_max))
+      p.fail(p.has("lambdamax") ? "lambdamax" : "lambdamin",
+             fmt::format("lambdamin {} nm must be below lambdamax {} nm", f.buckets.lambda_min, f.buckets.lambda_max));
+    // As pbrt-v4: the spectral film writes EXR only; the image that would be written is checked,
+    // the command line's if it replaces the scene's.
+    if (!o.output.empty() && !has_extension(o.output, ".exr"))
+      throw_parameter_error({}, "--output",
+                            fmt::format("\"{}\": the spectral film (Film \"spectral\" at {}) writes EXR only", o.output,
+                                        film.loc.to_string()));
+    if (o.output.empty() && !has_extension(f.filename, ".exr"))
+      p.fail("filename", fmt::format("\"{}\": the spectral film writes EXR only (use a .exr name)", f.filename));
+  }
   return f;
 }
 
@@ -235,8 +289,9 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
 }
 
 void check_memory(const FilmSettings& f, const RenderOverrides& o) {
-  // The film holds 4 doubles per pixel and the output image 3 floats.
-  uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12);
+  // The film holds 4 doubles per pixel and the output image 3 floats, and a spectral film one
+  // double and one float more per bucket.
+  uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12 + 12 * uint64_t(f.buckets.count));
   if (o.max_memory_bytes && bytes > o.max_memory_bytes)
     throw_error(fmt::format("a {}x{} film needs about {:.1f} GiB, more than the limit of {:.1f} GiB (--max-memory)",
                             f.bounds.width(), f.bounds.height(), bytes / 1073741824.0,
@@ -300,7 +355,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   attempt([&] {
     const SceneEntity& pf = desc.filter;
     auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
-    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale);
+    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets);
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
   if (attempt([&] { Builder(desc, setup).build_world(); }))

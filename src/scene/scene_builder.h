@@ -24,6 +24,7 @@ struct RenderOverrides {
   std::optional<uint64_t> seed;       // --seed
   std::optional<Vec4> crop;           // --crop
   uint64_t max_memory_bytes = 0;      // refuse scenes predicted to need more (0: no limit)
+  std::string output;                 // --output, replacing the Film's filename ("" when not given)
 };
 
 struct RenderSetup {
@@ -38,8 +39,10 @@ struct RenderSetup {
   std::vector<std::string> files_read;  // every file the plugins read (scene/scene_files.h), sorted
 };
 
-// The Film directive's parameters (Film is built in, not a plugin).
+// The Film directive's parameters (Film is built in, not a plugin): "rgb" (and "gbuffer",
+// rendered as rgb) and "spectral" (the same plus its wavelength buckets).
 const PluginSpec& film_spec();
+const PluginSpec& spectral_film_spec();
 
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& overrides);
 

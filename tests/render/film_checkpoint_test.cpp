@@ -12,6 +12,7 @@
 #include <iterator>
 #include <thread>
 
+#include "core/fnv1a.h"
 #include "render/film.h"
 #include "render/render_state.h"
 #include "scene/parser.h"
@@ -22,10 +23,11 @@
 namespace eyetrace {
 namespace {
 
-// 40x24 pixels: 3x2 tiles, the right and bottom ones partial.
+// 40x24 pixels: 3x2 tiles, the right and bottom ones partial. "{}": the film type and its
+// parameters (the spectral film's buckets must resume as exactly as R, G, B).
 const char* kScene = R"(LookAt 0 0 -4  0 0 0  0 1 0
 Camera "perspective" "float fov" 40
-Film "rgb" "integer xresolution" 40 "integer yresolution" 24 "string filename" "out.exr"
+Film {} "integer xresolution" 40 "integer yresolution" 24 "string filename" "out.exr"
 Sampler "zsobol" "integer pixelsamples" 16
 Integrator "path" "integer maxdepth" 4
 PixelFilter "gaussian"
@@ -38,9 +40,12 @@ Rotate 90 1 0 0
 Shape "disk" "float radius" 5
 )";
 
-RenderSetup setup_scene() {
+const char* kRgb = "\"rgb\"";
+const char* kSpectral = "\"spectral\" \"integer nbuckets\" 7 \"float lambdamin\" 380 \"float lambdamax\" 720";
+
+RenderSetup setup_scene(const char* film = kRgb) {
   set_warnings_enabled(false);
-  return build_render_setup(parse_scene_string(kScene, "checkpoint.pbrt", "/"), {});
+  return build_render_setup(parse_scene_string(fmt::format(fmt::runtime(kScene), film), "checkpoint.pbrt", "/"), {});
 }
 
 std::vector<double> render(RenderSetup& s, RenderOptions opts) {
@@ -54,8 +59,8 @@ bool bits_equal(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-std::vector<double> reference() {
-  RenderSetup s = setup_scene();
+std::vector<double> reference(const char* film = kRgb) {
+  RenderSetup s = setup_scene(film);
   RenderOptions o;
   o.threads = 1;
   o.pass_samples = 16;
@@ -78,11 +83,15 @@ TEST(FilmCheckpoint, AccumulatorsRestoreExactly) {
   EXPECT_THROW(resumed.restore(std::vector<double>(7), 0), std::invalid_argument);
 }
 
-TEST(FilmCheckpoint, ImageDoesNotDependOnPassSizesOrThreads) {
-  std::vector<double> ref = reference();
+class FilmCheckpointOf : public ::testing::TestWithParam<const char*> {};
+INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf, ::testing::Values(kRgb, kSpectral),
+                         [](const auto& info) { return info.index == 0 ? "rgb" : "spectral"; });
+
+TEST_P(FilmCheckpointOf, ImageDoesNotDependOnPassSizesOrThreads) {
+  std::vector<double> ref = reference(GetParam());
   for (int pass : {0, 1, 3, 5}) {
     for (int threads : {1, 2}) {
-      RenderSetup s = setup_scene();
+      RenderSetup s = setup_scene(GetParam());
       RenderOptions o;
       o.threads = threads;
       o.pass_samples = pass;
@@ -92,9 +101,9 @@ TEST(FilmCheckpoint, ImageDoesNotDependOnPassSizesOrThreads) {
 }
 
 // Stopped after whole passes, saved through the state file, restored into a new film.
-TEST(FilmCheckpoint, StoppedBetweenPassesAndResumedThroughStateFileIsBitIdentical) {
-  std::vector<double> ref = reference();
-  RenderSetup s = setup_scene();
+TEST_P(FilmCheckpointOf, StoppedBetweenPassesAndResumedThroughStateFileIsBitIdentical) {
+  std::vector<double> ref = reference(GetParam());
+  RenderSetup s = setup_scene(GetParam());
   std::atomic<bool> stop{false};
   TileProgress tiles;
   RenderOptions o;
@@ -114,14 +123,17 @@ TEST(FilmCheckpoint, StoppedBetweenPassesAndResumedThroughStateFileIsBitIdentica
   st.bounds = s.film->bounds();
   st.samples_per_pixel = 16;
   st.tiles = tiles;
+  st.spectral_buckets = s.film->buckets().count;
   st.accumulators = s.film->accumulators();
   std::string path = ::testing::TempDir() + "film_checkpoint_test.exr.state";
   write_render_state(path, st);
   RenderState back = read_render_state(path);
   EXPECT_EQ(back.fingerprint, 42u);
   EXPECT_EQ(back.tiles.done, tiles.done);
+  EXPECT_EQ(back.spectral_buckets, s.film->buckets().count);
+  EXPECT_EQ(back.accumulators.size(), 40u * 24u * (4u + unsigned(back.spectral_buckets)));
 
-  RenderSetup resumed = setup_scene();
+  RenderSetup resumed = setup_scene(GetParam());
   resumed.film->restore(back.accumulators, back.nonfinite_samples);
   RenderOptions r;
   r.threads = 1;
@@ -132,9 +144,9 @@ TEST(FilmCheckpoint, StoppedBetweenPassesAndResumedThroughStateFileIsBitIdentica
 
 // Stopped between tiles in the middle of a pass (by another thread, as a signal handler
 // would): tiles may then hold different counts, and resuming must still be exact.
-TEST(FilmCheckpoint, StoppedMidPassAndResumedIsBitIdentical) {
-  std::vector<double> ref = reference();
-  RenderSetup s = setup_scene();
+TEST_P(FilmCheckpointOf, StoppedMidPassAndResumedIsBitIdentical) {
+  std::vector<double> ref = reference(GetParam());
+  RenderSetup s = setup_scene(GetParam());
   std::atomic<bool> stop{false};
   TileProgress tiles;
   RenderCounters counters;
@@ -152,7 +164,7 @@ TEST(FilmCheckpoint, StoppedMidPassAndResumedIsBitIdentical) {
   EXPECT_LT(tiles.min_done(), 16);
 
   TileProgress resumed_tiles = tiles;
-  RenderSetup resumed = setup_scene();
+  RenderSetup resumed = setup_scene(GetParam());
   resumed.film->restore(s.film->accumulators(), 0);
   RenderOptions r;
   r.threads = 2;
@@ -191,6 +203,58 @@ TEST(FilmCheckpoint, DamagedStateFilesAreRefused) {
   EXPECT_NE(error_for("P3\n").find("not an eyetrace render state"), std::string::npos);
   EXPECT_EQ(error_for(bytes), "");
   EXPECT_NE(error_for("").find("not an eyetrace render state"), std::string::npos);
+}
+
+// A spectral state: its bucket count is stored, and accumulators that disagree with it, or a
+// count outside what a film can have, are refused (a state of format version 1 too).
+TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
+  RenderState st;
+  st.resolution = IVec2(20, 20);
+  st.bounds = PixelBounds{IVec2(0), IVec2(20)};
+  st.samples_per_pixel = 4;
+  st.tiles = TileProgress::start(st.bounds);
+  st.spectral_buckets = 16;
+  st.accumulators.assign(20 * 20 * 20, 0.25);
+  const std::string path = ::testing::TempDir() + "film_checkpoint_spectral.state";
+  write_render_state(path, st);
+  RenderState back = read_render_state(path);
+  EXPECT_EQ(back.spectral_buckets, 16);
+  EXPECT_EQ(back.accumulators, st.accumulators);
+  auto error_for = [&](const RenderState& s) {
+    write_render_state(path, s);
+    try {
+      read_render_state(path);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  RenderState rgb_sized = st;
+  rgb_sized.accumulators.resize(20 * 20 * 4);
+  EXPECT_NE(error_for(rgb_sized).find("its film and tile sizes disagree"), std::string::npos);
+  RenderState too_many = st;
+  too_many.spectral_buckets = 100000;
+  EXPECT_NE(error_for(too_many).find("spectral bucket count 100000 is outside [0, 512]"), std::string::npos);
+  // Version 1 files (before spectral films) are refused by version, not misread.
+  write_render_state(path, st);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const size_t version_at = std::string_view("EYETRACE-RENDER-STATE\n").size() + 4;
+  uint32_t old_version = 1;
+  std::memcpy(&bytes[version_at], &old_version, 4);
+  const uint64_t sum = fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8));
+  std::memcpy(&bytes[bytes.size() - 8], &sum, 8);
+  std::ofstream(path, std::ios::binary) << bytes;
+  try {
+    read_render_state(path);
+    ADD_FAILURE() << "a version 1 state was read";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("format version 1, this eyetrace reads version 2"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -3,24 +3,34 @@
 // documented clamp; never in a crash, an exception other than SceneError, or a NaN in the image.
 // In-process through parse_scene_string + build_render_setup; whole-program behaviour (exit
 // codes, output files) through the built binary. docs/robustness.md lists every case.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <future>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "render/image_io.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
+
+extern char** environ;
 
 namespace eyetrace {
 namespace {
@@ -592,6 +602,80 @@ TEST(HostileInput, EyePupilsAndAccommodation) {
   EXPECT_EQ(eye_error("Camera \"navarro\" \"float pupildiameter\" 1e-6"), "");
 }
 
+// The spectral film's buckets: zero, too many, an empty or out-of-range band, a non-EXR output.
+TEST(HostileInput, SpectralFilmBucketsAndOutput) {
+  auto film = [](const std::string& params) {
+    return fmt::format("Film \"spectral\" {} \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n",
+                       params);
+  };
+  EXPECT_ERROR(film("\"integer nbuckets\" 0"),
+               "hostile.pbrt:1:17: error: parameter \"nbuckets\": 0 is outside [1, 512]");
+  EXPECT_ERROR(film("\"integer nbuckets\" 100000"),
+               "hostile.pbrt:1:17: error: parameter \"nbuckets\": 100000 is outside [1, 512]");
+  EXPECT_ERROR(film("\"integer nbuckets\" -3"), "parameter \"nbuckets\": -3 is outside [1, 512]");
+  EXPECT_ERROR(film("\"float nbuckets\" 16"), "hostile.pbrt:1:17: error: parameter \"nbuckets\" has type \"float\"");
+  EXPECT_ERROR(film("\"integer nbuckets\" [16 32]"), "parameter \"nbuckets\" takes one value, got 2");
+  EXPECT_ERROR(film("\"float lambdamin\" 700 \"float lambdamax\" 400"),
+               "hostile.pbrt:1:39: error: parameter \"lambdamax\": lambdamin 700 nm must be below lambdamax 400 nm");
+  EXPECT_ERROR(film("\"float lambdamax\" 400"), "parameter \"lambdamax\": lambdamin 400 nm must be below lambdamax");
+  EXPECT_ERROR(film("\"float lambdamin\" 300"), "parameter \"lambdamin\": 300 nm is outside [360, 830] nm");
+  EXPECT_ERROR(film("\"float lambdamax\" 1000"), "parameter \"lambdamax\": 1000 nm is outside [360, 830] nm");
+  EXPECT_ERROR(film("\"float lambdamin\" nan"), "parameter \"float lambdamin\": \"nan\" is not a finite number");
+  EXPECT_ERROR(film("\"string filename\" \"out.png\""),
+               "hostile.pbrt:1:17: error: parameter \"filename\": \"out.png\": the spectral film writes EXR only");
+  RenderOverrides png;
+  png.output = "cli.png";
+  EXPECT_PRED_FORMAT2(
+      contains, build_error(film(""), png),
+      "--output \"cli.png\": the spectral film (Film \"spectral\" at hostile.pbrt:1:1) writes EXR only");
+  RenderOverrides exr;  // the command line's .exr replaces the scene's .png
+  exr.output = "cli.exr";
+  EXPECT_EQ(build_error(film("\"string filename\" \"out.png\""), exr), "");
+  // Bucket parameters belong to the spectral film only.
+  EXPECT_ERROR(std::string("Film \"rgb\" \"integer nbuckets\" 16\nWorldBegin\n"),
+               "hostile.pbrt:1:12: error: Film \"rgb\": unused parameter \"integer nbuckets\"");
+  // The buckets count towards the memory limit: 12 bytes each per pixel (a double and a float).
+  RenderOverrides big;
+  big.resolution = IVec2(4096, 4096);
+  big.max_memory_bytes = uint64_t(16) << 30;
+  EXPECT_PRED_FORMAT2(contains, build_error(film("\"integer nbuckets\" 512"), big),
+                      "a 4096x4096 film needs about 96.7 GiB, more than the limit of 16.0 GiB (--max-memory)");
+  big.resolution = IVec2(512, 512);
+  big.max_memory_bytes = uint64_t(1) << 30;
+  EXPECT_EQ(build_error(film("\"integer nbuckets\" 128"), big), "");  // 0.39 GiB
+  EXPECT_PRED_FORMAT2(contains, build_error(film("\"integer nbuckets\" 512"), big),
+                      "a 512x512 film needs about 1.5 GiB, more than the limit of 1.0 GiB (--max-memory)");
+  EXPECT_EQ(build_error(film("\"integer nbuckets\" 1 \"float lambdamin\" 360 \"float lambdamax\" 830")), "");
+}
+
+// A spectral render of a scene whose spectra are zero, huge or tiny at some wavelengths (after
+// the luminance normalisation of lights, the area light reaches ~1e36 at 830 nm): every pixel
+// of every channel is finite (a sample whose estimate overflows is discarded and counted).
+TEST(HostileInput, SpectralFilmOfExtremeSpectraHasNoNaN) {
+  const std::string text = R"(LookAt 0 0 -5  0 0 0  0 1 0
+Camera "perspective" "float fov" 45
+Film "spectral" "integer xresolution" 8 "integer yresolution" 8 "integer nbuckets" 47 "float lambdamin" 360 "float lambdamax" 830
+Sampler "independent" "integer pixelsamples" 16
+Integrator "path" "integer maxdepth" 5
+PixelFilter "gaussian"
+WorldBegin
+LightSource "infinite" "spectrum L" [360 0  500 0  501 1e30  502 0  830 0]
+AttributeBegin
+AreaLightSource "diffuse" "spectrum L" [360 1e-30  829 1e-30  830 1e6]
+Shape "sphere" "float radius" 0.5
+AttributeEnd
+Material "dielectric" "spectrum eta" "glass-BK7"
+Translate 1 0 0
+Shape "sphere" "float radius" 0.7
+Material "diffuse" "spectrum reflectance" [360 0  600 1  830 0]
+Translate -2 0 0
+Shape "sphere" "float radius" 0.7
+)";
+  RenderResult r = render(text);
+  EXPECT_EQ(r.nonfinite_pixels, 0);
+  EXPECT_LT(r.nonfinite_samples, 8u * 8u * 16u / 10u);
+}
+
 // ---------------------------------------------------------------------------------------
 // The program: exit codes, messages and output files
 
@@ -722,6 +806,103 @@ TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir.path())) files += e.is_regular_file();
   EXPECT_EQ(files, 3);  // scene.pbrt, bad.pbrt, out.exr
+}
+
+// --- The spectral film through the program --------------------------------------------
+
+// The Cornell box with its Film line replaced by a spectral film of `buckets` buckets.
+std::string write_spectral_cornell(const TempDir& dir, int buckets) {
+  std::string text = read_file(EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt");
+  const size_t at = text.find("Film \"rgb\"");
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, text.find('\n', at) - at,
+               fmt::format("Film \"spectral\" \"integer nbuckets\" {} \"string filename\" \"out.exr\"", buckets));
+  const std::string path = dir.file(fmt::format("spectral{}.pbrt", buckets));
+  write_file(path, text);
+  return path;
+}
+
+// Starts eyetrace with `args` (stdout and stderr to `log`) without waiting for it.
+pid_t spawn_eyetrace(const std::vector<std::string>& args, const std::string& log) {
+  const std::string binary = EYETRACE_BINARY_DIR "/bin/eyetrace";
+  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+int wait_exit(pid_t pid) {
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// A spectral render stopped by SIGINT after its first checkpoint resumes to the uninterrupted
+// render's image, every bucket bit for bit; a state is refused by a film of another bucket
+// count (and kept); a PNG output is refused.
+TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
+  TempDir dir;
+  const std::string scene16 = write_spectral_cornell(dir, 16), scene8 = write_spectral_cornell(dir, 8);
+  const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr");
+  auto args = [&](const std::string& scene, const std::string& output, const std::string& threads) {
+    return std::vector<std::string>{"render", scene, "--resolution", "32x32", "--spp", "256", "--threads", threads,
+                                    "--seed", "7",   "-q",           "-o",    output};
+  };
+  std::vector<std::string> first = args(scene16, out, "1");
+  for (const char* a : {"--checkpoint", "0", "--pass-samples", "8"}) first.push_back(a);
+  const pid_t pid = spawn_eyetrace(first, dir.file("first.log"));
+  ASSERT_GT(pid, 0);
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  bool checkpointed = false;
+  while (!checkpointed && std::chrono::steady_clock::now() < deadline) {
+    checkpointed = fs::exists(out + ".state");
+    int status;
+    if (!checkpointed && waitpid(pid, &status, WNOHANG) == pid) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(checkpointed) << read_file(dir.file("first.log"));
+  kill(pid, SIGINT);
+  EXPECT_EQ(wait_exit(pid), 130) << read_file(dir.file("first.log"));
+  ASSERT_TRUE(fs::exists(out + ".state"));
+  EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "1");
+  const Image partial = read_image(out);
+  EXPECT_EQ(partial.channels, 19);
+  for (float v : partial.pixels) EXPECT_TRUE(std::isfinite(v));
+
+  const std::string state = read_file(out + ".state");
+  RunResult refused = run_eyetrace("render " + shell_quote(scene8) + " --resolution 32x32 --spp 256 --seed 7 -q -o " +
+                                   shell_quote(out) + " --resume");
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("is for a film with 16 spectral buckets, this render's has 8"), std::string::npos)
+      << refused.output;
+  EXPECT_EQ(read_file(out + ".state"), state) << "a refused resume must not touch the state";
+
+  std::vector<std::string> resume = args(scene16, out, "2");
+  resume.push_back("--resume");
+  EXPECT_EQ(wait_exit(spawn_eyetrace(resume, dir.file("resume.log"))), 0) << read_file(dir.file("resume.log"));
+  EXPECT_EQ(wait_exit(spawn_eyetrace(args(scene16, ref, "2"), dir.file("ref.log"))), 0)
+      << read_file(dir.file("ref.log"));
+  EXPECT_FALSE(fs::exists(out + ".state"));
+  const Image a = read_image(out), b = read_image(ref);
+  ASSERT_EQ(a.channels, 19);
+  EXPECT_EQ(a.channel_names, b.channel_names);
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
+
+  RunResult png = run_eyetrace("render -q " + shell_quote(scene16) + " -o " + shell_quote(dir.file("out.png")));
+  EXPECT_EQ(png.exit_code, 1) << png.output;
+  EXPECT_NE(png.output.find("--output \"" + dir.file("out.png") + "\": the spectral film (Film \"spectral\" at "),
+            std::string::npos)
+      << png.output;
+  EXPECT_FALSE(fs::exists(dir.file("out.png")));
 }
 
 }  // namespace
