@@ -169,7 +169,7 @@ Shape "sphere" "float radius" 1
 
 def test_eye(eyetrace, scratch, scale):
     nb, lo, hi = 15, 400.0, 700.0
-    camera = 'Camera "navarro" "float fov" 4 "float pupildiameter" 2'
+    camera = 'Camera "navarro" "float fov" 4 "float pupildiameter" 2 "float wavelength" 589.3'  # monochromatic at the reference wavelength (the paraxial check is there)
     exr = render(eyetrace, scratch, "eye", f"""LookAt 0 0 0  0 0 1  0 1 0
 {camera}
 Film "spectral" "integer xresolution" 32 "integer yresolution" 32 "integer nbuckets" {nb}
