@@ -303,7 +303,8 @@ TEST(ChromaticDispersion, AssumedLawsLeaveTheReferenceEyeAlone) {
 
 // The accommodated Arizona lens keeps V_d = 51.9 for its larger n_d: n_F - n_C = (n_d - 1)/V_d.
 TEST(ChromaticDispersion, ArizonaAccommodatedLensKeepsItsAbbeNumber) {
-  const Medium* lens = eye("arizona", "", 4.0).find_medium("lens");
+  const Prescription arizona = eye("arizona", "", 4.0);  // the medium lives in it
+  const Medium* lens = arizona.find_medium("lens");
   EXPECT_NEAR(lens->index_at(486.1) - lens->index_at(656.3), (lens->index - 1.0) / 51.9, 1e-12);
 }
 
