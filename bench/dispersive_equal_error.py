@@ -1,33 +1,68 @@
 #!/usr/bin/python3
 # Time to equal error of the dispersive Navarro eye against the monochromatic one (docs/spectral.md,
 # "The dispersive eye"): relMSE in linear sRGB against each camera's own 2048-spp render, fitted
-# over 16-128 spp, extrapolated to relMSE 1e-3. Run from anywhere after building build/bin/eyetrace;
-# writes its renders into the current directory. Takes about 2 minutes on 2 cores.
-import subprocess, time, numpy as np, OpenImageIO as oiio, sys, math
-import os
+# over 16-128 spp, extrapolated to relMSE 1e-3; time is the renders' CPU time (user + system of
+# the eyetrace processes), so other load on the machine does not skew the ratio.
+# Usage: bench/dispersive_equal_error.py [box|gaussian]  (the figure scene's pixel filter is a
+# box; "gaussian" renders it with pbrt-v4's default filter instead). Run from anywhere after
+# building build/bin/eyetrace; writes its renders into the current directory. About 3 minutes.
+import json, math, os, resource, subprocess, sys
+import numpy as np, OpenImageIO as oiio
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-B = os.path.join(ROOT, "build/bin/eyetrace"); S = os.path.join(ROOT, "scenes/peripheral.pbrt")
-cams={"mono":'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
-      "disp":'Camera "navarro" "float fov" 60 "float pupildiameter" 3'}
-def render(cam, spp, out, seed=1):
-    t=time.process_time(); t0=time.time()
-    r=subprocess.run([B,"render",S,"-o",out,"--spp",str(spp),"--resolution","150x100","--quiet","--threads","2","--seed",str(seed),"--camera",cams[cam],"--stats",out+".json"],check=True)
-    import json; st=json.load(open(out+".json"))
-    return st["render_seconds"]
-def read(p): return oiio.ImageBuf(p).get_pixels(oiio.FLOAT)[:,:,:3]
-res={}
-for cam in cams:
-    render(cam, 2048, f"{cam}_ref.exr", seed=99)
-    ref=read(f"{cam}_ref.exr"); m=ref.mean()
-    for spp in [16,32,64,128]:
-        sec=render(cam, spp, f"{cam}_{spp}.exr")
-        img=read(f"{cam}_{spp}.exr")
-        rel=float(((img-ref)**2).mean()/(m*m))
-        res.setdefault(cam,[]).append((spp,sec,rel)); print(cam,spp,sec,rel,flush=True)
-# time to relMSE 1e-3 by log-log fit
-out={}
-for cam,v in res.items():
-    s=np.log([x[0] for x in v]); e=np.log([x[2] for x in v]); k,c=np.polyfit(s,e,1)
-    spp_t=math.exp((math.log(1e-3)-c)/k); sec_per_spp=np.mean([x[1]/x[0] for x in v])
-    out[cam]=(spp_t, spp_t*sec_per_spp, k); print(cam,"slope",k,"spp@1e-3",spp_t,"sec",spp_t*sec_per_spp)
-print("ratio disp/mono time at relMSE 1e-3:", out["disp"][1]/out["mono"][1])
+B = os.path.join(ROOT, "build/bin/eyetrace")
+FILTER = sys.argv[1] if len(sys.argv) > 1 else "box"
+CAMS = {"mono": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
+        "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3'}
+
+
+def scene():
+    text = open(os.path.join(ROOT, "scenes/peripheral.pbrt")).read()
+    if FILTER != "box":
+        text = text.replace('PixelFilter "box"', f'PixelFilter "{FILTER}"')
+    path = os.path.abspath(f"peripheral_{FILTER}.pbrt")
+    # Relative includes and textures resolve against the scene's folder: keep them there.
+    text = text.replace('"textures/', f'"{ROOT}/scenes/textures/')
+    open(path, "w").write(text)
+    return path
+
+
+def cpu_seconds():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def render(path, cam, spp, out, seed=1):
+    before = cpu_seconds()
+    subprocess.run([B, "render", path, "-o", out, "--spp", str(spp), "--resolution", "150x100", "--quiet",
+                    "--threads", "2", "--seed", str(seed), "--camera", CAMS[cam]], check=True)
+    return cpu_seconds() - before
+
+
+def read(p):
+    return oiio.ImageBuf(p).get_pixels(oiio.FLOAT)[:, :, :3]
+
+
+def main():
+    path = scene()
+    res = {}
+    for cam in CAMS:
+        render(path, cam, 2048, f"{cam}_{FILTER}_ref.exr", seed=99)
+        ref = read(f"{cam}_{FILTER}_ref.exr")
+        m = ref.mean()
+        for spp in [16, 32, 64, 128]:
+            sec = render(path, cam, spp, f"{cam}_{FILTER}_{spp}.exr")
+            rel = float(((read(f"{cam}_{FILTER}_{spp}.exr") - ref) ** 2).mean() / (m * m))
+            res.setdefault(cam, []).append((spp, sec, rel))
+            print(cam, spp, f"{sec:.2f} s", f"relMSE {rel:.3e}", flush=True)
+    out = {}
+    for cam, v in res.items():
+        k, c = np.polyfit(np.log([x[0] for x in v]), np.log([x[2] for x in v]), 1)
+        spp_t = math.exp((math.log(1e-3) - c) / k)
+        sec_per_spp = sum(x[1] for x in v) / sum(x[0] for x in v)
+        out[cam] = spp_t * sec_per_spp
+        print(f"{cam}: slope {k:.3f}, spp at 1e-3 {spp_t:.0f}, CPU s per spp {sec_per_spp:.4f}, s {out[cam]:.1f}")
+    print(f"filter {FILTER}: dispersive/monochromatic time at relMSE 1e-3: {out['disp'] / out['mono']:.2f}")
+
+
+main()

@@ -161,6 +161,8 @@ bool LensSystemCamera::start_ray(const CameraSample& cs, PendingRay* pending) co
   const double a = mapping_.arc_for_screen_radius(radius, angles_);
   glm::dvec2 q;
   if (!pupil_.sample(a, cs.p_lens.x, cs.p_lens.y, &q, &pending->area)) return false;
+  pending->arc = a;
+  pending->screen_radius = radius;
   // Upright image: screen direction (sx, sy) -> retina direction (sx, -sy) (see the header).
   const double inv_radius = radius > 0.0 ? 1.0 / radius : 0.0;
   const glm::dvec2 m = radius > 0.0 ? glm::dvec2(sx * inv_radius, -sy * inv_radius) : glm::dvec2(1.0, 0.0);
@@ -189,43 +191,64 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending,
   const double k = settings_.scene_units_per_mm;
   const Vec3 o(float(-r.ray.origin.x * k), float(r.ray.origin.y * k), float(-r.ray.origin.z * k));
   const Vec3 d(float(-r.ray.direction.x), float(r.ray.direction.y), float(-r.ray.direction.z));
+  const float w = static_cast<float>(weight);
   return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, time},
-                   static_cast<float>(weight)};
+                   SampledSpectrum(w), w};
 }
 
+// One sample is a batch of one: the batch trace equals the scalar trace bit for bit.
 std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, SampledWavelengths& lambda) const {
-  if (dispersive_) lambda.terminate_secondary();
-  PendingRay pending;
-  if (!start_ray(cs, &pending)) return std::nullopt;
-  const int first = system_.image_index() - 1;
-  return finish_ray(pending,
-                    dispersive_ ? system_.trace_range(pending.ray, first, 0, double(lambda[0]))
-                                : system_.trace_range(pending.ray, first, 0),
-                    cs.time);
+  std::optional<CameraRay> ray;
+  generate_rays(&cs, &lambda, &ray, 1);
+  return ray;
 }
 
-// Bit-identical to generate_ray per sample; the batch trace overlaps the rays' latency chains.
+// The batch trace overlaps the rays' latency chains. A dispersive eye traces the hero
+// wavelength; with the pixel's filter known, the secondaries' rays are traced back in for
+// spectral MIS, else they are terminated.
 void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelengths* lambdas,
                                      std::optional<CameraRay>* rays, size_t count) const {
-  constexpr size_t kBatch = 16;
+  constexpr size_t kBatch = optics::kTraceBatchSize;
+  constexpr int kSecondary = kSpectrumSamples - 1;
   PendingRay pending[kBatch];
   optics::Ray traced[kBatch];
   double lambda_nm[kBatch];
   optics::TraceResult results[kBatch];
   size_t index[kBatch];
+  optics::Ray forward[kBatch * kSecondary];
+  double forward_nm[kBatch * kSecondary];
+  optics::TraceResult forward_results[kBatch * kSecondary];
   for (size_t base = 0; base < count; base += kBatch) {
     const size_t n = std::min(kBatch, count - base);
     size_t live = 0;
     for (size_t j = 0; j < n; ++j) {
       rays[base + j].reset();
-      if (dispersive_) lambdas[base + j].terminate_secondary();
+      if (dispersive_ && !samples[base + j].filter) lambdas[base + j].terminate_secondary();
       if (!start_ray(samples[base + j], &pending[live])) continue;
       traced[live] = pending[live].ray;
       lambda_nm[live] = double(lambdas[base + j][0]);
       index[live++] = base + j;
     }
     system_.trace_range_batch(traced, dispersive_ ? lambda_nm : nullptr, results, live, system_.image_index() - 1, 0);
-    for (size_t j = 0; j < live; ++j) rays[index[j]] = finish_ray(pending[j], results[j], samples[index[j]].time);
+    size_t mis = 0;
+    for (size_t j = 0; j < live; ++j) {
+      rays[index[j]] = finish_ray(pending[j], results[j], samples[index[j]].time);
+      if (!dispersive_ || !rays[index[j]] || lambdas[index[j]].secondary_terminated()) continue;
+      // Back into the eye along the leaving ray, from 1 mm outside the cornea.
+      const optics::Ray in{results[j].ray.origin + results[j].ray.direction, -results[j].ray.direction};
+      for (int k = 1; k <= kSecondary; ++k) {
+        forward[mis] = in;
+        forward_nm[mis++] = double(lambdas[index[j]][k]);
+      }
+    }
+    system_.trace_range_batch(forward, forward_nm, forward_results, mis, 0, system_.image_index());
+    mis = 0;
+    for (size_t j = 0; j < live; ++j) {
+      const size_t i = index[j];
+      if (!dispersive_ || !rays[i] || lambdas[i].secondary_terminated()) continue;
+      weigh_wavelengths(samples[i], lambdas[i], pending[j], forward_results + mis, &*rays[i]);
+      mis += kSecondary;
+    }
   }
 }
 

@@ -82,9 +82,25 @@ class LensSystemCamera : public Camera {
     glm::dvec3 d_local;  // the same direction in the meridian frame, unnormalised
     glm::dvec2 normal;   // retina normal in the meridian frame
     double area = 0.0;   // sampled area of the plane (1 / density)
+    double arc = 0.0;    // retina arc of the point
+    double screen_radius = 0.0;
+  };
+  // One wavelength's share of a ray under spectral MIS (spectral_mis.cpp).
+  struct WavelengthTerms {
+    double filter = 0.0;     // the pixel filter at the wavelength's retina point (signed)
+    double u = 0.0;          // its sampling density, up to a common factor; 0: cannot sample the ray
+    double n2_jacobian = 0;  // n_vitreous^2 * (retina area per raster area) there
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
   std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
+  // Spectral MIS: the ray that left the eye at the hero wavelength, traced back in at each
+  // secondary wavelength (forward[k - 1] for wavelength k), weighs every wavelength.
+  void weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
+                         const optics::TraceResult* forward, CameraRay* out) const;
+  WavelengthTerms hero_terms(const CameraSample& cs, const PendingRay& hero, double lambda_nm) const;
+  WavelengthTerms secondary_terms(const CameraSample& cs, const optics::TraceResult& forward, double lambda_nm) const;
+  double filter_at(const CameraSample& cs, double screen_radius, glm::dvec2 meridian) const;
+  double area_jacobian(double screen_radius, double arc, double slope) const;
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation();
 

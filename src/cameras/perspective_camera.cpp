@@ -37,7 +37,7 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs,
     dir = glm::normalize(focus - origin);
   }
   Ray r{world_from_camera_.point(origin), glm::normalize(world_from_camera_.vector(dir)), kInfinity, cs.time};
-  return CameraRay{r, 1.f};
+  return CameraRay{r, SampledSpectrum(1.f), 1.f};
 }
 
 std::string PerspectiveCamera::to_string() const {

@@ -81,6 +81,19 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
   }
 }
 
+double FieldAngleTable::angle_for_arc(double a, double* slope) const {
+  if (empty() || !(a >= inverse_.front() && a <= inverse_.back())) return -1.0;
+  // The segment of the resampled inverse that holds a: arc_for_angle interpolates linearly in it.
+  const size_t i =
+      std::min(static_cast<size_t>(std::upper_bound(inverse_.begin(), inverse_.end(), a) - inverse_.begin()),
+               inverse_.size() - 1) -
+      1;
+  const double width = inverse_[i + 1] - inverse_[i];
+  *slope = width * inverse_scale_;
+  const double t = width > 0.0 ? (a - inverse_[i]) / width : 0.0;
+  return (static_cast<double>(i) + t) / inverse_scale_;
+}
+
 std::optional<double> FieldAngleTable::chief_q_for_arc(double a) const {
   if (empty() || a < 0.0 || a > max_arc_mm()) return std::nullopt;
   const size_t i = interval_of(arcs_, a);
@@ -102,6 +115,26 @@ RetinaMapping::RetinaMapping(FieldMapping kind, double half_fov_deg, const Field
                     "{:.4g} degrees cannot set the scale of mapping \"{}\"; use a smaller fov or mapping \"angle\"",
                     table.max_angle_deg(), 2.0 * half_fov_deg, to_string(kind)));
   edge_ = kind == FieldMapping::Retina ? a : retina.point(a).x;
+}
+
+double RetinaMapping::screen_radius_for_arc(double a, const FieldAngleTable& table, double* slope) const {
+  switch (kind_) {
+    case FieldMapping::Angle: {
+      const double angle = table.angle_for_arc(a, slope);
+      *slope *= edge_;
+      return angle < 0.0 ? -1.0 : angle / edge_;
+    }
+    case FieldMapping::Retina: *slope = edge_; return a / edge_;
+    case FieldMapping::Flat: {
+      // h = sin(c a) / c, so d arc / d h = 1 / cos(c a); the near half of the sphere only.
+      const RetinaSurface surface{0.0, retina_curvature_};
+      const double cos_ca = -surface.normal(a).y;
+      if (!(cos_ca > 0.0)) return -1.0;
+      *slope = edge_ / cos_ca;
+      return surface.point(a).x / edge_;
+    }
+  }
+  return -1.0;
 }
 
 RetinaMapping::RetinaMapping(double half_extent_mm, const RetinaSurface& retina)

@@ -47,6 +47,9 @@ class FieldAngleTable {
     const double t = x - static_cast<double>(i);
     return inverse_[i] + t * (inverse_[i + 1] - inverse_[i]);
   }
+  // The inverse of arc_for_angle, exact for its piecewise-linear form, and that form's slope
+  // d arc / d angle (mm per degree) there; negative when a is beyond the table.
+  double angle_for_arc(double a, double* slope) const;
   // q (meridian coordinate on the sampling plane) of the chief ray at arc a (linear between
   // nodes): a starting guess for the pupil sampler; nullopt beyond the table.
   std::optional<double> chief_q_for_arc(double a) const;
@@ -82,6 +85,10 @@ class RetinaMapping {
     }
     return -1.0;
   }
+  // The inverse: the screen radius whose retina point is at arc a (negative when none is), and
+  // d arc / d screen radius there. A dispersive camera uses it to find which pixel a ray that
+  // left the eye at another wavelength comes from (spectral MIS).
+  double screen_radius_for_arc(double a, const FieldAngleTable& table, double* slope) const;
   double edge() const { return edge_; }  // degrees (angle) or mm (flat, retina)
 
  private:

@@ -1,14 +1,17 @@
 // Camera interface: a camera turns a CameraSample and the sample's wavelengths into an
-// optional world-space ray and a weight. A camera whose optics disperse traces the hero
-// wavelength and terminates the others (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera
-// lost (vignetted, stopped by the iris, totally reflected inside a lens): the film counts it, it is not a magic zero
-// radiance.
+// optional world-space ray and a weight per wavelength. A camera whose optics disperse traces
+// the hero wavelength; when the sample names its pixel's filter it weights the other
+// wavelengths by spectral MIS (docs/spectral.md), else it terminates them
+// (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera lost
+// (vignetted, stopped by the iris, totally reflected inside a lens): the film counts it, it is
+// not a magic zero radiance.
 #pragma once
 #include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
 
+#include "core/filter.h"
 #include "core/math.h"
 #include "core/ray.h"
 #include "core/sampled_spectrum.h"
@@ -21,13 +24,23 @@ struct CameraSample {
   float wavelength_u = 0.5f;  // [0,1) sample that picked the wavelengths
   float time = 0.f;
   float filter_weight = 1.f;
+  // The pixel's reconstruction filter and this sample's offset from the pixel centre: with
+  // them a dispersive camera can tell how much each wavelength's ray belongs to the pixel.
+  // Null (tools, tests): the camera keeps the hero wavelength only.
+  const Filter* filter = nullptr;
+  Vec2 filter_offset{0.f};
 };
 
 struct CameraRay {
   Ray ray;
-  // Multiplies the radiance along the ray. Lens cameras put relative illumination here, so
-  // the image of a uniform scene shows the real fall-off; normalised to 1 at the image centre.
-  float weight = 1.f;
+  // Multiplies the radiance along the ray, per wavelength. Lens cameras put relative
+  // illumination here, so the image of a uniform scene shows the real fall-off; normalised to
+  // 1 at the image centre. A dispersive camera's spectral MIS weights differ per wavelength.
+  SampledSpectrum weight{1.f};
+  // The hero wavelength's weight when the path keeps only the hero (a dispersive dielectric
+  // in the scene terminated the others): the plain, non-MIS weight, since the other
+  // wavelengths can no longer share the path.
+  float hero_weight = 1.f;
 };
 
 class Camera {

@@ -38,6 +38,8 @@ CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel,
   cs.time = sampler.get_1d();
   cs.wavelength_u = sampler.get_1d();
   cs.filter_weight = fs.weight;
+  cs.filter = &film.filter();
+  cs.filter_offset = fs.offset;
   return cs;
 }
 
@@ -78,7 +80,8 @@ class SampleBatch {
     }
     ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
     SampledWavelengths& lambda = lambdas_[i];
-    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_) * cr->weight;
+    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_);
+    L *= lambda.secondary_terminated() ? SampledSpectrum(cr->hero_weight) : cr->weight;
     film_.add_sample(pixels_[i], L, lambda, filter_weight);
     ts_.arena.reset();
   }

@@ -40,11 +40,11 @@ void stress(const LensSystemCamera& cam, IVec2 res, int n, std::mt19937& rng, Co
     const bool finite = std::isfinite(ray.o.x) && std::isfinite(ray.o.y) && std::isfinite(ray.o.z) &&
                         std::isfinite(ray.d.x) && std::isfinite(ray.d.y) && std::isfinite(ray.d.z);
     const bool unit = std::abs(glm::length(ray.d) - 1.f) < 1e-5f;
-    const bool weight_ok = std::isfinite(r->weight) && r->weight >= 0.f && r->weight <= bound * (1.0 + 1e-6);
+    const bool weight_ok = std::isfinite(r->weight[0]) && r->weight[0] >= 0.f && r->weight[0] <= bound * (1.0 + 1e-6);
     if (!finite || !unit || !weight_ok) {
       ++failures;
       ADD_FAILURE() << label << ": bad ray at film " << cs.p_film.x << "," << cs.p_film.y << " lens " << cs.p_lens.x
-                    << "," << cs.p_lens.y << " weight " << r->weight << " bound " << bound;
+                    << "," << cs.p_lens.y << " weight " << r->weight[0] << " bound " << bound;
     }
     if (i % 16 != 0) continue;
     // Reversibility: the scene ray, turned round and traced forward into the eye, reaches the

@@ -43,7 +43,7 @@ Estimate mean_weight(const Camera& cam, Vec2 p_film, int n, uint32_t seed) {
       cs.p_film = p_film;
       cs.p_lens = Vec2(std::min((i + u(rng)) / n, kOneMinusEpsilon), std::min((j + u(rng)) / n, kOneMinusEpsilon));
       auto r = cam.generate_ray(cs);
-      const double w = r ? r->weight : 0.0;
+      const double w = r ? r->weight[0] : 0.0;
       sum += w;
       sum2 += w * w;
     }
@@ -197,7 +197,7 @@ TEST(LensSystemCamera, RotatedRetinaPointsGiveRotatedRays) {
     EXPECT_NEAR(rb->ray.d.z, ra->ray.d.z, 2e-6f);
     EXPECT_NEAR(rb->ray.o.x, -ra->ray.o.y, 1e-8f);
     EXPECT_NEAR(rb->ray.o.y, ra->ray.o.x, 1e-8f);
-    EXPECT_NEAR(rb->weight, ra->weight, 1e-5f * ra->weight);
+    EXPECT_NEAR(rb->weight[0], ra->weight[0], 1e-5f * ra->weight[0]);
   }
   EXPECT_GT(compared, 1800);
 }
@@ -329,7 +329,7 @@ TEST(LensSystemCamera, SameSampleGivesSameRay) {
     if (!a) continue;
     EXPECT_EQ(a->ray.o, b->ray.o);
     EXPECT_EQ(a->ray.d, b->ray.d);
-    EXPECT_EQ(a->weight, b->weight);
+    EXPECT_EQ(a->weight[0], b->weight[0]);
   }
 }
 
@@ -391,7 +391,7 @@ TEST(LensSystemCamera, BatchGenerationEqualsSingle) {
       EXPECT_EQ(one->ray.o, batch[i]->ray.o);
       EXPECT_EQ(one->ray.d, batch[i]->ray.d);
       EXPECT_EQ(one->ray.time, batch[i]->ray.time);
-      EXPECT_EQ(one->weight, batch[i]->weight);
+      EXPECT_EQ(one->weight[0], batch[i]->weight[0]);
     }
     EXPECT_LT(lost, int(samples.size()));
   }

@@ -29,7 +29,7 @@ TEST(PerspectiveCamera, PixelCentreRaysHitAnalyticPoints) {
       EXPECT_NEAR(hit.x, ex, 1e-4f);
       EXPECT_NEAR(hit.y, ey, 1e-4f);
       EXPECT_NEAR(glm::length(r->ray.d), 1.f, 1e-6f);
-      EXPECT_EQ(r->weight, 1.f);
+      EXPECT_EQ(r->weight[0], 1.f);
     }
 }
 

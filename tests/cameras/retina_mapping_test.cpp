@@ -117,6 +117,23 @@ TEST(RetinaMapping, FlatAndRetinaMappingsAreLinearWithFovAtTheEdge) {
 
 // A field of view the chief ray cannot reach cannot scale "flat"/"retina": a clear error
 // naming "fov" (the "angle" mapping shows such pixels black instead).
+// The inverse the spectral MIS uses (screen radius of a retina arc, and d arc / d radius) undoes
+// the forward mapping, and its slope is the forward mapping's finite difference, for each kind.
+TEST(RetinaMapping, InverseUndoesTheMappingAndGivesItsSlope) {
+  auto cam = camera("\"string model\" \"navarro\" \"float fov\" 60 \"float wavelength\" 589.3", 64);
+  const FieldAngleTable& table = cam->field_angles();
+  for (FieldMapping kind : {FieldMapping::Angle, FieldMapping::Flat, FieldMapping::Retina}) {
+    const RetinaMapping m(kind, 30.0, table, cam->retina());
+    for (double s = 0.0; s <= 1.0; s += 0.0173) {
+      const double a = m.arc_for_screen_radius(s, table);
+      double slope = 0.0;
+      EXPECT_NEAR(m.screen_radius_for_arc(a, table, &slope), s, 1e-12) << to_string(kind) << " s " << s;
+      const double h = 1e-6, fd = (m.arc_for_screen_radius(s + h, table) - m.arc_for_screen_radius(s, table)) / h;
+      EXPECT_NEAR(slope, fd, 1e-4 * fd) << to_string(kind) << " s " << s;
+    }
+  }
+}
+
 TEST(RetinaMapping, UnreachableFovIsAnErrorForFlatMapping) {
   SceneEntity e =
       parse_directive_text("Camera \"gullstrand\" \"string mapping\" \"flat\" \"float fov\" 179", "Camera", "t");

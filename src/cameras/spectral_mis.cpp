@@ -1,0 +1,120 @@
+// Spectral MIS of the dispersive lens-system camera: one scene path serves all four wavelengths
+// of a sample although the eye sends each wavelength its own way (docs/spectral.md).
+//
+// The hero wavelength's camera ray r was sampled as usual: a raster point s (pixel filter), the
+// retina point x(s), a point q of the sampling plane, traced out of the eye. At a secondary
+// wavelength k the same object-space ray r enters the eye and lands elsewhere: traced back in,
+// it meets the sampling plane at q_k and the retina at x_k (raster point s_k). Every wavelength
+// k is a sampling technique (the sample's wavelengths are a rotation-symmetric set, so each is
+// the hero with probability 1/4) whose density of producing r, in the object-space measure of
+// rays, is p_k = p_filter(s_k) / (area(x_k) n_k^2 G(x_k, q_k) J(s_k)): n_k the vitreous index,
+// G = cos cos / d^2 between x_k and q_k, J the retina area per raster area; this follows from
+// the etendue n^2 G dx dq of the ray pencil, which the eye conserves. The pixel measures at
+// wavelength k the integral of f_P(s_k) C L_k / (n_k^2 J(s_k)) over rays (C the camera's
+// normalisation). With balance-heuristic weights u_k / sum u (u_k = |f_P(s_k)| / (area n^2 G J),
+// a density up to the filter's normalisation, which is the same for every k) the estimate of
+// wavelength k, divided by what the film already multiplies (the hero's filter weight and the
+// radiance), is
+//     weight_k = 4 C sign(f_P(s_hero)) f_P(s_k) / (n_k^2 J(s_k) sum_j u_j),
+// which is C area G (times 4, the hero's share of the set) when no secondary can produce r.
+// Unbiased: for every ray the weights of the techniques that can produce it sum to 1 (u_k = 0
+// where technique k cannot: outside the pixel's filter, outside the pupil region, or lost in
+// the eye).
+#include <cmath>
+
+#include "cameras/lens_system_camera.h"
+
+namespace eyetrace {
+
+// The film's filter at the raster point of screen radius rho along the retina meridian m,
+// relative to the centre of the sample's pixel; 0 outside the filter's support.
+double LensSystemCamera::filter_at(const CameraSample& cs, double rho, glm::dvec2 m) const {
+  // Upright image: retina direction (mx, my) is screen direction (mx, -my) (see the header).
+  const double px = (rho * m.x - screen_window_[0]) / screen_scale_.x;
+  const double py = (screen_window_[3] + rho * m.y) / screen_scale_.y;
+  // The pixel centre: p_film is centre + offset, rounded in float; the centre is on the grid.
+  const double cx = std::floor(double(cs.p_film.x) - double(cs.filter_offset.x)) + 0.5;
+  const double cy = std::floor(double(cs.p_film.y) - double(cs.filter_offset.y)) + 0.5;
+  const Vec2 o(float(px - cx), float(py - cy)), r = cs.filter->radius();
+  if (!(std::abs(o.x) <= r.x && std::abs(o.y) <= r.y)) return 0.0;
+  return cs.filter->evaluate(o);
+}
+
+// Retina area per screen area at screen radius rho (arc a, d arc / d rho = slope): the mapping
+// is radial, so it is (d arc / d rho) (h(a) / rho), h the height from the axis, which tends to
+// slope^2 at the centre (dh / da = 1 there).
+double LensSystemCamera::area_jacobian(double rho, double a, double slope) const {
+  if (!(rho > 1e-12)) return slope * slope;
+  glm::dvec2 p, n;
+  retina_points_.at(a, &p, &n);
+  return slope * p.x / rho;
+}
+
+LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSample& cs, const PendingRay& hero,
+                                                               double lambda_nm) const {
+  WavelengthTerms t;
+  t.filter = cs.filter->evaluate(cs.filter_offset);
+  double slope = 0.0;
+  if (mapping_.screen_radius_for_arc(hero.arc, angles_, &slope) < 0.0) return {};
+  const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
+  t.n2_jacobian = n * n * area_jacobian(hero.screen_radius, hero.arc, slope);
+  const glm::dvec3& d = hero.d_local;
+  const double d2 = glm::dot(d, d);
+  const double g = (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z / (d2 * d2);  // cos cos / d^2
+  t.u = std::abs(t.filter) / (hero.area * t.n2_jacobian * g);
+  return t;
+}
+
+// A secondary wavelength: where the hero's ray, traced back in at this wavelength, meets the
+// retina (the trace's end) and the sampling plane (its straight path in the vitreous).
+LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const CameraSample& cs,
+                                                                    const optics::TraceResult& forward,
+                                                                    double lambda_nm) const {
+  if (!forward.ok()) return {};
+  const glm::dvec3& x = forward.ray.origin;
+  const glm::dvec3 dir = glm::normalize(forward.ray.direction);  // towards the retina (+z)
+  const double h = std::hypot(x.x, x.y);
+  if (retina_.curvature != 0.0 && !(h * std::abs(retina_.curvature) < 1.0)) return {};
+  const double a = retina_.arc_for_height(h);
+  if (!(a <= pupil_.max_arc_mm()) || !(dir.z > 0.0)) return {};  // beyond the camera's retina
+  const glm::dvec2 m = h > 0.0 ? glm::dvec2(x.x, x.y) / h : glm::dvec2(1.0, 0.0);
+  double slope = 0.0;
+  const double rho = mapping_.screen_radius_for_arc(a, angles_, &slope);
+  if (rho < 0.0) return {};
+  WavelengthTerms t;
+  t.filter = filter_at(cs, rho, m);
+  if (t.filter == 0.0) return {};
+  const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
+  t.n2_jacobian = n * n * area_jacobian(rho, a, slope);
+  // Back along the ray to the plane: d = s dir with s < 0 (the plane is in front of the retina).
+  const double s = (z_plane_ - x.z) / dir.z;
+  const glm::dvec2 q = glm::dvec2(x.x, x.y) + s * glm::dvec2(dir.x, dir.y);
+  const glm::dvec2 q_local(q.x * m.x + q.y * m.y, -q.x * m.y + q.y * m.x);  // meridian frame
+  const glm::dvec2 nr = retina_.normal(a);
+  const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
+  if (!(cos_retina > 0.0) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
+  t.u = std::abs(t.filter) / (pupil_.area(a) * t.n2_jacobian * cos_retina * dir.z / (s * s));
+  return t;
+}
+
+void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
+                                         const optics::TraceResult* forward, CameraRay* out) const {
+  WavelengthTerms terms[kSpectrumSamples];
+  terms[0] = hero_terms(cs, hero, lambda[0]);
+  if (!(terms[0].u > 0.0 && std::isfinite(terms[0].u))) {
+    lambda.terminate_secondary();  // the hero alone, with its plain weight (never seen in tests)
+    return;
+  }
+  double sum_u = terms[0].u;
+  for (int k = 1; k < kSpectrumSamples; ++k) {
+    terms[k] = secondary_terms(cs, forward[k - 1], lambda[k]);
+    sum_u += terms[k].u;
+  }
+  const double scale = kSpectrumSamples * normalisation_ * (terms[0].filter < 0.0 ? -1.0 : 1.0) / sum_u;
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].filter / terms[k].n2_jacobian;
+    out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;  // never NaN into the film
+  }
+}
+
+}  // namespace eyetrace
