@@ -78,6 +78,7 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   screen_window_ = glm::dvec4(w);
   screen_scale_ = {(screen_window_[1] - screen_window_[0]) / resolution.x,
                    (screen_window_[3] - screen_window_[2]) / resolution.y};
+  inv_screen_scale_ = 1.0 / screen_scale_;
   const double corner = std::sqrt(double(w[1]) * w[1] + double(w[3]) * w[3]);  // screen radius of a corner
   retina_ = retina_of(prescription_, system_);
   z_plane_ = system_.vertex_z(system_.image_index() - 1);

@@ -98,9 +98,10 @@ class LensSystemCamera : public Camera {
   void weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
                          const optics::TraceResult* forward, CameraRay* out) const;
   WavelengthTerms hero_terms(const CameraSample& cs, const PendingRay& hero, double lambda_nm) const;
-  WavelengthTerms secondary_terms(const CameraSample& cs, const optics::TraceResult& forward, double lambda_nm) const;
-  double filter_at(const CameraSample& cs, double screen_radius, glm::dvec2 meridian) const;
-  double area_jacobian(double screen_radius, double arc, double slope) const;
+  WavelengthTerms secondary_terms(const CameraSample& cs, glm::dvec2 pixel_centre, const optics::TraceResult& forward,
+                                  double lambda_nm) const;
+  double filter_at(const CameraSample& cs, glm::dvec2 pixel_centre, double screen_radius, glm::dvec2 meridian) const;
+  static double area_jacobian(double screen_radius, double height, double slope);
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation();
 
@@ -112,6 +113,7 @@ class LensSystemCamera : public Camera {
   Settings settings_;
   glm::dvec4 screen_window_;  // pbrt's: x0 x1 y0 y1, shorter axis [-1, 1]
   glm::dvec2 screen_scale_;   // screen units per raster pixel
+  glm::dvec2 inv_screen_scale_;
   RetinaSurface retina_;
   RetinaPointTable retina_points_;
   double z_plane_ = 0.0;

@@ -79,15 +79,21 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
     const double t = (angle - angles_[i]) / (angles_[i + 1] - angles_[i]);
     inverse_[j] = arcs_[i] + t * (arcs_[i + 1] - arcs_[i]);
   }
+  guide_scale_ = static_cast<double>(n - 1) / std::fmax(inverse_.back(), 1e-12);
+  guide_.resize(n);
+  for (size_t g = 0, i = 0; g < n; ++g) {
+    while (i + 2 < n && inverse_[i + 1] <= static_cast<double>(g) / guide_scale_) ++i;
+    guide_[g] = static_cast<uint32_t>(i);
+  }
 }
 
 double FieldAngleTable::angle_for_arc(double a, double* slope) const {
   if (empty() || !(a >= inverse_.front() && a <= inverse_.back())) return -1.0;
-  // The segment of the resampled inverse that holds a: arc_for_angle interpolates linearly in it.
-  const size_t i =
-      std::min(static_cast<size_t>(std::upper_bound(inverse_.begin(), inverse_.end(), a) - inverse_.begin()),
-               inverse_.size() - 1) -
-      1;
+  // The segment of the resampled inverse that holds a (arc_for_angle interpolates linearly in
+  // it): from the guide's segment, forward while the next one starts at or below a.
+  const size_t g = std::min(static_cast<size_t>(a * guide_scale_), guide_.size() - 1);
+  size_t i = guide_[g];
+  while (i + 2 < inverse_.size() && inverse_[i + 1] <= a) ++i;
   const double width = inverse_[i + 1] - inverse_[i];
   *slope = width * inverse_scale_;
   const double t = width > 0.0 ? (a - inverse_[i]) / width : 0.0;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,10 @@ class FieldAngleTable {
   std::vector<double> arcs_, angles_, chief_q_;
   std::vector<double> inverse_;  // arc at angle j / inverse_scale_
   double inverse_scale_ = 0.0;   // samples per degree
+  // Guide for angle_for_arc: guide_[g] is the last segment of inverse_ starting at or below arc
+  // g / guide_scale_, so a lookup starts there and steps at most a few segments.
+  std::vector<uint32_t> guide_;
+  double guide_scale_ = 0.0;  // guide cells per mm of arc
 };
 
 class RetinaMapping {

@@ -28,26 +28,20 @@ namespace eyetrace {
 
 // The film's filter at the raster point of screen radius rho along the retina meridian m,
 // relative to the centre of the sample's pixel; 0 outside the filter's support.
-double LensSystemCamera::filter_at(const CameraSample& cs, double rho, glm::dvec2 m) const {
+double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, double rho, glm::dvec2 m) const {
   // Upright image: retina direction (mx, my) is screen direction (mx, -my) (see the header).
-  const double px = (rho * m.x - screen_window_[0]) / screen_scale_.x;
-  const double py = (screen_window_[3] + rho * m.y) / screen_scale_.y;
-  // The pixel centre: p_film is centre + offset, rounded in float; the centre is on the grid.
-  const double cx = std::floor(double(cs.p_film.x) - double(cs.filter_offset.x)) + 0.5;
-  const double cy = std::floor(double(cs.p_film.y) - double(cs.filter_offset.y)) + 0.5;
-  const Vec2 o(float(px - cx), float(py - cy)), r = cs.filter->radius();
+  const double px = (rho * m.x - screen_window_[0]) * inv_screen_scale_.x;
+  const double py = (screen_window_[3] + rho * m.y) * inv_screen_scale_.y;
+  const Vec2 o(float(px - centre.x), float(py - centre.y)), r = cs.filter->radius();
   if (!(std::abs(o.x) <= r.x && std::abs(o.y) <= r.y)) return 0.0;
   return cs.filter->evaluate(o);
 }
 
-// Retina area per screen area at screen radius rho (arc a, d arc / d rho = slope): the mapping
-// is radial, so it is (d arc / d rho) (h(a) / rho), h the height from the axis, which tends to
-// slope^2 at the centre (dh / da = 1 there).
-double LensSystemCamera::area_jacobian(double rho, double a, double slope) const {
-  if (!(rho > 1e-12)) return slope * slope;
-  glm::dvec2 p, n;
-  retina_points_.at(a, &p, &n);
-  return slope * p.x / rho;
+// Retina area per screen area at screen radius rho (arc a at height h, d arc / d rho = slope):
+// the mapping is radial, so it is (d arc / d rho) (h / rho), which tends to slope^2 at the
+// centre (dh / da = 1 there).
+double LensSystemCamera::area_jacobian(double rho, double h, double slope) {
+  return rho > 1e-12 ? slope * h / rho : slope * slope;
 }
 
 LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSample& cs, const PendingRay& hero,
@@ -57,7 +51,9 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
   double slope = 0.0;
   if (mapping_.screen_radius_for_arc(hero.arc, angles_, &slope) < 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
-  t.n2_jacobian = n * n * area_jacobian(hero.screen_radius, hero.arc, slope);
+  glm::dvec2 p, normal;
+  retina_points_.at(hero.arc, &p, &normal);
+  t.n2_jacobian = n * n * area_jacobian(hero.screen_radius, p.x, slope);
   const glm::dvec3& d = hero.d_local;
   const double d2 = glm::dot(d, d);
   const double g = (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z / (d2 * d2);  // cos cos / d^2
@@ -67,13 +63,13 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
 
 // A secondary wavelength: where the hero's ray, traced back in at this wavelength, meets the
 // retina (the trace's end) and the sampling plane (its straight path in the vitreous).
-LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const CameraSample& cs,
+LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const CameraSample& cs, glm::dvec2 centre,
                                                                     const optics::TraceResult& forward,
                                                                     double lambda_nm) const {
   if (!forward.ok()) return {};
   const glm::dvec3& x = forward.ray.origin;
   const glm::dvec3 dir = glm::normalize(forward.ray.direction);  // towards the retina (+z)
-  const double h = std::hypot(x.x, x.y);
+  const double h = std::sqrt(x.x * x.x + x.y * x.y);
   if (retina_.curvature != 0.0 && !(h * std::abs(retina_.curvature) < 1.0)) return {};
   const double a = retina_.arc_for_height(h);
   if (!(a <= pupil_.max_arc_mm()) || !(dir.z > 0.0)) return {};  // beyond the camera's retina
@@ -82,15 +78,16 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const double rho = mapping_.screen_radius_for_arc(a, angles_, &slope);
   if (rho < 0.0) return {};
   WavelengthTerms t;
-  t.filter = filter_at(cs, rho, m);
+  t.filter = filter_at(cs, centre, rho, m);
   if (t.filter == 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
-  t.n2_jacobian = n * n * area_jacobian(rho, a, slope);
+  glm::dvec2 p, nr;
+  retina_points_.at(a, &p, &nr);
+  t.n2_jacobian = n * n * area_jacobian(rho, p.x, slope);
   // Back along the ray to the plane: d = s dir with s < 0 (the plane is in front of the retina).
   const double s = (z_plane_ - x.z) / dir.z;
   const glm::dvec2 q = glm::dvec2(x.x, x.y) + s * glm::dvec2(dir.x, dir.y);
   const glm::dvec2 q_local(q.x * m.x + q.y * m.y, -q.x * m.y + q.y * m.x);  // meridian frame
-  const glm::dvec2 nr = retina_.normal(a);
   const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
   if (!(cos_retina > 0.0) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
   t.u = std::abs(t.filter) / (pupil_.area(a) * t.n2_jacobian * cos_retina * dir.z / (s * s));
@@ -106,8 +103,11 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
     return;
   }
   double sum_u = terms[0].u;
+  // The pixel centre: p_film is centre + offset, rounded in float; the centre is on the grid.
+  const glm::dvec2 centre(std::floor(double(cs.p_film.x) - double(cs.filter_offset.x)) + 0.5,
+                          std::floor(double(cs.p_film.y) - double(cs.filter_offset.y)) + 0.5);
   for (int k = 1; k < kSpectrumSamples; ++k) {
-    terms[k] = secondary_terms(cs, forward[k - 1], lambda[k]);
+    terms[k] = secondary_terms(cs, centre, forward[k - 1], lambda[k]);
     sum_u += terms[k].u;
   }
   const double scale = kSpectrumSamples * normalisation_ * (terms[0].filter < 0.0 ? -1.0 : 1.0) / sum_u;
