@@ -53,6 +53,7 @@ class LensSystemCamera : public Camera {
                      size_t count) const override;
   using Camera::generate_ray;
   using Camera::generate_rays;
+  bool splats() const override { return dispersive_; }
   std::string to_string() const override;
 
   // --- For tests and tools ---------------------------------------------------------------
@@ -90,6 +91,7 @@ class LensSystemCamera : public Camera {
     double filter = 0.0;     // the pixel filter at the wavelength's retina point (signed)
     double u = 0.0;          // its sampling density, up to a common factor; 0: cannot sample the ray
     double n2_jacobian = 0;  // n_vitreous^2 * (retina area per raster area) there
+    IVec2 offset{0};         // the pixel it counts in, from the sample's (splats)
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
   std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
@@ -100,7 +102,8 @@ class LensSystemCamera : public Camera {
   WavelengthTerms hero_terms(const CameraSample& cs, const PendingRay& hero, double lambda_nm) const;
   WavelengthTerms secondary_terms(const CameraSample& cs, glm::dvec2 pixel_centre, const optics::TraceResult& forward,
                                   double lambda_nm) const;
-  double filter_at(const CameraSample& cs, glm::dvec2 pixel_centre, double screen_radius, glm::dvec2 meridian) const;
+  double filter_at(const CameraSample& cs, glm::dvec2 pixel_centre, double screen_radius, glm::dvec2 meridian,
+                   IVec2* offset) const;
   static double area_jacobian(double screen_radius, double height, double slope);
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation();

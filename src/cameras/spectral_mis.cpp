@@ -20,6 +20,13 @@
 // Unbiased: for every ray the weights of the techniques that can produce it sum to 1 (u_k = 0
 // where technique k cannot: outside the pixel's filter, outside the pupil region, or lost in
 // the eye).
+//
+// With a box filter every wavelength can instead count in the pixel where it lands (a splat):
+// every pixel samples its square uniformly, so the film as a whole samples the raster with one
+// density and f = 1 for every technique. A wavelength is splatted only into a pixel of the
+// sample's own tile (so each pixel is written by one thread); the techniques whose landing
+// pixels lie in that tile share the weight (the balance heuristic over them: for a pair of
+// wavelengths "both in one tile" is symmetric, so the weights of every ray still sum to 1).
 #include <cmath>
 
 #include "cameras/lens_system_camera.h"
@@ -27,11 +34,21 @@
 namespace eyetrace {
 
 // The film's filter at the raster point of screen radius rho along the retina meridian m,
-// relative to the centre of the sample's pixel; 0 outside the filter's support.
-double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, double rho, glm::dvec2 m) const {
+// relative to the centre of the sample's pixel; 0 outside the filter's support. A sample that
+// may splat (constant filter) counts the point in whichever pixel of its tile holds it: offset
+// receives that pixel's position relative to the sample's own.
+double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, double rho, glm::dvec2 m,
+                                   IVec2* offset) const {
   // Upright image: retina direction (mx, my) is screen direction (mx, -my) (see the header).
   const double px = (rho * m.x - screen_window_[0]) * inv_screen_scale_.x;
   const double py = (screen_window_[3] + rho * m.y) * inv_screen_scale_.y;
+  if (cs.splat) {
+    const IVec2 pixel(int(std::floor(px)), int(std::floor(py)));
+    if (!(pixel.x >= cs.splat_lo.x && pixel.y >= cs.splat_lo.y && pixel.x < cs.splat_hi.x && pixel.y < cs.splat_hi.y))
+      return 0.0;
+    *offset = pixel - IVec2(int(std::floor(centre.x)), int(std::floor(centre.y)));
+    return 1.0;
+  }
   const Vec2 o(float(px - centre.x), float(py - centre.y)), r = cs.filter->radius();
   if (!(std::abs(o.x) <= r.x && std::abs(o.y) <= r.y)) return 0.0;
   return cs.filter->evaluate(o);
@@ -47,7 +64,7 @@ double LensSystemCamera::area_jacobian(double rho, double h, double slope) {
 LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSample& cs, const PendingRay& hero,
                                                                double lambda_nm) const {
   WavelengthTerms t;
-  t.filter = cs.filter->evaluate(cs.filter_offset);
+  t.filter = cs.splat ? 1.0 : cs.filter->evaluate(cs.filter_offset);
   double slope = 0.0;
   if (mapping_.screen_radius_for_arc(hero.arc, angles_, &slope) < 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
@@ -78,7 +95,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const double rho = mapping_.screen_radius_for_arc(a, angles_, &slope);
   if (rho < 0.0) return {};
   WavelengthTerms t;
-  t.filter = filter_at(cs, centre, rho, m);
+  t.filter = filter_at(cs, centre, rho, m, &t.offset);
   if (t.filter == 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
   glm::dvec2 p, nr;
@@ -114,6 +131,7 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
   for (int k = 0; k < kSpectrumSamples; ++k) {
     const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].filter / terms[k].n2_jacobian;
     out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;  // never NaN into the film
+    out->pixel_offset[k] = terms[k].offset;
   }
 }
 

@@ -29,6 +29,11 @@ struct CameraSample {
   // Null (tools, tests): the camera keeps the hero wavelength only.
   const Filter* filter = nullptr;
   Vec2 filter_offset{0.f};
+  // The pixels (absolute raster bounds [lo, hi), the sample's tile) into which the camera may
+  // send a wavelength that landed in another pixel (CameraRay::pixel_offset), with a constant
+  // filter only. Without: each wavelength counts in the sample's own pixel or not at all.
+  bool splat = false;
+  IVec2 splat_lo{0}, splat_hi{0};
 };
 
 struct CameraRay {
@@ -41,6 +46,9 @@ struct CameraRay {
   // in the scene terminated the others): the plain, non-MIS weight, since the other
   // wavelengths can no longer share the path.
   float hero_weight = 1.f;
+  // Where each wavelength's weighted radiance belongs, from the sample's pixel (a dispersive
+  // camera splatting by wavelength); (0, 0) is the sample's own pixel.
+  IVec2 pixel_offset[kSpectrumSamples] = {};
 };
 
 class Camera {
@@ -66,6 +74,9 @@ class Camera {
       generate_rays(samples + i, lambdas, rays + i, n);
     }
   }
+  // True when the camera may send a wavelength to another pixel (CameraRay::pixel_offset) for
+  // samples that allow it (CameraSample::splat).
+  virtual bool splats() const { return false; }
   virtual std::string to_string() const = 0;
 
  private:

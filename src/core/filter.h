@@ -19,6 +19,9 @@ class Filter {
   virtual Vec2 radius() const = 0;
   virtual float evaluate(Vec2 p) const = 0;
   virtual FilterSample sample(Vec2 u) const = 0;
+  // True when the filter has one value over its whole support (a box): every sample then has
+  // weight 1, and radiance may be splatted to another pixel without changing the pixel's weight.
+  virtual bool constant() const { return false; }
   virtual std::string to_string() const = 0;
 };
 

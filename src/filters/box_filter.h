@@ -15,6 +15,7 @@ class BoxFilter : public Filter {
   Vec2 radius() const override { return radius_; }
   float evaluate(Vec2 p) const override { return std::abs(p.x) <= radius_.x && std::abs(p.y) <= radius_.y ? 1.f : 0.f; }
   FilterSample sample(Vec2 u) const override;
+  bool constant() const override { return true; }
   std::string to_string() const override;
   float integral() const { return 4.f * radius_.x * radius_.y; }
 

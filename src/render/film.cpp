@@ -69,11 +69,25 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
   return true;
 }
 
+bool Film::add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  const RGB rgb = sampled_to_rgb(L, lambda);
+  if (!is_finite(rgb)) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  Pixel& px = pixels_[index(pixel)];
+  px.splat[0] += rgb.r;
+  px.splat[1] += rgb.g;
+  px.splat[2] += rgb.b;
+  return true;
+}
+
 RGB Film::pixel_value(IVec2 p) const {
   const Pixel& px = pixels_[index(p)];
   if (px.weight == 0) return RGB(0.f);
   double k = scale_ / px.weight;
-  return RGB(float(px.sum[0] * k), float(px.sum[1] * k), float(px.sum[2] * k));
+  return RGB(float((px.sum[0] + px.splat[0]) * k), float((px.sum[1] + px.splat[1]) * k),
+             float((px.sum[2] + px.splat[2]) * k));
 }
 
 float Film::bucket_value(IVec2 p, int b) const {
@@ -122,7 +136,7 @@ std::vector<double> Film::accumulators() const {
   acc.reserve(pixels_.size() * accumulators_per_pixel());
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const Pixel& p = pixels_[i];
-    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight});
+    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight, p.splat[0], p.splat[1], p.splat[2]});
     acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * n),
                bucket_sums_.begin() + std::ptrdiff_t((i + 1) * n));
   }
@@ -134,8 +148,8 @@ void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
   if (acc.size() != pixels_.size() * per) throw std::invalid_argument("Film::restore: wrong number of accumulators");
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const double* a = &acc[per * i];
-    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3]};
-    std::copy(a + 4, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * n));
+    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}};
+    std::copy(a + kAccumulatorsPerPixel, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * n));
   }
   nonfinite_ = nonfinite_samples;
 }

@@ -3,6 +3,14 @@
 // lands in one pixel (the filter is importance-sampled), so pixels are written by one thread.
 // Non-finite samples are counted and discarded, never averaged into the image.
 //
+// Splats: a dispersive eye with a box filter sends a secondary wavelength's radiance to the
+// pixel where that wavelength landed (spectral MIS, cameras/spectral_mis.cpp), always a pixel of
+// the same tile, so still written by one thread. Splats add to a sum of their own, without
+// weight: a box filter gives every sample weight 1, so the pixel's weight counts its samples
+// and (sum + splat) / weight is the mean. Kept apart from the pixel's own sum so that each
+// sum receives its terms in an order that does not depend on how the render was cut into
+// passes (the integrator takes a tile's samples index by index, pixels within).
+//
 // A spectral film (pbrt-v4's Film "spectral") also keeps, per pixel, one sum per wavelength
 // bucket: equal buckets over [lambda_min, lambda_max]. A sample's wavelengths are the renderer's
 // (drawn from pbrt-v4's visible-wavelength density over 360-830 nm, as for the RGB film), and
@@ -91,6 +99,9 @@ class Film {
     px.weight += w;
     return true;
   }
+  // Adds radiance L, already weighted, to `pixel`'s splat sum (RGB films only). Returns false
+  // (and counts it) when any colour term is not finite.
+  bool add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda);
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;
@@ -100,12 +111,13 @@ class Film {
   std::map<std::string, std::string> image_metadata() const;
   uint64_t nonfinite_samples() const { return nonfinite_; }
 
-  // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums and
-  // the weight sum, then (spectral film) the weighted sum of each bucket: 4 + buckets().count
-  // doubles per pixel. A checkpoint stores them, and a film restored from them continues bit
-  // for bit as if it had never stopped.
+  // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums, the
+  // weight sum and the r, g, b splat sums, then (spectral film) the weighted sum of each bucket:
+  // kAccumulatorsPerPixel + buckets().count doubles per pixel. A checkpoint stores them, and a film restored from them
+  // continues bit for bit as if it had never stopped.
   std::vector<double> accumulators() const;
-  size_t accumulators_per_pixel() const { return 4 + size_t(buckets_.count); }
+  static constexpr size_t kAccumulatorsPerPixel = 7;
+  size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + size_t(buckets_.count); }
   // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
 
@@ -113,6 +125,7 @@ class Film {
   struct Pixel {
     double sum[3] = {0, 0, 0};
     double weight = 0;
+    double splat[3] = {0, 0, 0};
   };
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
   size_t index(IVec2 p) const { return size_t(p.y - bounds_.lo.y) * bounds_.width() + (p.x - bounds_.lo.x); }

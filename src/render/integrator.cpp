@@ -49,15 +49,28 @@ CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel,
 // (pixel, index, dimension) and each pixel still receives its samples in index order.
 class SampleBatch {
  public:
+  // tile: the pixels this thread owns, into which a dispersive camera may splat wavelengths
+  // (box filter, RGB film: see Film).
   SampleBatch(const Integrator& integrator, const Camera& camera, Film& film, ThreadState& ts, RayTally& tally,
-              uint64_t& lost)
-      : integrator_(integrator), camera_(camera), film_(film), ts_(ts), tally_(tally), lost_(lost) {}
+              uint64_t& lost, const PixelBounds& tile)
+      : integrator_(integrator),
+        camera_(camera),
+        film_(film),
+        ts_(ts),
+        tally_(tally),
+        lost_(lost),
+        tile_(tile),
+        splat_(camera.splats() && film.filter().constant() && !film.buckets().spectral()) {}
+  bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
 
   void add(IVec2 pixel, int index) {
     pixels_[count_] = pixel;
     indices_[count_] = index;
     samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index);
+    samples_[count_].splat = splat_;
+    samples_[count_].splat_lo = tile_.lo;
+    samples_[count_].splat_hi = tile_.hi;
     lambdas_[count_] = SampledWavelengths::sample_visible(samples_[count_].wavelength_u);
     if (++count_ == kCameraBatch) flush();
   }
@@ -81,9 +94,20 @@ class SampleBatch {
     ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
     SampledWavelengths& lambda = lambdas_[i];
     SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_);
-    L *= lambda.secondary_terminated() ? SampledSpectrum(cr->hero_weight) : cr->weight;
-    film_.add_sample(pixels_[i], L, lambda, filter_weight);
     ts_.arena.reset();
+    if (lambda.secondary_terminated()) {
+      film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight);
+      return;
+    }
+    L *= cr->weight;
+    // Wavelengths a splatting camera sent to other pixels of the tile go there.
+    for (int k = 1; k < kSpectrumSamples; ++k) {
+      if (cr->pixel_offset[k] == IVec2(0)) continue;
+      SampledSpectrum one(0.f);
+      std::swap(one[k], L[k]);
+      film_.add_splat(pixels_[i] + cr->pixel_offset[k], one, lambda);
+    }
+    film_.add_sample(pixels_[i], L, lambda, filter_weight);
   }
 
   const Integrator& integrator_;
@@ -92,6 +116,8 @@ class SampleBatch {
   ThreadState& ts_;
   RayTally& tally_;
   uint64_t& lost_;
+  PixelBounds tile_;
+  bool splat_;
   IVec2 pixels_[kCameraBatch];
   int indices_[kCameraBatch];
   CameraSample samples_[kCameraBatch];
@@ -146,10 +172,19 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
     RayTally tally;
     uint64_t lost = 0;
     {
-      SampleBatch batch(*this, camera, film, ts, tally, lost);
-      for (int y = tb.lo.y; y < tb.hi.y; ++y)
-        for (int x = tb.lo.x; x < tb.hi.x; ++x)
-          for (int i = tp.done[t]; i < end; ++i) batch.add(IVec2(x, y), i);
+      SampleBatch batch(*this, camera, film, ts, tally, lost, tb);
+      if (batch.splats()) {
+        // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
+        // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
+        // mono eye on the figure scene), so only where splats happen.
+        for (int i = tp.done[t]; i < end; ++i)
+          for (int y = tb.lo.y; y < tb.hi.y; ++y)
+            for (int x = tb.lo.x; x < tb.hi.x; ++x) batch.add(IVec2(x, y), i);
+      } else {
+        for (int y = tb.lo.y; y < tb.hi.y; ++y)
+          for (int x = tb.lo.x; x < tb.hi.x; ++x)
+            for (int i = tp.done[t]; i < end; ++i) batch.add(IVec2(x, y), i);
+      }
     }
     uint64_t n = tb.area() * uint64_t(end - tp.done[t]);
     tp.done[t] = end;

@@ -23,14 +23,13 @@
 namespace eyetrace {
 namespace {
 
-// 40x24 pixels: 3x2 tiles, the right and bottom ones partial. "{}": the film type and its
-// parameters (the spectral film's buckets must resume as exactly as R, G, B).
+// 40x24 pixels: 3x2 tiles, the right and bottom ones partial. "{}": the camera, film and
+// filter (the spectral film's buckets must resume as exactly as R, G, B, and the dispersive
+// eye's splats, which cross pixels within a tile, as exactly as the pixels' own sums).
 const char* kScene = R"(LookAt 0 0 -4  0 0 0  0 1 0
-Camera "perspective" "float fov" 40
-Film {} "integer xresolution" 40 "integer yresolution" 24 "string filename" "out.exr"
+{}
 Sampler "zsobol" "integer pixelsamples" 16
 Integrator "path" "integer maxdepth" 4
-PixelFilter "gaussian"
 WorldBegin
 LightSource "point" "point3 from" [2 3 -3] "rgb I" [20 20 20]
 Material "diffuse" "rgb reflectance" [0.6 0.5 0.4]
@@ -40,12 +39,21 @@ Rotate 90 1 0 0
 Shape "disk" "float radius" 5
 )";
 
-const char* kRgb = "\"rgb\"";
-const char* kSpectral = "\"spectral\" \"integer nbuckets\" 7 \"float lambdamin\" 380 \"float lambdamax\" 720";
+std::string view(const char* camera, const char* film, const char* filter) {
+  return fmt::format(
+      "Camera {}\nFilm {} \"integer xresolution\" 40 \"integer yresolution\" 24 \"string filename\" "
+      "\"out.exr\"\nPixelFilter {}",
+      camera, film, filter);
+}
+const std::string kRgb = view("\"perspective\" \"float fov\" 40", "\"rgb\"", "\"gaussian\"");
+const std::string kSpectral =
+    view("\"perspective\" \"float fov\" 40",
+         "\"spectral\" \"integer nbuckets\" 7 \"float lambdamin\" 380 \"float lambdamax\" 720", "\"gaussian\"");
+const std::string kSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"rgb\"", "\"box\"");
 
-RenderSetup setup_scene(const char* film = kRgb) {
+RenderSetup setup_scene(const std::string& v = kRgb) {
   set_warnings_enabled(false);
-  return build_render_setup(parse_scene_string(fmt::format(fmt::runtime(kScene), film), "checkpoint.pbrt", "/"), {});
+  return build_render_setup(parse_scene_string(fmt::format(fmt::runtime(kScene), v), "checkpoint.pbrt", "/"), {});
 }
 
 std::vector<double> render(RenderSetup& s, RenderOptions opts) {
@@ -59,7 +67,7 @@ bool bits_equal(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-std::vector<double> reference(const char* film = kRgb) {
+std::vector<double> reference(const std::string& film = kRgb) {
   RenderSetup s = setup_scene(film);
   RenderOptions o;
   o.threads = 1;
@@ -83,9 +91,20 @@ TEST(FilmCheckpoint, AccumulatorsRestoreExactly) {
   EXPECT_THROW(resumed.restore(std::vector<double>(7), 0), std::invalid_argument);
 }
 
-class FilmCheckpointOf : public ::testing::TestWithParam<const char*> {};
-INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf, ::testing::Values(kRgb, kSpectral),
-                         [](const auto& info) { return info.index == 0 ? "rgb" : "spectral"; });
+class FilmCheckpointOf : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf, ::testing::Values(kRgb, kSpectral, kSplattingEye),
+                         [](const auto& info) {
+                           return std::string(info.index == 0 ? "rgb" : info.index == 1 ? "spectral" : "splatting_eye");
+                         });
+
+// The eye case is only a test of splats if it splats: a dispersive eye with a box filter sends
+// some wavelengths to neighbouring pixels (accumulators 4-6 of a pixel).
+TEST(FilmCheckpoint, SplattingEyeSplats) {
+  const std::vector<double> acc = reference(kSplattingEye);
+  size_t splatted = 0;
+  for (size_t p = 0; p < acc.size(); p += Film::kAccumulatorsPerPixel) splatted += acc[p + 4] != 0.0;
+  EXPECT_GT(splatted, acc.size() / Film::kAccumulatorsPerPixel / 4);  // half the view is black sky
+}
 
 TEST_P(FilmCheckpointOf, ImageDoesNotDependOnPassSizesOrThreads) {
   std::vector<double> ref = reference(GetParam());
@@ -131,7 +150,8 @@ TEST_P(FilmCheckpointOf, StoppedBetweenPassesAndResumedThroughStateFileIsBitIden
   EXPECT_EQ(back.fingerprint, 42u);
   EXPECT_EQ(back.tiles.done, tiles.done);
   EXPECT_EQ(back.spectral_buckets, s.film->buckets().count);
-  EXPECT_EQ(back.accumulators.size(), 40u * 24u * (4u + unsigned(back.spectral_buckets)));
+  EXPECT_EQ(back.accumulators.size(),
+            40u * 24u * (unsigned(Film::kAccumulatorsPerPixel) + unsigned(back.spectral_buckets)));
 
   RenderSetup resumed = setup_scene(GetParam());
   resumed.film->restore(back.accumulators, back.nonfinite_samples);
@@ -179,7 +199,7 @@ TEST(FilmCheckpoint, DamagedStateFilesAreRefused) {
   st.bounds = PixelBounds{IVec2(0), IVec2(20)};
   st.samples_per_pixel = 4;
   st.tiles = TileProgress::start(st.bounds);
-  st.accumulators.assign(20 * 20 * 4, 0.5);
+  st.accumulators.assign(20 * 20 * Film::kAccumulatorsPerPixel, 0.5);
   std::string path = ::testing::TempDir() + "film_checkpoint_damaged.state";
   write_render_state(path, st);
   std::string bytes;
@@ -214,7 +234,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   st.samples_per_pixel = 4;
   st.tiles = TileProgress::start(st.bounds);
   st.spectral_buckets = 16;
-  st.accumulators.assign(20 * 20 * 20, 0.25);
+  st.accumulators.assign(20 * 20 * (Film::kAccumulatorsPerPixel + 16), 0.25);
   const std::string path = ::testing::TempDir() + "film_checkpoint_spectral.state";
   write_render_state(path, st);
   RenderState back = read_render_state(path);
@@ -230,30 +250,34 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
     return std::string();
   };
   RenderState rgb_sized = st;
-  rgb_sized.accumulators.resize(20 * 20 * 4);
+  rgb_sized.accumulators.resize(20 * 20 * Film::kAccumulatorsPerPixel);
   EXPECT_NE(error_for(rgb_sized).find("its film and tile sizes disagree"), std::string::npos);
   RenderState too_many = st;
   too_many.spectral_buckets = 100000;
   EXPECT_NE(error_for(too_many).find("spectral bucket count 100000 is outside [0, 512]"), std::string::npos);
-  // Version 1 files (before spectral films) are refused by version, not misread.
-  write_render_state(path, st);
-  std::string bytes;
-  {
-    std::ifstream in(path, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-  const size_t version_at = std::string_view("EYETRACE-RENDER-STATE\n").size() + 4;
-  uint32_t old_version = 1;
-  std::memcpy(&bytes[version_at], &old_version, 4);
-  const uint64_t sum = fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8));
-  std::memcpy(&bytes[bytes.size() - 8], &sum, 8);
-  std::ofstream(path, std::ios::binary) << bytes;
-  try {
-    read_render_state(path);
-    ADD_FAILURE() << "a version 1 state was read";
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("format version 1, this eyetrace reads version 2"), std::string::npos)
-        << e.what();
+  // Version 1 and 2 files (before spectral films; before splat sums) are refused by version,
+  // not misread.
+  for (uint32_t old_version : {1u, 2u}) {
+    write_render_state(path, st);
+    std::string bytes;
+    {
+      std::ifstream in(path, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const size_t version_at = std::string_view("EYETRACE-RENDER-STATE\n").size() + 4;
+    std::memcpy(&bytes[version_at], &old_version, 4);
+    const uint64_t sum = fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8));
+    std::memcpy(&bytes[bytes.size() - 8], &sum, 8);
+    std::ofstream(path, std::ios::binary) << bytes;
+    try {
+      read_render_state(path);
+      ADD_FAILURE() << "a version " << old_version << " state was read";
+    } catch (const SceneError& e) {
+      EXPECT_NE(
+          std::string(e.what()).find(fmt::format("format version {}, this eyetrace reads version 3", old_version)),
+          std::string::npos)
+          << e.what();
+    }
   }
 }
 
