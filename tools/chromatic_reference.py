@@ -47,18 +47,15 @@ object at infinity, at the reference wavelength, lands at the same s (secant ite
 1e-11 mm): TCA = 60 (angle(450) - angle(650)) arcmin, signed > 0 when the 450 nm image is seen
 farther from the axis (along the field); retina_um = 1000 (s(450) - s(650)), the same sign.
 """
-import argparse
-import datetime
-import hashlib
 import json
 import math
 import os
-import platform
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import reference_io  # noqa: E402
 import reference_trace as rt  # noqa: E402
 
 WAVELENGTHS_NM = [400.0 + 10.0 * i for i in range(31)]
@@ -208,12 +205,8 @@ def chromatic_states(src):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--input", default=rt.DEFAULT_INPUT)
-    ap.add_argument("--output", default="-", help="output file ('-' = standard output)")
-    args = ap.parse_args()
-    raw = open(args.input, "rb").read()
-    src = json.loads(raw)
+    args = reference_io.parse_args(__doc__)
+    raw, src = reference_io.read_input(args.input)
 
     out_states = []
     for state_id, key, description, preset, builder in chromatic_states(src):
@@ -258,19 +251,13 @@ def main():
         entry["tca"] = tca
         out_states.append(entry)
 
-    cmd = "/usr/bin/python3 tools/chromatic_reference.py " + " ".join(sys.argv[1:])
     doc = {
         "provenance": {
             "what": "independent chromatic reference of the schematic eyes of eye-models.json: paraxial refraction "
                     "at 400-700 nm (every 10 nm and the reference wavelength) and chief-ray transverse chromatic "
                     "aberration between 450 and 650 nm",
             "script": "tools/chromatic_reference.py (reuses tools/reference_trace.py's tracer)",
-            "command": cmd.strip(),
-            "input_file": args.input,
-            "input_sha256": hashlib.sha256(raw).hexdigest(),
-            "date_utc": datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat(),
-            "python": platform.python_version(),
-            "numpy": np.__version__,
+            **reference_io.run_provenance("tools/chromatic_reference.py", args.input, raw, np.__version__),
             "independence": "written from the prescriptions, dispersion data and formulas of the input file only; "
                             "eyetrace's code and data/eyes files were not used",
             "method": __doc__[__doc__.index("Indices at a wavelength"):].strip(),
@@ -278,13 +265,7 @@ def main():
         },
         "states": out_states,
     }
-    text = json.dumps(doc, indent=1) + "\n"
-    if args.output == "-":
-        sys.stdout.write(text)
-    else:
-        os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
-        with open(args.output, "w") as f:
-            f.write(text)
+    reference_io.write_output(json.dumps(doc, indent=1) + "\n", args.output)
 
 
 if __name__ == "__main__":

@@ -9,14 +9,11 @@ provenance. Nothing is computed here: every number is copied as it stands in the
 Each entry names the eyetrace preset (model, variant, accommodation in dioptres) that stands for
 one model key of eye-models.json. See tests/data/optics/README.md.
 """
-import argparse
 import datetime
 import hashlib
 import json
-import os
-import sys
 
-DEFAULT_INPUT = "/work/shared/optics/eye-models.json"
+import reference_io
 
 # eyetrace preset -> eye-models.json model key. Gullstrand's accommodated exact eye is the end
 # state of Atchison & Smith's continuous version, A = 10.87013 D.
@@ -38,13 +35,8 @@ COMPUTED_KEYS = ["power_D", "refraction_D", "F", "Fp", "H", "Hp", "N", "Np", "en
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--input", default=DEFAULT_INPUT)
-    ap.add_argument("--output", default="-", help="output file ('-' = standard output)")
-    args = ap.parse_args()
-
-    raw = open(args.input, "rb").read()
-    src = json.loads(raw)
+    args = reference_io.parse_args(__doc__)
+    raw, src = reference_io.read_input(args.input)
     models = src["models"]
 
     presets = []
@@ -96,13 +88,7 @@ def main():
                 src["navarro_accommodation"]["paraxial_accommodation_D_axial_length_fixed"],
         },
     }
-    text = json.dumps(out, indent=1) + "\n"
-    if args.output == "-":
-        sys.stdout.write(text)
-    else:
-        os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
-        with open(args.output, "w") as f:
-            f.write(text)
+    reference_io.write_output(json.dumps(out, indent=1) + "\n", args.output)
 
 
 if __name__ == "__main__":

@@ -55,18 +55,12 @@ point here, by a 2-D Newton iteration (finite-difference Jacobian) on the start 
 the stop within 1e-12 mm (asserted < 1e-10 mm); the resulting start ray is recorded exactly
 (shortest round-trip decimal of each double), the traced hit points and directions to 1e-12.
 """
-import argparse
-import datetime
-import hashlib
 import json
 import math
-import os
-import platform
-import sys
 
 import numpy as np
 
-DEFAULT_INPUT = "/work/shared/optics/eye-models.json"
+import reference_io
 PUPIL_DIAMETER_MM = 4.0
 PUPIL_FRACTION = 0.9
 FIELDS_DEG = [0.0, 10.0, 20.0, 30.0]
@@ -420,13 +414,8 @@ def rounded(v):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--input", default=DEFAULT_INPUT)
-    ap.add_argument("--output", default="-", help="output file ('-' = standard output)")
-    args = ap.parse_args()
-
-    raw = open(args.input, "rb").read()
-    src = json.loads(raw)
+    args = reference_io.parse_args(__doc__)
+    raw, src = reference_io.read_input(args.input)
     index_check = check_indices(src)
 
     out_states = []
@@ -464,17 +453,11 @@ def main():
                            edge_note=s["edge_why"] or None) for s in seq],
             rays=out_rays))
 
-    cmd = "/usr/bin/python3 tools/reference_trace.py " + " ".join(sys.argv[1:])
     doc = {
         "provenance": {
             "what": "independent real-ray trace of the schematic eyes of eye-models.json, surface by surface",
             "script": "tools/reference_trace.py",
-            "command": cmd.strip(),
-            "input_file": args.input,
-            "input_sha256": hashlib.sha256(raw).hexdigest(),
-            "date_utc": datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat(),
-            "python": platform.python_version(),
-            "numpy": np.__version__,
+            **reference_io.run_provenance("tools/reference_trace.py", args.input, raw, np.__version__),
             "independence": "written from the prescriptions and formulas of the input file only; eyetrace's code "
                             "and data/eyes files were not used",
             "method": __doc__[__doc__.index("Conventions (those"):].strip(),
@@ -487,13 +470,7 @@ def main():
         "states": out_states,
     }
     text = json.dumps(doc, indent=1)
-    text = compact_vectors(text) + "\n"
-    if args.output == "-":
-        sys.stdout.write(text)
-    else:
-        os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
-        with open(args.output, "w") as f:
-            f.write(text)
+    reference_io.write_output(compact_vectors(text) + "\n", args.output)
 
 
 def compact_vectors(text):

@@ -95,8 +95,24 @@ constexpr std::array<CieRow, kCieRows> kTable = {{
     {775, 0.000059, 0.000021, 0.000000, 65.0941, 66.80, -10.80, 7.10},
     {780, 0.000042, 0.000015, 0.000000, 63.3828, 65.00, -10.40, 6.80},
 }};
+
+// The luminance sums of core/spectrum.cpp's spectrum_to_xyz, operation for operation (double
+// sums of the float rows, one rounding to float), so the white is the one it would compute.
+constexpr std::array<float, kCieRows> white_of(const std::array<CieRow, kCieRows>& t) {
+  double y = 0, y_sum = 0;
+  for (const CieRow& r : t) {
+    y += double(r.y) * r.d65;
+    y_sum += r.y;
+  }
+  const float luminance = float(y / y_sum);
+  std::array<float, kCieRows> w{};
+  for (int i = 0; i < kCieRows; ++i) w[i] = t[i].d65 / luminance;
+  return w;
+}
 }  // namespace
 
 const std::array<CieRow, kCieRows>& cie_table() { return kTable; }
+
+constexpr std::array<float, kCieRows> kCieWhite = white_of(kTable);
 
 }  // namespace eyetrace

@@ -18,4 +18,10 @@ inline constexpr float kCieLambdaMin = 380.f, kCieLambdaStep = 5.f, kCieLambdaMa
 
 const std::array<CieRow, kCieRows>& cie_table();
 
+// D65 divided by its luminance (Y in the film's normalisation, core/spectrum.h: the equal-energy
+// spectrum 1 has Y = 1) at the table's rows: the colour space's white as an emission of
+// luminance 1, which every RGB light multiplies by at every wavelength. The compiler computes
+// it, so reading it costs no function-local static's guard and no initialisation order.
+extern const std::array<float, kCieRows> kCieWhite;
+
 }  // namespace eyetrace

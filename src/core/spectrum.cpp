@@ -10,17 +10,8 @@ namespace {
 
 const CieRow& row(int i) { return cie_table()[i]; }
 
-// D65 divided by its luminance (Y of the table's D65 in the film's normalisation).
-const SpectrumSamples& white_samples() {
-  static const SpectrumSamples w = [] {
-    SpectrumSamples d{};
-    for (int i = 0; i < kCieRows; ++i) d[i] = row(i).d65;
-    const float y = spectrum_to_xyz(d).y;
-    for (float& v : d) v /= y;
-    return d;
-  }();
-  return w;
-}
+// D65 divided by its luminance (core/cie_tables.h).
+const SpectrumSamples& white_samples() { return kCieWhite; }
 
 // Linear interpolation in a table sampled at the CIE rows; 0 outside [380, 780] nm.
 float cie_interpolate(const SpectrumSamples& s, float lambda) {
@@ -190,8 +181,12 @@ float interpolate_spectrum(std::span<const float> lambda, std::span<const float>
   if (n == 0) return 0.f;
   if (l <= lambda[0]) return value[0];
   if (l >= lambda[n - 1]) return value[n - 1];
-  size_t j = 0;
-  while (lambda[j + 1] < l) ++j;
+  // Binary search (tables are hundreds of points, read at every wavelength of every sample):
+  // the first point not below l, whose left neighbour starts the segment. That is the segment
+  // the former linear scan found, also when l is a point (t = 1 on the segment to its left),
+  // so results are bit for bit the same. A NaN l compares false everywhere: segment 0, NaN.
+  const size_t i = size_t(std::lower_bound(lambda.begin(), lambda.begin() + n, l) - lambda.begin());
+  const size_t j = std::max<size_t>(i, 1) - 1;
   float t = (l - lambda[j]) / (lambda[j + 1] - lambda[j]);
   return (1.f - t) * value[j] + t * value[j + 1];
 }

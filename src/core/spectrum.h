@@ -94,7 +94,8 @@ RGB sampled_to_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda);
 using SpectrumSamples = std::array<float, kCieRows>;
 // XYZ of an emission spectrum, scaled so that the equal-energy spectrum 1 has Y = 1.
 Vec3 spectrum_to_xyz(const SpectrumSamples& s);
-// Piecewise linear through (lambda, value) points, constant beyond the ends.
+// Piecewise linear through (lambda, value) points, constant beyond the ends; lambda_nm must
+// increase (binary search).
 float interpolate_spectrum(std::span<const float> lambda_nm, std::span<const float> values, float l_nm);
 // Planck's law (W sr^-1 m^-3), for blackbody emitters.
 double planck(double lambda_nm, double kelvin);

@@ -84,8 +84,8 @@ std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) 
   const PluginParams p(ctx.params, conductor_material_spec(), "conductor");
   check_constant(ctx.params, "eta", false);
   check_constant(ctx.params, "k", true);
-  const SpectrumTexture* eta = ctx.textures.spectrum_param(p, "eta");
-  const SpectrumTexture* k = ctx.textures.spectrum_param(p, "k");
+  const SpectrumTexture* eta = ctx.textures.spectrum_param(p, "eta", SpectrumType::Unbounded);
+  const SpectrumTexture* k = ctx.textures.spectrum_param(p, "k", SpectrumType::Unbounded);
   const SpectrumTexture* reflectance = ctx.textures.spectrum_param(p, "reflectance");
   if (reflectance && (eta || k)) p.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
   if (!reflectance) {

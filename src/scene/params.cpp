@@ -113,7 +113,9 @@ std::optional<SpectrumValue> ParameterList::get_spectrum(const std::string& name
   if (t == "rgb") lookup(name, "rgb", 3);
   p->used = true;
   check_numbers(*p);
-  return spectrum_param_value(*p, type);
+  SpectrumValue v = spectrum_param_value(*p, type);
+  if (type == SpectrumType::Albedo && v.rgb) warn_if_not_reflectance(*p, *v.rgb);
+  return v;
 }
 
 float ParameterList::get_spectrum_at(const std::string& name, float lambda_nm, float def) const {

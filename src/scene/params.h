@@ -44,7 +44,8 @@ class ParameterList {
   Vec3 get_point3(const std::string& name, const Vec3& def) const;
   Vec3 get_vector3(const std::string& name, const Vec3& def) const;
   // An "rgb", "spectrum" or "blackbody" parameter; nullopt if absent. `type` is what the
-  // plugin uses it as (a spectrum given as such that is an Illuminant is normalised).
+  // plugin uses it as (a spectrum given as such that is an Illuminant is normalised; an RGB
+  // read as an Albedo outside [0, 1] is warned about, scene/spectrum_param.h).
   std::optional<SpectrumValue> get_spectrum(const std::string& name, SpectrumType type) const;
   // A "spectrum", "rgb" (its green value) or "float" parameter at one wavelength; def if absent.
   float get_spectrum_at(const std::string& name, float lambda_nm, float def) const;

@@ -68,6 +68,18 @@ SpectrumValue spectrum_param_value(const Param& p, SpectrumType type) {
   return {std::nullopt, Spectrum::tabulated(std::move(pairs.lambda), std::move(pairs.value), type)};
 }
 
+void warn_if_not_reflectance(const Param& p, const RGB& rgb) {
+  const RGB clamped = glm::clamp(rgb, RGB(0.f), RGB(1.f));
+  if (clamped == rgb) return;
+  const char* why = "is read as a reflectance, which lies in [0, 1]";
+  if (p.canonical_type() == "spectrum")  // a constant spectrum c, kept as RGB (c, c, c)
+    warn(p.loc,
+         fmt::format("parameter \"{}\": the constant spectrum {} {}; clamped to {}", p.name, rgb.r, why, clamped.r));
+  else
+    warn(p.loc, fmt::format("parameter \"{}\": RGB ({}, {}, {}) {}; clamped to ({}, {}, {})", p.name, rgb.r, rgb.g,
+                            rgb.b, why, clamped.r, clamped.g, clamped.b));
+}
+
 float spectrum_param_at(const Param& p, float lambda_nm) {
   std::string type = p.canonical_type();
   if (type == "float") {

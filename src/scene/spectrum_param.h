@@ -13,5 +13,10 @@ namespace eyetrace {
 SpectrumValue spectrum_param_value(const Param& p, SpectrumType type);
 // A refractive index at 550 nm, say; "rgb" gives its green channel.
 float spectrum_param_at(const Param& p, float lambda_nm);
+// An RGB read as a reflectance (SpectrumType::Albedo) is clamped to [0, 1] when it becomes a
+// spectrum (core/spectrum.h); a component outside that range is no reflectance at all, so the
+// clamp is announced: a warning naming the file, line, column and parameter (an error with
+// --strict). pbrt-v4 stops with an error there instead.
+void warn_if_not_reflectance(const Param& p, const RGB& rgb);
 
 }  // namespace eyetrace

@@ -102,28 +102,31 @@ const FloatTexture* TextureStore::float_param(const PluginParams& params, const 
   return spec.has_default ? keep(std::make_unique<ConstantFloatTexture>(float(spec.default_numbers.at(0)))) : nullptr;
 }
 
-const SpectrumTexture* TextureStore::spectrum_param(const PluginParams& params, const std::string& name) {
-  if (params.has(name)) return spectrum_param_or_null(params.list(), name);
+const SpectrumTexture* TextureStore::spectrum_param(const PluginParams& params, const std::string& name,
+                                                    SpectrumType use) {
+  if (params.has(name)) return spectrum_param_or_null(params.list(), name, use);
   const ParamSpec& spec = *params.spec().find(name);
   return spec.has_default ? keep(std::make_unique<ConstantSpectrumTexture>(RGB(float(spec.default_numbers.at(0)))))
                           : nullptr;
 }
 
 const SpectrumTexture* TextureStore::spectrum_param(const ParameterList& params, const std::string& name,
-                                                    const RGB& def) {
-  if (const SpectrumTexture* t = spectrum_param_or_null(params, name)) return t;
+                                                    const RGB& def, SpectrumType use) {
+  if (const SpectrumTexture* t = spectrum_param_or_null(params, name, use)) return t;
   return keep(std::make_unique<ConstantSpectrumTexture>(def));
 }
 
-const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList& params, const std::string& name) {
+const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList& params, const std::string& name,
+                                                            SpectrumType use) {
   if (is_texture_ref(params, name)) {
     std::string tex = params.get_texture(name);
     if (const SpectrumTexture* t = named_spectrum(tex)) return t;
     if (const FloatTexture* f = named_float(tex)) return keep(std::make_unique<FloatAsSpectrumTexture>(f));
     unknown_texture(params, name, tex, "spectrum", names_of(spectra_));
   }
-  // A texture's value is a reflectance-like shape: spectra given as such are not normalised.
-  std::optional<SpectrumValue> v = params.get_spectrum(name, SpectrumType::Albedo);
+  // A texture's value is a shape, never an emission: spectra given as such are not normalised.
+  // The constant texture keeps both readings of an RGB; `use` only decides the range check.
+  std::optional<SpectrumValue> v = params.get_spectrum(name, use);
   if (!v) return nullptr;
   if (v->rgb) return keep(std::make_unique<ConstantSpectrumTexture>(*v->rgb));
   return keep(std::make_unique<ConstantSpectrumTexture>(v->spectrum));

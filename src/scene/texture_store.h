@@ -31,12 +31,19 @@ class TextureStore {
   // Like float_param but null when absent.
   const FloatTexture* float_param_or_null(const ParameterList& params, const std::string& name);
   // An "rgb"/"spectrum"/"blackbody" constant or "texture NAME" reference; `def` when absent.
-  const SpectrumTexture* spectrum_param(const ParameterList& params, const std::string& name, const RGB& def);
-  const SpectrumTexture* spectrum_param_or_null(const ParameterList& params, const std::string& name);
+  // `use` is what the caller reads it as: an RGB constant read as a reflectance (Albedo) and
+  // outside [0, 1] is clamped with a warning naming the parameter (scene/spectrum_param.h);
+  // indices of refraction say Unbounded. Texture plugins' constants are checked as
+  // reflectances, their usual use.
+  const SpectrumTexture* spectrum_param(const ParameterList& params, const std::string& name, const RGB& def,
+                                        SpectrumType use = SpectrumType::Albedo);
+  const SpectrumTexture* spectrum_param_or_null(const ParameterList& params, const std::string& name,
+                                                SpectrumType use = SpectrumType::Albedo);
 
   // The same for a declared parameter: its default is the table's (null when it has none).
   const FloatTexture* float_param(const PluginParams& params, const std::string& name);
-  const SpectrumTexture* spectrum_param(const PluginParams& params, const std::string& name);
+  const SpectrumTexture* spectrum_param(const PluginParams& params, const std::string& name,
+                                        SpectrumType use = SpectrumType::Albedo);
 
   // Opaque handle to the shared OpenImageIO TextureSystem (created on first call).
   void* texture_system();

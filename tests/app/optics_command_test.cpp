@@ -2,35 +2,22 @@
 // errors, and the --plot figure (spot diagram above the chromatic refraction curve).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/eyetrace_process.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
 
-std::string run(const std::string& args, int* status, bool with_stderr = true) {
-  const std::string command =
-      std::string(EYETRACE_BINARY_DIR "/bin/eyetrace ") + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  const int s = pclose(pipe);
-  *status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  return out;
-}
+using test::run_eyetrace;
 
 TEST(OpticsCommand, ChromaticJson) {
-  int status = -1;
-  const nlohmann::json r = nlohmann::json::parse(run("optics --json --camera 'Camera \"kooijman\"'", &status, false));
-  ASSERT_EQ(status, 0);
+  const test::RunResult run = run_eyetrace("optics --json --camera 'Camera \"kooijman\"'", false);
+  ASSERT_EQ(run.status, 0);
+  const nlohmann::json r = nlohmann::json::parse(run.output);
   ASSERT_EQ(r["chromatic_refraction"].size(), 31u);
   EXPECT_EQ(r["chromatic_refraction"][0]["wavelength_nm"].get<double>(), 400.0);
   EXPECT_TRUE(r["chromatic_refraction"][0].contains("refraction_diopters"));
@@ -39,10 +26,10 @@ TEST(OpticsCommand, ChromaticJson) {
   ASSERT_EQ(r["tca"]["fields"].size(), 5u);
   for (const auto& f : r["tca"]["fields"]) EXPECT_TRUE(f["tca_arcmin"].is_number()) << f.dump();
 
-  const nlohmann::json narrow = nlohmann::json::parse(
-      run("optics --json --chromatic-range 450,650 --chromatic-step 50 --tca-wavelengths 470,620 --fields 20", &status,
-          false));
-  ASSERT_EQ(status, 0);
+  const test::RunResult run_narrow = run_eyetrace(
+      "optics --json --chromatic-range 450,650 --chromatic-step 50 --tca-wavelengths 470,620 --fields 20", false);
+  ASSERT_EQ(run_narrow.status, 0);
+  const nlohmann::json narrow = nlohmann::json::parse(run_narrow.output);
   ASSERT_EQ(narrow["chromatic_refraction"].size(), 5u);
   EXPECT_EQ(narrow["chromatic_refraction"][4]["wavelength_nm"].get<double>(), 650.0);
   EXPECT_EQ(narrow["tca"]["short_wavelength_nm"].get<double>(), 470.0);
@@ -50,9 +37,9 @@ TEST(OpticsCommand, ChromaticJson) {
 }
 
 TEST(OpticsCommand, ChromaticText) {
-  int status = -1;
-  const std::string text = run("optics --camera 'Camera \"gullstrand\"'", &status);
-  ASSERT_EQ(status, 0) << text;
+  const test::RunResult run = run_eyetrace("optics --camera 'Camera \"gullstrand\"'");
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string& text = run.output;
   EXPECT_NE(text.find("dispersion (assumed"), std::string::npos) << text;
   EXPECT_NE(text.find("chromatic difference of refraction, 400-700 nm every 10 nm"), std::string::npos) << text;
   EXPECT_NE(text.find("transverse chromatic aberration 450-650 nm"), std::string::npos) << text;
@@ -70,10 +57,9 @@ TEST(OpticsCommand, BadWavelengthsNameTheFlag) {
       {"--tca-wavelengths 650,450", "--tca-wavelengths \"650,450\""},
   };
   for (auto [args, expected] : cases) {
-    int status = -1;
-    const std::string out = run(std::string("optics ") + args, &status);
-    EXPECT_EQ(status, 1) << args;
-    EXPECT_NE(out.find(expected), std::string::npos) << args << ": " << out;
+    const test::RunResult run = run_eyetrace(std::string("optics ") + args);
+    EXPECT_EQ(run.status, 1) << args;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << args << ": " << run.output;
   }
 }
 
@@ -82,9 +68,8 @@ TEST(OpticsCommand, PlotHasSpotsAndCurve) {
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/navarro.png";
   std::filesystem::remove(path);
-  int status = -1;
-  const std::string out = run("optics --fields 0,20 --plot " + path, &status);
-  ASSERT_EQ(status, 0) << out;
+  const test::RunResult run = run_eyetrace("optics --fields 0,20 --plot " + path);
+  ASSERT_EQ(run.status, 0) << run.output;
   const Image image = read_image(path);
   EXPECT_EQ(image.width, 720);         // the curve's width (two 256-pixel spot panels are narrower)
   EXPECT_EQ(image.height, 256 + 400);  // spot diagram above, curve below

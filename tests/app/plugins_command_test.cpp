@@ -2,34 +2,22 @@
 // `--markdown` prints one directive's table (the docs' tables are compared by docs_generated).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
+#include "../support/eyetrace_process.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 namespace {
 
-std::string run(const std::string& args, int* status) {
-  const std::string command = std::string(EYETRACE_BINARY_DIR "/bin/eyetrace ") + args + " 2>&1";
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  const int s = pclose(pipe);
-  *status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  return out;
-}
+using test::run_eyetrace;
 
 TEST(PluginsCommand, JsonListsEveryRegisteredPluginAndParameter) {
-  int status = -1;
-  const nlohmann::json all = nlohmann::json::parse(run("plugins --json", &status));
-  ASSERT_EQ(status, 0);
+  const test::RunResult run = run_eyetrace("plugins --json");
+  ASSERT_EQ(run.status, 0);
+  const nlohmann::json all = nlohmann::json::parse(run.output);
   std::set<std::string> listed;
   size_t params = 0;
   for (const auto& g : all) {
@@ -42,12 +30,10 @@ TEST(PluginsCommand, JsonListsEveryRegisteredPluginAndParameter) {
 }
 
 TEST(PluginsCommand, MarkdownOfADirectiveAndErrors) {
-  int status = -1;
-  const std::string md = run("plugins --markdown Shape", &status);
-  EXPECT_EQ(status, 0);
-  EXPECT_NE(md.find("| `sphere` | `float radius` 1 (scene units, (0, inf))"), std::string::npos) << md;
-  run("plugins --markdown Nonsense", &status);
-  EXPECT_EQ(status, 1);
+  const test::RunResult md = run_eyetrace("plugins --markdown Shape");
+  EXPECT_EQ(md.status, 0);
+  EXPECT_NE(md.output.find("| `sphere` | `float radius` 1 (scene units, (0, inf))"), std::string::npos) << md.output;
+  EXPECT_EQ(run_eyetrace("plugins --markdown Nonsense").status, 1);
 }
 
 }  // namespace

@@ -3,34 +3,27 @@
 // the same image an uninterrupted render gives, bit for bit. The program is started as a
 // child process; signals are sent once its first checkpoint exists (never after a fixed
 // sleep), so the tests hold on a loaded machine.
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "../support/eyetrace_process.h"
 #include "render/image_io.h"
-
-extern char** environ;
 
 namespace eyetrace {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kBinary = EYETRACE_BINARY_DIR "/bin/eyetrace";
 const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
 
 // A 32x32 Cornell box at 256 samples per pixel: about a second of one thread (a minute under
@@ -62,66 +55,16 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-// Starts the program with `args`, stdout and stderr to `log`. Returns the child's pid.
-pid_t spawn(const std::vector<std::string>& args, const std::string& log) {
-  std::vector<char*> argv;
-  argv.push_back(const_cast<char*>(kBinary.c_str()));
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = -1;
-  int rc = posix_spawn(&pid, kBinary.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0 ? pid : -1;
-}
-
-// The exit status, or 1000 + signal when the child was killed by one.
-int wait_exit(pid_t pid) {
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
-}
-
-int run(const std::vector<std::string>& args, const std::string& log) {
-  pid_t pid = spawn(args, log);
-  return pid > 0 ? wait_exit(pid) : -1;
-}
-
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
   args.insert(args.end(), more.begin(), more.end());
   return args;
 }
 
-// Waits (up to two minutes: the machine may be busy) until `path` exists or the child exits.
-bool wait_for_file(const std::string& path, pid_t pid) {
-  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (fs::exists(path)) return true;
-    int status;
-    if (waitpid(pid, &status, WNOHANG) == pid) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
-
 // Renders with checkpoints after every pass of 8 samples, and sends `sig` once the first
-// checkpoint is on disk. Returns the exit status.
+// checkpoint is on disk. Returns the exit status (1000 + a signal that killed it).
 int render_and_interrupt(const std::string& output, int sig, const std::string& log) {
-  if (!fs::exists(kBinary)) {
-    ADD_FAILURE() << kBinary << " is not built (build the eyetrace target first)";
-    return -1;
-  }
-  pid_t pid = spawn(with(render_args(output), {"--checkpoint", "0", "--pass-samples", "8"}), log);
-  EXPECT_GT(pid, 0);
-  if (pid <= 0) return -1;
-  bool checkpointed = wait_for_file(output + ".state", pid);
-  EXPECT_TRUE(checkpointed) << "no checkpoint appeared; log:\n" << read_text(log);
-  if (checkpointed) kill(pid, sig);
-  return wait_exit(pid);
+  return test::run_eyetrace_and_signal(with(render_args(output), {"--checkpoint", "0", "--pass-samples", "8"}), log,
+                                       output + ".state", sig);
 }
 
 bool all_finite(const Image& img) {
@@ -159,9 +102,9 @@ TEST(RenderInterrupt, SigintWritesPartialImageAndResumeMatchesUninterruptedRende
   expect_interrupted_output(out, dir.file("interrupted.log"));
 
   // Resume with another thread count and adaptive passes: neither may change a bit.
-  EXPECT_EQ(run(with(render_args(out, "256", "7", "2"), {"--resume"}), dir.file("resume.log")), 0)
+  EXPECT_EQ(test::run_eyetrace_logged(with(render_args(out, "256", "7", "2"), {"--resume"}), dir.file("resume.log")), 0)
       << read_text(dir.file("resume.log"));
-  EXPECT_EQ(run(render_args(ref), dir.file("ref.log")), 0) << read_text(dir.file("ref.log"));
+  EXPECT_EQ(test::run_eyetrace_logged(render_args(ref), dir.file("ref.log")), 0) << read_text(dir.file("ref.log"));
   EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "0");
   EXPECT_EQ(read_image_attribute(out, "eyetrace:samples_per_pixel"), "256");
   EXPECT_FALSE(fs::exists(out + ".state")) << "a finished render leaves no state behind";
@@ -180,18 +123,18 @@ TEST(RenderInterrupt, SigtermWritesPartialImageAndExits143) {
 TEST(RenderInterrupt, ResumeRefusesMissingOrMismatchedState) {
   TempDir dir;
   std::string out = dir.file("out.exr");
-  EXPECT_EQ(run(with(render_args(out), {"--resume"}), dir.file("missing.log")), 1);
+  EXPECT_EQ(test::run_eyetrace_logged(with(render_args(out), {"--resume"}), dir.file("missing.log")), 1);
   EXPECT_NE(read_text(dir.file("missing.log")).find("render state \"" + out + ".state\" not found"), std::string::npos)
       << read_text(dir.file("missing.log"));
   EXPECT_FALSE(fs::exists(out));
 
   EXPECT_EQ(render_and_interrupt(out, SIGINT, dir.file("interrupted.log")), 130);
   const std::string state = read_text(out + ".state");
-  EXPECT_EQ(run(with(render_args(out, "64"), {"--resume"}), dir.file("spp.log")), 1);
+  EXPECT_EQ(test::run_eyetrace_logged(with(render_args(out, "64"), {"--resume"}), dir.file("spp.log")), 1);
   EXPECT_NE(read_text(dir.file("spp.log")).find("is for 256 samples per pixel, this render asks for 64"),
             std::string::npos)
       << read_text(dir.file("spp.log"));
-  EXPECT_EQ(run(with(render_args(out, "256", "8"), {"--resume"}), dir.file("seed.log")), 1);
+  EXPECT_EQ(test::run_eyetrace_logged(with(render_args(out, "256", "8"), {"--resume"}), dir.file("seed.log")), 1);
   EXPECT_NE(read_text(dir.file("seed.log")).find("was made for another scene or other options"), std::string::npos)
       << read_text(dir.file("seed.log"));
   EXPECT_EQ(read_text(out + ".state"), state) << "a refused resume must not touch the state";

@@ -3,34 +3,19 @@
 // that stops it before anything is written.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "../support/eyetrace_process.h"
 
 namespace eyetrace {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  const std::string command = std::string(EYETRACE_BINARY_DIR "/bin/eyetrace ") + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using test::run_eyetrace;
+using test::RunResult;
 
 fs::path write(const std::string& name, const std::string& text) {
   const fs::path path = fs::temp_directory_path() / name;
@@ -42,7 +27,7 @@ TEST(CommandLine, SeveralSceneErrorsArePrintedAndNothingIsWritten) {
   const fs::path scene = write("eyetrace-strict-errors.pbrt", "WorldBegin\nLightSource \"pointt\"\nShape \"spher\"\n");
   const fs::path out = fs::temp_directory_path() / "eyetrace-strict-errors.exr";
   fs::remove(out);
-  const Result r = run("render -q " + scene.string() + " -o " + out.string());
+  const RunResult r = run_eyetrace("render -q " + scene.string() + " -o " + out.string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(r.output, scene.string() + ":3:1: error: unsupported shape \"spher\" (did you mean \"sphere\"?); " +
                           "eyetrace supports: bilinearmesh, disk, plymesh, sphere, trianglemesh\n" + scene.string() +
@@ -59,13 +44,13 @@ TEST(CommandLine, StrictMakesWarningsFatal) {
   const fs::path out = fs::temp_directory_path() / "eyetrace-strict-warning.exr";
   fs::remove(out);
   const std::string base = "render " + scene.string() + " -o " + out.string() + " --resolution 8x8 --spp 1";
-  Result r = run(base);
+  RunResult r = run_eyetrace(base);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find(":1:1: warning: \"regularize\" is not supported; ignored"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(out));
   fs::remove(out);
 
-  r = run(base + " --strict");
+  r = run_eyetrace(base + " --strict");
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find(":1:1: error: \"regularize\" is not supported; ignored (a warning, fatal with --strict)"),
             std::string::npos)
@@ -75,7 +60,7 @@ TEST(CommandLine, StrictMakesWarningsFatal) {
 }
 
 TEST(CommandLine, BadOptionsExitTwo) {
-  const Result r = run("render scene.pbrt --resolution 0x3");
+  const RunResult r = run_eyetrace("render scene.pbrt --resolution 0x3");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("--resolution: \"0x3\": expected WxH"), std::string::npos) << r.output;
 }

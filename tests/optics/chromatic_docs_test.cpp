@@ -1,14 +1,13 @@
 // Keeps the chromatic table of docs/eye-models.md honest: it must equal what the code computes
 // now. On a mismatch the test prints the fresh table; paste it over the old one in the doc.
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../support/eye_models_doc.h"
 #include "optics/chromatic.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
@@ -24,14 +23,8 @@ std::string chromatic_table() {
       "| preset | dispersion | refraction D at 400 / ref / 700 nm | LCA 400–700 nm D | TCA 450–650 nm arcmin at "
       "10 / 20 / 30° | at 20°: retina µm, spot-centroid TCA arcmin |\n"
       "|---|---|---|---|---|---|\n";
-  const std::pair<const char*, const char*> presets[] = {
-      {"gullstrand", ""},    {"legrand", ""},       {"kooijman", ""}, {"navarro", ""},
-      {"navarro", "wu2011"}, {"escudero-sanz", ""}, {"arizona", ""}};
-  for (auto [model, variant] : presets) {
-    EyeOptions o;
-    o.model = model;
-    o.variant = variant;
-    const Prescription p = make_eye(o);
+  for (const test::EyePreset& preset : test::kDocPresets) {
+    const Prescription p = test::make_preset_eye(preset);
     const auto curve = chromatic_refraction(p, {});
     std::string tca;
     TransverseChromatic at20;
@@ -41,8 +34,8 @@ std::string chromatic_table() {
       tca += (tca.empty() ? "" : " / ") + fmt::format("{:+.2f}", t.tca_arcmin);
       if (field == 20.0) at20 = t;
     }
-    out += fmt::format("| {}{} | {}{} | {} / {} ({:g}) / {} | {:.3f} | {} | {:+.1f}, {:+.2f} |\n", model,
-                       *variant ? std::string(" ") + variant : "", to_string(p.media.front().dispersion.law),
+    out += fmt::format("| {} | {}{} | {} / {} ({:g}) / {} | {:.3f} | {} | {:+.1f}, {:+.2f} |\n",
+                       test::preset_label(preset), to_string(p.media.front().dispersion.law),
                        p.dispersion_assumed ? ", **assumed**" : "", signed3(curve.front().refraction_D),
                        signed3(refraction_D(p)), p.reference_wavelength_nm, signed3(curve.back().refraction_D),
                        curve.back().refraction_D - curve.front().refraction_D, tca, at20.retina_um,
@@ -51,17 +44,7 @@ std::string chromatic_table() {
   return out;
 }
 
-std::string read_doc() {
-  std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/docs/eye-models.md");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-TEST(EyeModelsDoc, ChromaticTableIsCurrent) {
-  const std::string table = chromatic_table();
-  EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
-}
+TEST(EyeModelsDoc, ChromaticTableIsCurrent) { EXPECT_TRUE(test::table_is_in_eye_models_doc(chromatic_table())); }
 
 }  // namespace
 }  // namespace eyetrace::optics

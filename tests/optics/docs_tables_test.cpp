@@ -1,12 +1,11 @@
 // Keeps docs/eye-models.md honest: its generated tables must equal what the code computes now.
 // On a mismatch the test prints the fresh tables; paste them between the markers in the doc.
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../support/eye_models_doc.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
 #include "optics/spot.h"
@@ -19,26 +18,20 @@ std::string preset_table() {
       "| preset | power D | refraction D | axial length | F | F′ | H | H′ | N | N′ | entrance pupil (×) | exit pupil "
       "(×) | retina R | RMS spot µm at 0/10/20/30/40° |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const std::pair<const char*, const char*> presets[] = {
-      {"gullstrand", ""},    {"legrand", ""},       {"kooijman", ""}, {"navarro", ""},
-      {"navarro", "wu2011"}, {"escudero-sanz", ""}, {"arizona", ""}};
-  for (auto [model, variant] : presets) {
-    EyeOptions o;
-    o.model = model;
-    o.variant = variant;
-    const Prescription p = make_eye(o);
+  for (const test::EyePreset& preset : test::kDocPresets) {
+    const Prescription p = test::make_preset_eye(preset);
     const ParaxialData d = paraxial_analysis(p);
     std::string spots;
     for (double f : {0.0, 10.0, 20.0, 30.0, 40.0})
       spots += (spots.empty() ? "" : " / ") + fmt::format("{:.1f}", trace_spot(p, {f}).rms_radius_um);
     const Surface& retina = p.surfaces.back();
     out += fmt::format(
-        "| {}{} | {:.3f} | {:+.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} (×{:.3f}) | "
+        "| {} | {:.3f} | {:+.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} (×{:.3f}) | "
         "{:.3f} (×{:.3f}) | {} | {} |\n",
-        model, *variant ? std::string(" ") + variant : "", d.power_D, d.refraction_D + 0.0, d.axial_length_mm,
-        d.front_focal_point_mm, d.back_focal_point_mm, d.front_principal_point_mm, d.back_principal_point_mm,
-        d.front_nodal_point_mm, d.back_nodal_point_mm, d.entrance_pupil.position_mm, d.entrance_pupil.magnification,
-        d.exit_pupil.position_mm, d.exit_pupil.magnification,
+        test::preset_label(preset), d.power_D, d.refraction_D + 0.0, d.axial_length_mm, d.front_focal_point_mm,
+        d.back_focal_point_mm, d.front_principal_point_mm, d.back_principal_point_mm, d.front_nodal_point_mm,
+        d.back_nodal_point_mm, d.entrance_pupil.position_mm, d.entrance_pupil.magnification, d.exit_pupil.position_mm,
+        d.exit_pupil.magnification,
         retina.profile.is_flat() ? std::string("flat") : fmt::format("{:.1f}", 1.0 / retina.profile.curvature), spots);
   }
   return out;
@@ -69,21 +62,10 @@ std::string accommodation_table() {
   return out;
 }
 
-std::string read_doc() {
-  std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/docs/eye-models.md");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-TEST(EyeModelsDoc, PresetTableIsCurrent) {
-  const std::string table = preset_table();
-  EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
-}
+TEST(EyeModelsDoc, PresetTableIsCurrent) { EXPECT_TRUE(test::table_is_in_eye_models_doc(preset_table())); }
 
 TEST(EyeModelsDoc, AccommodationTableIsCurrent) {
-  const std::string table = accommodation_table();
-  EXPECT_NE(read_doc().find(table), std::string::npos) << "docs/eye-models.md is stale; fresh table:\n" << table;
+  EXPECT_TRUE(test::table_is_in_eye_models_doc(accommodation_table()));
 }
 
 }  // namespace

@@ -3,11 +3,7 @@
 // documented clamp; never in a crash, an exception other than SceneError, or a NaN in the image.
 // In-process through parse_scene_string + build_render_setup; whole-program behaviour (exit
 // codes, output files) through the built binary. docs/robustness.md lists every case.
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -25,12 +21,11 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/eyetrace_process.h"
 #include "core/error.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
-
-extern char** environ;
 
 namespace eyetrace {
 namespace {
@@ -679,39 +674,14 @@ Shape "sphere" "float radius" 0.7
 // ---------------------------------------------------------------------------------------
 // The program: exit codes, messages and output files
 
-struct RunResult {
-  int exit_code = -1;  // 128 + signal when killed by one
-  std::string output;  // stdout and stderr
-};
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-RunResult run_eyetrace(const std::string& args) {
-  RunResult r;
-  const std::string binary = EYETRACE_BINARY_DIR "/bin/eyetrace";
-  if (!fs::exists(binary)) {
-    ADD_FAILURE() << binary << " is not built (build the eyetrace target first)";
-    return r;
-  }
-  std::string command = shell_quote(binary) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
-}
+using test::run_eyetrace;
+using test::RunResult;
+using test::shell_quote;
 
 // Runs several command lines at once: most of a run is the program loading its libraries.
 std::vector<RunResult> run_eyetrace_all(const std::vector<std::string>& args) {
   std::vector<std::future<RunResult>> runs;
-  for (const std::string& a : args) runs.push_back(std::async(std::launch::async, run_eyetrace, a));
+  for (const std::string& a : args) runs.push_back(std::async(std::launch::async, [a] { return run_eyetrace(a); }));
   std::vector<RunResult> results;
   for (auto& r : runs) results.push_back(r.get());
   return results;
@@ -765,7 +735,7 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
   for (const Case& c : cases) args.push_back(c.args);
   std::vector<RunResult> results = run_eyetrace_all(args);
   for (size_t i = 0; i < cases.size(); ++i) {
-    EXPECT_EQ(results[i].exit_code, cases[i].exit_code) << cases[i].args << "\n" << results[i].output;
+    EXPECT_EQ(results[i].status, cases[i].exit_code) << cases[i].args << "\n" << results[i].output;
     EXPECT_NE(results[i].output.find(cases[i].message), std::string::npos) << cases[i].args << "\n"
                                                                            << results[i].output;
   }
@@ -778,7 +748,7 @@ TEST(HostileProgram, MissingOutputDirectoryIsCreated) {
   TempDir dir;
   RunResult r =
       run_eyetrace("render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("new/sub/out.png")));
-  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir.file("new/sub/out.png")));
 }
 
@@ -800,7 +770,7 @@ TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
   const int exit_codes[] = {1, 1, 2, 1};  // 2: a bad command line
   std::vector<RunResult> results = run_eyetrace_all(std::vector<std::string>(std::begin(runs), std::end(runs)));
   for (size_t i = 0; i < results.size(); ++i)
-    EXPECT_EQ(results[i].exit_code, exit_codes[i]) << runs[i] << "\n" << results[i].output;
+    EXPECT_EQ(results[i].status, exit_codes[i]) << runs[i] << "\n" << results[i].output;
   EXPECT_EQ(read_file(output), precious);
   // Nothing else (no temporary file) is left behind.
   int files = 0;
@@ -822,29 +792,6 @@ std::string write_spectral_cornell(const TempDir& dir, int buckets) {
   return path;
 }
 
-// Starts eyetrace with `args` (stdout and stderr to `log`) without waiting for it.
-pid_t spawn_eyetrace(const std::vector<std::string>& args, const std::string& log) {
-  const std::string binary = EYETRACE_BINARY_DIR "/bin/eyetrace";
-  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = -1;
-  const int rc = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0 ? pid : -1;
-}
-
-int wait_exit(pid_t pid) {
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 // A spectral render stopped by SIGINT after its first checkpoint resumes to the uninterrupted
 // render's image, every bucket bit for bit; a state is refused by a film of another bucket
 // count (and kept); a PNG output is refused.
@@ -858,19 +805,9 @@ TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
   };
   std::vector<std::string> first = args(scene16, out, "1");
   for (const char* a : {"--checkpoint", "0", "--pass-samples", "8"}) first.push_back(a);
-  const pid_t pid = spawn_eyetrace(first, dir.file("first.log"));
-  ASSERT_GT(pid, 0);
-  auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-  bool checkpointed = false;
-  while (!checkpointed && std::chrono::steady_clock::now() < deadline) {
-    checkpointed = fs::exists(out + ".state");
-    int status;
-    if (!checkpointed && waitpid(pid, &status, WNOHANG) == pid) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ASSERT_TRUE(checkpointed) << read_file(dir.file("first.log"));
-  kill(pid, SIGINT);
-  EXPECT_EQ(wait_exit(pid), 130) << read_file(dir.file("first.log"));
+  // 130 is the program's own exit after the signal (being killed by it would be 1000 + 2).
+  EXPECT_EQ(test::run_eyetrace_and_signal(first, dir.file("first.log"), out + ".state", SIGINT), 130)
+      << read_file(dir.file("first.log"));
   ASSERT_TRUE(fs::exists(out + ".state"));
   EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "1");
   const Image partial = read_image(out);
@@ -880,15 +817,15 @@ TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
   const std::string state = read_file(out + ".state");
   RunResult refused = run_eyetrace("render " + shell_quote(scene8) + " --resolution 32x32 --spp 256 --seed 7 -q -o " +
                                    shell_quote(out) + " --resume");
-  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_EQ(refused.status, 1) << refused.output;
   EXPECT_NE(refused.output.find("is for a film with 16 spectral buckets, this render's has 8"), std::string::npos)
       << refused.output;
   EXPECT_EQ(read_file(out + ".state"), state) << "a refused resume must not touch the state";
 
   std::vector<std::string> resume = args(scene16, out, "2");
   resume.push_back("--resume");
-  EXPECT_EQ(wait_exit(spawn_eyetrace(resume, dir.file("resume.log"))), 0) << read_file(dir.file("resume.log"));
-  EXPECT_EQ(wait_exit(spawn_eyetrace(args(scene16, ref, "2"), dir.file("ref.log"))), 0)
+  EXPECT_EQ(test::run_eyetrace_logged(resume, dir.file("resume.log")), 0) << read_file(dir.file("resume.log"));
+  EXPECT_EQ(test::run_eyetrace_logged(args(scene16, ref, "2"), dir.file("ref.log")), 0)
       << read_file(dir.file("ref.log"));
   EXPECT_FALSE(fs::exists(out + ".state"));
   const Image a = read_image(out), b = read_image(ref);
@@ -898,7 +835,7 @@ TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
   EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
 
   RunResult png = run_eyetrace("render -q " + shell_quote(scene16) + " -o " + shell_quote(dir.file("out.png")));
-  EXPECT_EQ(png.exit_code, 1) << png.output;
+  EXPECT_EQ(png.status, 1) << png.output;
   EXPECT_NE(png.output.find("--output \"" + dir.file("out.png") + "\": the spectral film (Film \"spectral\" at "),
             std::string::npos)
       << png.output;
