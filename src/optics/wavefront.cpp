@@ -21,22 +21,6 @@ namespace {
 
 constexpr double kOpenStop_mm = 1e3;
 
-void validate(const WavefrontOptions& o) {
-  if (!(std::abs(o.field_deg) < 85.0))
-    throw OpticsError(fmt::format("wavefront: field {} deg must be within (-85, 85) deg", o.field_deg));
-  if (!(o.object_distance_m > 0.0))
-    throw OpticsError(fmt::format("wavefront: object distance {} m must be positive", o.object_distance_m));
-  if (!(o.wavelength_nm == 0.0 || (o.wavelength_nm >= kMinWavelength_nm && o.wavelength_nm <= kMaxWavelength_nm)))
-    throw OpticsError(fmt::format("wavefront: wavelength {} nm is outside [{}, {}] nm", o.wavelength_nm,
-                                  kMinWavelength_nm, kMaxWavelength_nm));
-  if (!(o.pupil_radius_mm >= 0.0 && o.pupil_radius_mm <= 50.0))
-    throw OpticsError(
-        fmt::format("wavefront: pupil radius {} mm must be in [0, 50] (0 = paraxial)", o.pupil_radius_mm));
-  if (o.grid < 8 || o.grid > 1024) throw OpticsError(fmt::format("wavefront: grid {} must be in [8, 1024]", o.grid));
-  if (o.zernike_order < 2 || o.zernike_order > 12)
-    throw OpticsError(fmt::format("wavefront: Zernike order {} must be in [2, 12]", o.zernike_order));
-}
-
 // One ray's optical path from the object's reference surface (the plane through the chief ray's
 // start perpendicular to the beam for an object at infinity, the source itself otherwise) to
 // the last refracting surface, and the ray there.
@@ -153,6 +137,22 @@ void summarise(const Samples& s, double wave_mm, WavefrontResult& out) {
 }
 
 }  // namespace
+
+void validate(const WavefrontOptions& o) {
+  if (!(std::abs(o.field_deg) < 85.0))
+    throw OpticsError(fmt::format("wavefront: field {} deg must be within (-85, 85) deg", o.field_deg));
+  if (!(o.object_distance_m > 0.0))
+    throw OpticsError(fmt::format("wavefront: object distance {} m must be positive", o.object_distance_m));
+  if (!(o.wavelength_nm == 0.0 || (o.wavelength_nm >= kMinWavelength_nm && o.wavelength_nm <= kMaxWavelength_nm)))
+    throw OpticsError(fmt::format("wavefront: wavelength {} nm is outside [{}, {}] nm", o.wavelength_nm,
+                                  kMinWavelength_nm, kMaxWavelength_nm));
+  if (!(o.pupil_radius_mm >= 0.0 && o.pupil_radius_mm <= 50.0))
+    throw OpticsError(
+        fmt::format("wavefront: pupil radius {} mm must be in [0, 50] (0 = paraxial)", o.pupil_radius_mm));
+  if (o.grid < 8 || o.grid > 1024) throw OpticsError(fmt::format("wavefront: grid {} must be in [8, 1024]", o.grid));
+  if (o.zernike_order < 2 || o.zernike_order > 12)
+    throw OpticsError(fmt::format("wavefront: Zernike order {} must be in [2, 12]", o.zernike_order));
+}
 
 WavefrontResult trace_wavefront(const Prescription& p, const WavefrontOptions& o) {
   validate(o);

@@ -87,6 +87,9 @@ struct WavefrontResult {
   PowerVector paraxial;             // in the entrance-pupil plane (vergence there)
 };
 
+// Throws OpticsError naming the option when one is out of its range.
+void validate(const WavefrontOptions& options);
+
 // Throws OpticsError for invalid options, a chief ray that is lost, or when fewer rays than
 // Zernike terms reach the image (naming the field and the count).
 WavefrontResult trace_wavefront(const Prescription& prescription, const WavefrontOptions& options);
