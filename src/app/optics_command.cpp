@@ -1,8 +1,9 @@
 // `eyetrace optics --camera 'Camera "navarro" ...'`: the optics of the eye (or lens) a Camera
 // directive describes, without rendering: paraxial constants, pupils, real-ray spot sizes and
 // chromatic aberration (dispersion laws, chromatic difference of refraction, transverse
-// chromatic aberration) as text or JSON, and optionally a figure (spot diagram above the
-// refraction-vs-wavelength curve). The front door of the optics library.
+// chromatic aberration) and, with --wave, the wavefront (OPD, Zernike coefficients, refraction)
+// as text or JSON, and optionally a figure (spot diagram above the refraction-vs-wavelength
+// curve). The front door of the optics library.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -33,6 +34,11 @@ struct OpticsArgs {
   std::string chromatic_range = "400,700";  // nm
   std::string chromatic_step;               // nm; empty = 10, or the range's width if smaller
   std::string tca_wavelengths = "450,650";  // nm
+  bool wave = false;
+  std::string wave_pupil;       // entrance-pupil diameter, mm; empty = the paraxial entrance pupil
+  std::string wave_wavelength;  // nm; empty = the camera's
+  std::string wave_grid = "64";
+  std::string zernike_order = "6";
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -104,6 +110,42 @@ optics::ChromaticOptions parse_chromatic(const OpticsArgs& a) {
   return o;
 }
 
+// The wavefront options of their flags, each checked on its own so the error names it.
+optics::WavefrontOptions parse_wave(const OpticsArgs& a) {
+  optics::WavefrontOptions o;
+  auto number = [](const char* flag, const std::string& text, const char* example) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
+      throw_error(fmt::format("{} \"{}\": expected {}", flag, text, example));
+    return v;
+  };
+  auto check = [&o](const char* flag, const std::string& text) {
+    try {
+      optics::validate(o);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
+    }
+  };
+  if (!a.wave_pupil.empty()) {
+    o.pupil_radius_mm = 0.5 * number("--wave-pupil", a.wave_pupil, "an entrance-pupil diameter in mm, e.g. 6");
+    if (!(o.pupil_radius_mm > 0.0)) throw_error(fmt::format("--wave-pupil \"{}\": must be > 0 mm", a.wave_pupil));
+    check("--wave-pupil", a.wave_pupil);
+  }
+  if (!a.wave_wavelength.empty()) {
+    o.wavelength_nm = number("--wave-wavelength", a.wave_wavelength, "a wavelength in nm, e.g. 555");
+    if (o.wavelength_nm == 0.0) throw_error("--wave-wavelength \"0\": give a wavelength in nm");
+    check("--wave-wavelength", a.wave_wavelength);
+  }
+  const double grid = number("--wave-grid", a.wave_grid, "a number of samples across the pupil, e.g. 64");
+  o.grid = grid == std::floor(grid) && std::abs(grid) < 1e6 ? static_cast<int>(grid) : 0;
+  check("--wave-grid", a.wave_grid);
+  const double order = number("--zernike-order", a.zernike_order, "a radial order, e.g. 6");
+  o.zernike_order = order == std::floor(order) && std::abs(order) < 1e6 ? static_cast<int>(order) : 0;
+  check("--zernike-order", a.zernike_order);
+  return o;
+}
+
 // The prescription of the --camera directive. Reading it checks every parameter of the
 // directive (view parameters such as fov and mapping too) against the camera's declared ones,
 // as render does.
@@ -143,6 +185,8 @@ int run_optics(const OpticsArgs& a) {
   o.fields_deg = parse_fields(a.fields);
   o.object_distance_m = parse_distance(a.object_distance);
   o.chromatic = parse_chromatic(a);
+  o.wave = a.wave;
+  o.wave_options = parse_wave(a);
   try {
     const nlohmann::json report = optics::optics_report(p, o);
     if (a.json)
@@ -179,6 +223,16 @@ CommandRunner add_optics_command(CLI::App& app) {
                 "Step of the chromatic refraction list, nm (default 10, or the range's width if smaller)");
   c->add_option("--tca-wavelengths", args->tca_wavelengths,
                 "Transverse chromatic aberration between these wavelengths, nm: SHORT,LONG (default 450,650)");
+  c->add_flag("--wave", args->wave,
+              "Add the wavefront at each field of --fields (JSON key `wave`): RMS and PV in waves, OSA Zernike "
+              "coefficients in um, refraction from the wavefront (docs/wavefront.md)");
+  c->add_option("--wave-pupil", args->wave_pupil,
+                "Entrance-pupil diameter of the wavefront analysis, mm (default: the paraxial entrance pupil)");
+  c->add_option("--wave-wavelength", args->wave_wavelength,
+                "Wavelength of the wavefront analysis, nm (default: the "
+                "camera's)");
+  c->add_option("--wave-grid", args->wave_grid, "Samples across the pupil of the wavefront analysis (default 64)");
+  c->add_option("--zernike-order", args->zernike_order, "Highest radial order of the Zernike fit (default 6)");
   return [args] { return run_optics(*args); };
 }
 

@@ -178,6 +178,7 @@ ChiefRay trace_chief_ray(const Prescription& p, double field_deg, double object_
     return out;
   }
   out.ok = true;
+  out.object_ray = o.ray(q);
   out.image_mm = t.ray.origin;
   out.image_coordinate_mm = image_coordinate_mm(p, t.ray.origin);
   return out;

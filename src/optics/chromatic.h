@@ -29,6 +29,7 @@
 #include <glm/vec3.hpp>
 
 #include "optics/prescription.h"
+#include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 
@@ -59,6 +60,7 @@ std::vector<RefractionAtWavelength> chromatic_refraction(const Prescription& p, 
 struct ChiefRay {
   bool ok = false;
   std::string lost;                  // why not ok: the surface and the reason
+  Ray object_ray;                    // the aimed ray as launched in object space (ok only)
   glm::dvec3 image_mm{0.0};          // where it meets the image surface
   double image_coordinate_mm = 0.0;  // signed arc length (height if flat) from the image vertex, > 0 on
                                      // the side where a positive field images (-y)

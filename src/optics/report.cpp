@@ -68,6 +68,54 @@ void add_chromatic(json& r, const Prescription& p, const ReportOptions& options)
               {"fields", fields}};
 }
 
+json power_vector(const PowerVector& v) {
+  return {{"M_diopters", round6(v.M_D) + 0.0},
+          {"J0_diopters", round6(v.J0_D) + 0.0},
+          {"J45_diopters", round6(v.J45_D) + 0.0}};  // + 0.0: no -0 in the report
+}
+
+json wave_entry(const Prescription& p, const ReportOptions& options, double field) {
+  WavefrontOptions o = options.wave_options;
+  o.field_deg = field;
+  o.object_distance_m = options.object_distance_m;
+  json f = {{"field_deg", field}, {"object_distance_m", finite_or_null(options.object_distance_m)}};
+  try {
+    const WavefrontResult w = trace_wavefront(p, o);
+    json zernike = json::array();
+    for (double c : w.zernike_um) zernike.push_back(round8(c) + 0.0);
+    f.update(
+        {{"wavelength_nm", w.wavelength_nm},
+         {"pupil_radius_mm", round8(w.pupil_radius_mm)},
+         {"rms_wavefront_waves", round6(w.rms_waves)},
+         {"rms_sampled_waves", round6(w.rms_sampled_waves)},
+         {"pv_wavefront_waves", round6(w.pv_waves)},
+         {"zernike_order", w.zernike_order},
+         {"zernike_osa_um", zernike},
+         {"refraction", {{"least_squares", power_vector(w.least_squares)}, {"paraxial", power_vector(w.paraxial)}}},
+         {"rays", static_cast<int>(w.opd_waves.size())},
+         {"rays_lost", w.rays_lost}});
+    if (!w.warning.empty()) f["warning"] = w.warning;
+  } catch (const OpticsError& e) {
+    // A field the analysis cannot serve is reported, not dropped: null numbers and the reason.
+    for (const char* key : {"wavelength_nm", "pupil_radius_mm", "rms_wavefront_waves", "rms_sampled_waves",
+                            "pv_wavefront_waves", "zernike_osa_um", "refraction"})
+      f[key] = nullptr;
+    f["error"] = e.what();
+  }
+  return f;
+}
+
+// Validates the wavefront options once (a bad option is an error, not one per field).
+void add_wave(json& r, const Prescription& p, const ReportOptions& options) {
+  WavefrontOptions probe = options.wave_options;
+  probe.field_deg = 0.0;
+  probe.object_distance_m = options.object_distance_m;
+  validate(probe);
+  json fields = json::array();
+  for (double field : options.fields_deg) fields.push_back(wave_entry(p, options, field));
+  r["wave"] = fields;
+}
+
 // Law names with the media that follow each, in the order of the media table:
 // "navarro-herzberger (cornea, aqueous, lens, vitreous)".
 std::string dispersion_summary(const json& media) {
@@ -130,6 +178,7 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
   r["spot"] = spots;
   r["surfaces"] = prescription_to_json(p)["surfaces"];
   add_chromatic(r, p, options);
+  if (options.wave) add_wave(r, p, options);
   return r;
 }
 
@@ -170,6 +219,32 @@ std::string format_chromatic(const json& r, Num num) {
   return out;
 }
 
+// One line per field, then the Zernike coefficients through the fourth order.
+template <class Num>
+std::string format_wave(const json& wave, Num num) {
+  std::string out = "  wavefront (OPD against the sphere about the chief ray's image; OSA Zernike, um):\n";
+  for (const json& f : wave) {
+    if (f.contains("error")) {
+      out += fmt::format("    field {:>5.1f} deg: {}\n", f["field_deg"].get<double>(), f["error"].get<std::string>());
+      continue;
+    }
+    const json &ls = f["refraction"]["least_squares"], &px = f["refraction"]["paraxial"];
+    out += fmt::format(
+        "    field {:>5.1f} deg, {} nm, pupil {} mm: RMS {} waves, PV {} waves; refraction M/J0/J45 {}/{}/{} D "
+        "(least squares), {}/{}/{} D (paraxial){}\n",
+        f["field_deg"].get<double>(), num(f["wavelength_nm"], "{:g}"), num(f["pupil_radius_mm"], "{:.3f}"),
+        num(f["rms_wavefront_waves"], "{:.4f}"), num(f["pv_wavefront_waves"], "{:.4f}"),
+        num(ls["M_diopters"], "{:+.3f}"), num(ls["J0_diopters"], "{:+.3f}"), num(ls["J45_diopters"], "{:+.3f}"),
+        num(px["M_diopters"], "{:+.3f}"), num(px["J0_diopters"], "{:+.3f}"), num(px["J45_diopters"], "{:+.3f}"),
+        f.contains("warning") ? "; " + f["warning"].get<std::string>() : std::string());
+    out += "      j 0-14:";
+    const json& c = f["zernike_osa_um"];
+    for (size_t j = 0; j < std::min<size_t>(15, c.size()); ++j) out += " " + num(c[j], "{:+.4f}");
+    out += "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string format_report(const json& r) {
@@ -199,6 +274,7 @@ std::string format_report(const json& r) {
                        s["field_deg"].get<double>(), num(s["rms_radius_um"], "{:.2f}"),
                        num(s["ee50_radius_um"], "{:.2f}"), s["rays"].get<int>(), s["rays_launched"].get<int>());
   if (r.contains("dispersion")) out += format_chromatic(r, num);
+  if (r.contains("wave")) out += format_wave(r["wave"], num);
   for (const json& n : r["notes"]) out += fmt::format("  note: {}\n", n.get<std::string>());
   return out;
 }

@@ -14,6 +14,7 @@
 #include "optics/prescription.h"
 #include "optics/raster.h"
 #include "optics/spot.h"
+#include "optics/wavefront.h"
 
 namespace eyetrace::optics {
 
@@ -22,6 +23,10 @@ struct ReportOptions {
   double object_distance_m = std::numeric_limits<double>::infinity();  // spot source distance
   int spot_grid = 64;
   ChromaticOptions chromatic;  // wavelengths of the chromatic section (TCA at fields_deg, object_distance_m)
+  // The wavefront section (wavefront.h) when set: one analysis per field of fields_deg, at
+  // object_distance_m; wave.field_deg and wave.object_distance_m are ignored.
+  bool wave = false;
+  WavefrontOptions wave_options;
 };
 
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
@@ -43,7 +48,13 @@ inline constexpr double kEmmetropia_D = 0.005;
 //   fields: [{field_deg, tca_arcmin, retina_um (both null when a chief ray is lost, with `lost`
 //   saying why), short_angle_deg, long_angle_deg, centroid_tca_arcmin, centroid_retina_um (the
 //   spots' centroids instead of the chief rays, the pupil filled with a spot_grid grid)}]}.
-// Throws OpticsError for invalid chromatic options (naming them).
+// wavefront (options.wave; wavefront.h), one entry per field:
+//   wave: [{field_deg, wavelength_nm, pupil_radius_mm (entrance pupil), object_distance_m,
+//   rms_wavefront_waves (from the coefficients), rms_sampled_waves, pv_wavefront_waves,
+//   zernike_order, zernike_osa_um (c_j, j = 0, 1, ...), refraction {least_squares, paraxial}:
+//   {M_diopters, J0_diopters, J45_diopters}, rays, rays_lost, warning (when rays were lost)}];
+//   a field whose analysis fails (chief ray lost, too few rays) has its numbers null and `error`.
+// Throws OpticsError for invalid chromatic or wavefront options (naming them).
 nlohmann::json optics_report(const Prescription& prescription, const ReportOptions& options = {});
 
 // Human-readable text of an optics_report() result.

@@ -45,6 +45,35 @@ TEST(OpticsCommand, ChromaticText) {
   EXPECT_NE(text.find("transverse chromatic aberration 450-650 nm"), std::string::npos) << text;
 }
 
+TEST(OpticsCommand, WaveJsonAndText) {
+  int status = -1;
+  const nlohmann::json r = nlohmann::json::parse(
+      run("optics --json --wave --wave-pupil 6 --fields 0,20 --camera 'Camera \"navarro\"'", &status, false));
+  ASSERT_EQ(status, 0);
+  ASSERT_EQ(r["wave"].size(), 2u);
+  for (const auto& f : r["wave"]) {
+    for (const char* key : {"field_deg", "wavelength_nm", "rms_wavefront_waves", "pv_wavefront_waves"})
+      EXPECT_TRUE(f[key].is_number()) << key << " " << f.dump();
+    EXPECT_EQ(f["zernike_osa_um"].size(), 28u);
+    EXPECT_NEAR(f["pupil_radius_mm"].get<double>(), 3.0, 1e-12);
+    EXPECT_TRUE(f["refraction"]["paraxial"]["M_diopters"].is_number());
+  }
+  EXPECT_NEAR(r["wave"][0]["zernike_osa_um"][12].get<double>(), 0.2406, 1e-4);  // docs/wavefront.md
+  const std::string text = run("optics --wave --fields 0", &status);
+  ASSERT_EQ(status, 0) << text;
+  EXPECT_NE(text.find("wavefront (OPD against the sphere"), std::string::npos) << text;
+}
+
+TEST(OpticsCommand, BadWaveOptionsNameTheFlag) {
+  for (const char* flag : {"--wave-grid 4", "--zernike-order 1", "--wave-pupil -1", "--wave-wavelength 200"}) {
+    int status = -1;
+    const std::string out = run(std::string("optics --wave ") + flag, &status);
+    EXPECT_EQ(status, 1) << out;
+    const std::string name(flag, std::string(flag).find(' '));
+    EXPECT_NE(out.find(name), std::string::npos) << out;
+  }
+}
+
 TEST(OpticsCommand, BadWavelengthsNameTheFlag) {
   const std::pair<const char*, const char*> cases[] = {
       {"--chromatic-range 300,700", "--chromatic-range \"300,700\": chromatic range: 300 nm is outside [360, 1020] nm"},
