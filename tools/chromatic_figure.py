@@ -311,7 +311,7 @@ def report(out_dir, quality, chosen, optics_tca):
     fm.montage([os.path.join(out_dir, p.name + "-letters.png") for p, _ in results], [p.label for p, _ in results],
                os.path.join(out_dir, "chromatic.png"),
                "Relaxed Navarro eye: blue, white, red letters at " + ", ".join(f"{f:g}" for f in FIELDS_DEG) + " deg",
-               cols=min(len(results), len(PUPILS_MM)), tile_inches=(4.2, 3.3))
+               cols=min(len(results), len(PUPILS_MM)), tile_inches=(4.2, 3.5))
     return check_claims(results)
 
 
