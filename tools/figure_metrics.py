@@ -53,18 +53,19 @@ def gradient_energy(y):
     return e
 
 
-def pixel_angles(shape, model):
-    """Horizontal and vertical visual angle (degrees) of every pixel centre. Eye cameras map
-    pixels linearly in angle; the thin lens and pinhole map them linearly in tan(angle)."""
+def pixel_angles(shape, model, fov=FOV):
+    """Horizontal and vertical visual angle (degrees) of every pixel centre, fov (degrees) across
+    the shorter (vertical) axis. Eye cameras map pixels linearly in angle; the thin lens and
+    pinhole map them linearly in tan(angle)."""
     h, w = shape
     s = 2.0 / h  # the shorter (vertical) axis spans the field of view
     x = (np.arange(w) + 0.5 - w / 2) * s
     y = (h / 2 - np.arange(h) - 0.5) * s
     if model in ("thinlens", "pinhole"):
-        t = np.tan(np.radians(FOV / 2))
+        t = np.tan(np.radians(fov / 2))
         ax, ay = np.degrees(np.arctan(x * t)), np.degrees(np.arctan(y * t))
     else:
-        ax, ay = x * FOV / 2, y * FOV / 2
+        ax, ay = x * fov / 2, y * fov / 2
     return np.meshgrid(ax, ay)
 
 
@@ -224,11 +225,13 @@ def write_blur_csv(ms, path):
                 row(name, f"{np.hypot(h, v):.1f}", m["charts"][name])
 
 
-def montage(pngs, labels, path, title):
+def montage(pngs, labels, path, title, cols=None, tile_inches=(4.2, 3.1)):
+    """The PNGs in a grid (cols columns; default up to 4), each labelled below, with a title;
+    tile_inches: the size of one image and its label."""
     n = len(pngs)
-    cols = min(n, 4 if n > 5 else n)
+    cols = cols or min(n, 4 if n > 5 else n)
     rows = (n + cols - 1) // cols
-    fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.1 * rows + 0.5), squeeze=False)
+    fig, axes = plt.subplots(rows, cols, figsize=(tile_inches[0] * cols, tile_inches[1] * rows + 0.5), squeeze=False)
     for ax in axes.flat:
         ax.axis("off")
     for ax, png, label in zip(axes.flat, pngs, labels):

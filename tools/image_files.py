@@ -19,6 +19,17 @@ def read_rgb(path, tool):
     return np.asarray(px, dtype=np.float64)[:, :, :3]
 
 
+def read_channels(path, tool):
+    """Every channel of an image by name, as float64 (H, W) arrays; exits naming `tool` if unreadable."""
+    inp = oiio.ImageInput.open(path)
+    if inp is None:
+        raise SystemExit(f"{tool}: cannot read {path}: {oiio.geterror()}")
+    names = list(inp.spec().channelnames)
+    px = np.asarray(inp.read_image(oiio.FLOAT), dtype=np.float64)
+    inp.close()
+    return {n: px[:, :, i] for i, n in enumerate(names)}
+
+
 def _write(data, path, pixel_type, suffix):
     tmp = path + ".tmp" + suffix
     out = oiio.ImageOutput.create(tmp)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Smoke test of tools/figures: renders the thin-lens and Navarro panels of Figure 3 at the
-smallest quality into a scratch directory and checks what the tool promises to write.
+"""Smoke test of tools/figures: renders the thin-lens and Navarro panels of Figure 3 and the
+chromatic figure at the smallest quality into a scratch directory and checks what the tool
+promises to write.
 
   tests/tools/figures_smoke.py EYETRACE_BINARY SCRATCH_DIR
 
@@ -8,7 +9,9 @@ Checks: an EXR and a PNG per panel (and per half-sample render), the Figure 3 mo
 and panels.csv exist; every EXR pixel is finite; blur.csv's numbers are finite; and the two
 panels differ by far more than sampling noise: the RMS luminance difference between them must
 exceed 3x the RMS difference sampling noise alone would give (estimated from each panel's two
-independent halves), so two renders of the same camera would fail it.
+independent halves), so two renders of the same camera would fail it. The chromatic figure:
+its montage and chromatic.csv exist, with a finite fringe, sigma and TCA for every panel and
+field, and its three claims are printed.
 """
 import csv
 import math
@@ -21,6 +24,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
+import chromatic_figure as cf  # noqa: E402
 import figure_metrics as fm  # noqa: E402
 
 PANELS = ["figure3-thinlens", "figure3-navarro"]
@@ -41,11 +45,11 @@ def main():
     out = os.path.join(scratch, "figures")
     shutil.rmtree(out, ignore_errors=True)  # the tool skips panels it has made: make it render
     cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "figures"), "--quality", "smoke",
-           "--panels", "thinlens,navarro", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    print(r.stdout)
-    if r.returncode != 0:
-        fail(f"{' '.join(cmd)} exited {r.returncode}:\n{r.stderr}")
+           "--panels", "thinlens,navarro,chromatic", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    print(run.stdout)
+    if run.returncode != 0:
+        fail(f"{' '.join(cmd)} exited {run.returncode}:\n{run.stderr}")
 
     expected = ["figure3.png", "blur.csv", "panels.csv", "blur-vs-eccentricity.png"]
     for p in PANELS:
@@ -87,7 +91,25 @@ def main():
         if r["model"] == "navarro" and r["region"].startswith("far wall") \
                 and not (r["rms_spot_um"] and 0 < float(r["rms_spot_um"]) < 1e4):
             fail(f"blur.csv rms_spot_um = {r['rms_spot_um']!r} in {r}")
+    check_chromatic(out, run.stdout)
     print("figures smoke: OK")
+
+
+def check_chromatic(out, stdout):
+    for f in ["chromatic.png", "chromatic.csv"] + [p.name + ".exr" for p in cf.panels("smoke")]:
+        if not os.path.exists(os.path.join(out, f)):
+            fail(f"missing chromatic output {f}")
+    rows = list(csv.DictReader(open(os.path.join(out, "chromatic.csv"))))
+    expected = {(p.name, f) for p in cf.panels("smoke") for f in cf.FIELDS_DEG}
+    if {(r["panel"], float(r["field_deg"])) for r in rows} != expected:
+        fail(f"chromatic.csv rows {sorted((r['panel'], r['field_deg']) for r in rows)}")
+    for r in rows:
+        for k in ("fringe_arcmin", "fringe_sigma_arcmin", "centroid_tca_arcmin", "srgb_fringe_arcmin"):
+            if not math.isfinite(float(r[k])):
+                fail(f"chromatic.csv {k} = {r[k]} in {r}")
+    claims = [line for line in stdout.splitlines() if "HOLD" in line and ("fringe" in line or "window" in line)]
+    if len(claims) != 3:
+        fail(f"expected the chromatic figure's 3 claims in the output, found {claims}")
 
 
 if __name__ == "__main__":
