@@ -46,10 +46,10 @@ TEST(OpticsCommand, ChromaticText) {
 }
 
 TEST(OpticsCommand, WaveJsonAndText) {
-  int status = -1;
-  const nlohmann::json r = nlohmann::json::parse(
-      run("optics --json --wave --wave-pupil 6 --fields 0,20 --camera 'Camera \"navarro\"'", &status, false));
-  ASSERT_EQ(status, 0);
+  const test::RunResult json_run =
+      run_eyetrace("optics --json --wave --wave-pupil 6 --fields 0,20 --camera 'Camera \"navarro\"'", false);
+  ASSERT_EQ(json_run.status, 0);
+  const nlohmann::json r = nlohmann::json::parse(json_run.output);
   ASSERT_EQ(r["wave"].size(), 2u);
   for (const auto& f : r["wave"]) {
     for (const char* key : {"field_deg", "wavelength_nm", "rms_wavefront_waves", "pv_wavefront_waves"})
@@ -59,18 +59,17 @@ TEST(OpticsCommand, WaveJsonAndText) {
     EXPECT_TRUE(f["refraction"]["paraxial"]["M_diopters"].is_number());
   }
   EXPECT_NEAR(r["wave"][0]["zernike_osa_um"][12].get<double>(), 0.2406, 1e-4);  // docs/wavefront.md
-  const std::string text = run("optics --wave --fields 0", &status);
-  ASSERT_EQ(status, 0) << text;
-  EXPECT_NE(text.find("wavefront (OPD against the sphere"), std::string::npos) << text;
+  const test::RunResult text = run_eyetrace("optics --wave --fields 0");
+  ASSERT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("wavefront (OPD against the sphere"), std::string::npos) << text.output;
 }
 
 TEST(OpticsCommand, BadWaveOptionsNameTheFlag) {
   for (const char* flag : {"--wave-grid 4", "--zernike-order 1", "--wave-pupil -1", "--wave-wavelength 200"}) {
-    int status = -1;
-    const std::string out = run(std::string("optics --wave ") + flag, &status);
-    EXPECT_EQ(status, 1) << out;
+    const test::RunResult out = run_eyetrace(std::string("optics --wave ") + flag);
+    EXPECT_EQ(out.status, 1) << out.output;
     const std::string name(flag, std::string(flag).find(' '));
-    EXPECT_NE(out.find(name), std::string::npos) << out;
+    EXPECT_NE(out.output.find(name), std::string::npos) << out.output;
   }
 }
 
