@@ -179,7 +179,7 @@ Vec3 spectrum_to_xyz(const SpectrumSamples& s) {
 float interpolate_spectrum(std::span<const float> lambda, std::span<const float> value, float l) {
   size_t n = std::min(lambda.size(), value.size());
   if (n == 0) return 0.f;
-  if (l <= lambda[0]) return value[0];
+  if (n == 1 || l <= lambda[0]) return value[0];  // one point: no segment to read (even for a NaN l)
   if (l >= lambda[n - 1]) return value[n - 1];
   // Binary search (tables are hundreds of points, read at every wavelength of every sample):
   // the first point not below l, whose left neighbour starts the segment. That is the segment

@@ -22,7 +22,7 @@ namespace {
 float linear_scan(const std::vector<float>& lambda, const std::vector<float>& value, float l) {
   const size_t n = std::min(lambda.size(), value.size());
   if (n == 0) return 0.f;
-  if (l <= lambda[0]) return value[0];
+  if (n == 1 || l <= lambda[0]) return value[0];
   if (l >= lambda[n - 1]) return value[n - 1];
   size_t j = 0;
   while (lambda[j + 1] < l) ++j;
