@@ -75,7 +75,8 @@ PluginSpec make_eye_spec(bool with_model) {
               .with_unit("nm")
               .describe("A monochromatic eye: every ray is traced at this wavelength. Absent, the eye disperses: each "
                         "sample's hero wavelength is traced through each medium's dispersion law (`eyetrace optics` "
-                        "lists them; Gullstrand's and Kooijman's are assumed)."),
+                        "lists them; Gullstrand's and Kooijman's are assumed), and the other wavelengths share its "
+                        "scene path by spectral MIS (docs/spectral.md)."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
