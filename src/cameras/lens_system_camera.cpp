@@ -197,10 +197,26 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending,
                    SampledSpectrum(w), w};
 }
 
-// One sample is a batch of one: the batch trace equals the scalar trace bit for bit.
+// The ray that left the eye, turned round to enter it again from 1 mm outside the cornea.
+optics::Ray LensSystemCamera::back_in(const optics::TraceResult& left) {
+  return {left.ray.origin + left.ray.direction, -left.ray.direction};
+}
+
+// As generate_rays for one sample (the batch trace equals the scalar one bit for bit), without
+// the batch's arrays: tools and tests call it ray by ray.
 std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, SampledWavelengths& lambda) const {
-  std::optional<CameraRay> ray;
-  generate_rays(&cs, &lambda, &ray, 1);
+  if (dispersive_ && !cs.filter) lambda.terminate_secondary();
+  PendingRay pending;
+  if (!start_ray(cs, &pending)) return std::nullopt;
+  const int first = system_.image_index() - 1;
+  const optics::TraceResult hero = dispersive_ ? system_.trace_range(pending.ray, first, 0, double(lambda[0]))
+                                               : system_.trace_range(pending.ray, first, 0);
+  std::optional<CameraRay> ray = finish_ray(pending, hero, cs.time);
+  if (!ray || !dispersive_ || lambda.secondary_terminated()) return ray;
+  optics::TraceResult forward[kSpectrumSamples - 1];
+  for (int k = 1; k < kSpectrumSamples; ++k)
+    forward[k - 1] = system_.trace_range(back_in(hero), 0, system_.image_index(), double(lambda[k]));
+  weigh_wavelengths(cs, lambda, pending, forward, &*ray);
   return ray;
 }
 
@@ -235,10 +251,8 @@ void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelen
     for (size_t j = 0; j < live; ++j) {
       rays[index[j]] = finish_ray(pending[j], results[j], samples[index[j]].time);
       if (!dispersive_ || !rays[index[j]] || lambdas[index[j]].secondary_terminated()) continue;
-      // Back into the eye along the leaving ray, from 1 mm outside the cornea.
-      const optics::Ray in{results[j].ray.origin + results[j].ray.direction, -results[j].ray.direction};
       for (int k = 1; k <= kSecondary; ++k) {
-        forward[mis] = in;
+        forward[mis] = back_in(results[j]);
         forward_nm[mis++] = double(lambdas[index[j]][k]);
       }
     }

@@ -94,6 +94,7 @@ class LensSystemCamera : public Camera {
     IVec2 offset{0};         // the pixel it counts in, from the sample's (splats)
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
+  static optics::Ray back_in(const optics::TraceResult& left);
   std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
   // Spectral MIS: the ray that left the eye at the hero wavelength, traced back in at each
   // secondary wavelength (forward[k - 1] for wavelength k), weighs every wavelength.

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include "cameras/perspective_camera.h"
+#include "filters/box_filter.h"
+#include "filters/gaussian_filter.h"
 #include "optics/paraxial.h"
 #include "scene/parser.h"
 
@@ -394,6 +396,48 @@ TEST(LensSystemCamera, BatchGenerationEqualsSingle) {
       EXPECT_EQ(one->weight[0], batch[i]->weight[0]);
     }
     EXPECT_LT(lost, int(samples.size()));
+  }
+}
+
+// The same for the dispersive eye's spectral MIS: every wavelength's weight and pixel, with a
+// Gaussian filter (weights within the pixel) and a box filter splatting within a tile.
+TEST(LensSystemCamera, BatchGenerationEqualsSingleWithSpectralMis) {
+  SceneEntity e = parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 6 \"float fov\" 60", "Camera", "t");
+  CameraContext ctx{e.params, Transform(), IVec2(64, 64), ""};
+  std::unique_ptr<Camera> cam = create_named_eye_camera("navarro")(ctx);
+  const BoxFilter box(Vec2(0.5f));
+  const GaussianFilter gaussian(Vec2(1.5f), 0.5f);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (const Filter* filter : {static_cast<const Filter*>(&box), static_cast<const Filter*>(&gaussian)}) {
+    std::vector<CameraSample> samples(203);
+    std::vector<SampledWavelengths> lambdas, single;
+    for (CameraSample& cs : samples) {
+      const IVec2 pixel(int(64 * u(rng)), int(64 * u(rng)));
+      const FilterSample fs = filter->sample(Vec2(u(rng), u(rng)));
+      cs.p_film = Vec2(pixel) + Vec2(0.5f) + fs.offset;
+      cs.p_lens = Vec2(u(rng), u(rng));
+      cs.filter = filter, cs.filter_offset = fs.offset, cs.filter_weight = fs.weight;
+      cs.splat = filter == &box, cs.splat_lo = pixel / 16 * 16, cs.splat_hi = cs.splat_lo + IVec2(16);
+      lambdas.push_back(SampledWavelengths::sample_visible(u(rng)));
+    }
+    single = lambdas;
+    std::vector<std::optional<CameraRay>> batch(samples.size());
+    cam->generate_rays(samples.data(), lambdas.data(), batch.data(), samples.size());
+    int splatted = 0;
+    for (size_t i = 0; i < samples.size(); ++i) {
+      const std::optional<CameraRay> one = cam->generate_ray(samples[i], single[i]);
+      ASSERT_EQ(one.has_value(), batch[i].has_value()) << i;
+      if (!one) continue;
+      EXPECT_EQ(one->ray.d, batch[i]->ray.d);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        EXPECT_EQ(one->weight[k], batch[i]->weight[k]) << i << " " << k;
+        EXPECT_EQ(one->pixel_offset[k], batch[i]->pixel_offset[k]) << i << " " << k;
+        EXPECT_EQ(single[i].pdf()[k], lambdas[i].pdf()[k]);
+        splatted += one->pixel_offset[k] != IVec2(0);
+      }
+    }
+    if (filter == &box) EXPECT_GT(splatted, 0);  // the case is tested
   }
 }
 
