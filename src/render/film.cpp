@@ -32,17 +32,16 @@ Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter,
   if (buckets_.count < 0 || buckets_.count > SpectralBuckets::kMaxCount ||
       (buckets_.spectral() && !(buckets_.lambda_min < buckets_.lambda_max)))
     throw std::invalid_argument("Film: invalid spectral buckets");
-  bucket_sums_.assign(bounds.area() * size_t(buckets_.count), 0.0);
+  bucket_sums_.assign(bounds.area() * 2 * size_t(buckets_.count), 0.0);
 }
 
-bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
-  const RGB rgb = sampled_to_rgb(L, lambda);
+// A sample's bucket terms, w L_i / (pdf_i N width) per counting wavelength (bucket -1: none);
+// false when any of them, or L at a counting wavelength, is not finite.
+bool Film::bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lambda, float w, int* bucket,
+                        double* term) const {
   const SampledSpectrum pdf = lambda.pdf();
-  bool finite = is_finite(rgb) && std::isfinite(w);
-  // Every term first, so that a sample with any non-finite part changes nothing.
   const double norm = 1.0 / (double(kSpectrumSamples) * buckets_.width());
-  int bucket[kSpectrumSamples];
-  double term[kSpectrumSamples];
+  bool finite = true;
   for (int i = 0; i < kSpectrumSamples; ++i) {
     bucket[i] = -1;
     term[i] = 0.0;
@@ -53,7 +52,15 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
     term[i] = double(w) * double(L[i]) / double(pdf[i]) * norm;
     if (!std::isfinite(term[i])) finite = false;
   }
-  if (!finite) {
+  return finite;
+}
+
+bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+  const RGB rgb = sampled_to_rgb(L, lambda);
+  // Every term first, so that a sample with any non-finite part changes nothing.
+  int bucket[kSpectrumSamples];
+  double term[kSpectrumSamples];
+  if (!(bucket_terms(L, lambda, w, bucket, term) && is_finite(rgb) && std::isfinite(w))) {
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
@@ -63,7 +70,7 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
   px.sum[1] += double(w) * rgb.g;
   px.sum[2] += double(w) * rgb.b;
   px.weight += w;
-  double* sums = &bucket_sums_[i_px * size_t(buckets_.count)];
+  double* sums = &bucket_sums_[i_px * 2 * size_t(buckets_.count)];
   for (int i = 0; i < kSpectrumSamples; ++i)
     if (bucket[i] >= 0) sums[bucket[i]] += term[i];
   return true;
@@ -71,14 +78,21 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
 
 bool Film::add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda) {
   const RGB rgb = sampled_to_rgb(L, lambda);
-  if (!is_finite(rgb)) {
+  int bucket[kSpectrumSamples];
+  double term[kSpectrumSamples];
+  if (!(is_finite(rgb) && (!buckets_.spectral() || bucket_terms(L, lambda, 1.f, bucket, term)))) {
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
-  Pixel& px = pixels_[index(pixel)];
+  const size_t i_px = index(pixel);
+  Pixel& px = pixels_[i_px];
   px.splat[0] += rgb.r;
   px.splat[1] += rgb.g;
   px.splat[2] += rgb.b;
+  if (!buckets_.spectral()) return true;
+  double* splats = &bucket_sums_[(i_px * 2 + 1) * size_t(buckets_.count)];
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (bucket[i] >= 0) splats[bucket[i]] += term[i];
   return true;
 }
 
@@ -94,7 +108,8 @@ float Film::bucket_value(IVec2 p, int b) const {
   const size_t i = index(p);
   const double weight = pixels_[i].weight;
   if (weight == 0) return 0.f;
-  return float(bucket_sums_[i * size_t(buckets_.count) + size_t(b)] * (scale_ / weight));
+  const double* sums = &bucket_sums_[i * 2 * size_t(buckets_.count)];
+  return float((sums[b] + sums[size_t(buckets_.count) + size_t(b)]) * (scale_ / weight));
 }
 
 Image Film::image() const {
@@ -137,8 +152,8 @@ std::vector<double> Film::accumulators() const {
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const Pixel& p = pixels_[i];
     acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight, p.splat[0], p.splat[1], p.splat[2]});
-    acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * n),
-               bucket_sums_.begin() + std::ptrdiff_t((i + 1) * n));
+    acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n),
+               bucket_sums_.begin() + std::ptrdiff_t((i + 1) * 2 * n));
   }
   return acc;
 }
@@ -149,7 +164,7 @@ void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const double* a = &acc[per * i];
     pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}};
-    std::copy(a + kAccumulatorsPerPixel, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * n));
+    std::copy(a + kAccumulatorsPerPixel, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n));
   }
   nonfinite_ = nonfinite_samples;
 }

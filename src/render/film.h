@@ -99,8 +99,8 @@ class Film {
     px.weight += w;
     return true;
   }
-  // Adds radiance L, already weighted, to `pixel`'s splat sum (RGB films only). Returns false
-  // (and counts it) when any colour term is not finite.
+  // Adds radiance L, already weighted, to `pixel`'s splat sums (R, G, B and, for a spectral
+  // film, the buckets). Returns false (and counts it) when any term is not finite.
   bool add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda);
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
@@ -112,12 +112,12 @@ class Film {
   uint64_t nonfinite_samples() const { return nonfinite_; }
 
   // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums, the
-  // weight sum and the r, g, b splat sums, then (spectral film) the weighted sum of each bucket:
-  // kAccumulatorsPerPixel + buckets().count doubles per pixel. A checkpoint stores them, and a film restored from them
-  // continues bit for bit as if it had never stopped.
+  // weight sum and the r, g, b splat sums, then (spectral film) the weighted sum of each bucket
+  // and each bucket's splat sum: kAccumulatorsPerPixel + 2 buckets().count doubles per pixel. A checkpoint stores them,
+  // and a film restored from them continues bit for bit as if it had never stopped.
   std::vector<double> accumulators() const;
   static constexpr size_t kAccumulatorsPerPixel = 7;
-  size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + size_t(buckets_.count); }
+  size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + 2 * size_t(buckets_.count); }
   // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
 
@@ -128,6 +128,8 @@ class Film {
     double splat[3] = {0, 0, 0};
   };
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
+  bool bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lambda, float w, int* bucket,
+                    double* term) const;
   size_t index(IVec2 p) const { return size_t(p.y - bounds_.lo.y) * bounds_.width() + (p.x - bounds_.lo.x); }
   IVec2 resolution_;
   PixelBounds bounds_;
@@ -135,7 +137,7 @@ class Film {
   float scale_;
   SpectralBuckets buckets_;
   std::vector<Pixel> pixels_;
-  std::vector<double> bucket_sums_;  // buckets_.count per pixel, in pixel order
+  std::vector<double> bucket_sums_;  // per pixel, in pixel order: buckets_.count sums, then as many splat sums
   std::atomic<uint64_t> nonfinite_{0};
 };
 

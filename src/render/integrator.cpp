@@ -50,7 +50,7 @@ CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel,
 class SampleBatch {
  public:
   // tile: the pixels this thread owns, into which a dispersive camera may splat wavelengths
-  // (box filter, RGB film: see Film).
+  // (box filter: see Film).
   SampleBatch(const Integrator& integrator, const Camera& camera, Film& film, ThreadState& ts, RayTally& tally,
               uint64_t& lost, const PixelBounds& tile)
       : integrator_(integrator),
@@ -60,7 +60,7 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        splat_(camera.splats() && film.filter().constant() && !film.buckets().spectral()) {}
+        splat_(camera.splats() && film.filter().constant()) {}
   bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
 

@@ -15,8 +15,8 @@
 namespace eyetrace {
 
 struct RenderState {
-  // 3: the accumulators hold 7 + buckets doubles per pixel: r, g, b, weight, the three splat
-  // sums, the buckets (version 2: no splat sums; version 1: 4, RGB films only).
+  // 3: the accumulators hold 7 + 2 buckets doubles per pixel: r, g, b, weight, the three splat
+  // sums, the buckets, their splat sums (version 2: no splat sums; version 1: 4, RGB films only).
   static constexpr uint32_t kVersion = 3;
   uint64_t fingerprint = 0;  // of the scene and every option that changes the image
   IVec2 resolution{0};

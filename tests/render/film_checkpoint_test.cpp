@@ -49,6 +49,8 @@ const std::string kRgb = view("\"perspective\" \"float fov\" 40", "\"rgb\"", "\"
 const std::string kSpectral =
     view("\"perspective\" \"float fov\" 40",
          "\"spectral\" \"integer nbuckets\" 7 \"float lambdamin\" 380 \"float lambdamax\" 720", "\"gaussian\"");
+const std::string kSplattingEyeSpectral =
+    view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"spectral\" \"integer nbuckets\" 5", "\"box\"");
 const std::string kSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"rgb\"", "\"box\"");
 
 RenderSetup setup_scene(const std::string& v = kRgb) {
@@ -92,10 +94,12 @@ TEST(FilmCheckpoint, AccumulatorsRestoreExactly) {
 }
 
 class FilmCheckpointOf : public ::testing::TestWithParam<std::string> {};
-INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf, ::testing::Values(kRgb, kSpectral, kSplattingEye),
-                         [](const auto& info) {
-                           return std::string(info.index == 0 ? "rgb" : info.index == 1 ? "spectral" : "splatting_eye");
-                         });
+std::string view_name(const ::testing::TestParamInfo<std::string>& info) {
+  static const char* const kNames[] = {"rgb", "spectral", "splatting_eye", "splatting_eye_spectral"};
+  return kNames[info.index];
+}
+INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf,
+                         ::testing::Values(kRgb, kSpectral, kSplattingEye, kSplattingEyeSpectral), view_name);
 
 // The eye case is only a test of splats if it splats: a dispersive eye with a box filter sends
 // some wavelengths to neighbouring pixels (accumulators 4-6 of a pixel).
@@ -151,7 +155,7 @@ TEST_P(FilmCheckpointOf, StoppedBetweenPassesAndResumedThroughStateFileIsBitIden
   EXPECT_EQ(back.tiles.done, tiles.done);
   EXPECT_EQ(back.spectral_buckets, s.film->buckets().count);
   EXPECT_EQ(back.accumulators.size(),
-            40u * 24u * (unsigned(Film::kAccumulatorsPerPixel) + unsigned(back.spectral_buckets)));
+            40u * 24u * (unsigned(Film::kAccumulatorsPerPixel) + 2u * unsigned(back.spectral_buckets)));
 
   RenderSetup resumed = setup_scene(GetParam());
   resumed.film->restore(back.accumulators, back.nonfinite_samples);
@@ -234,7 +238,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   st.samples_per_pixel = 4;
   st.tiles = TileProgress::start(st.bounds);
   st.spectral_buckets = 16;
-  st.accumulators.assign(20 * 20 * (Film::kAccumulatorsPerPixel + 16), 0.25);
+  st.accumulators.assign(20 * 20 * (Film::kAccumulatorsPerPixel + 2 * 16), 0.25);
   const std::string path = ::testing::TempDir() + "film_checkpoint_spectral.state";
   write_render_state(path, st);
   RenderState back = read_render_state(path);

@@ -129,7 +129,7 @@ TEST(SpectralFilm, SampleNotFiniteAtAnyCountingWavelengthLeavesTheFilmUntouched)
 
 TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   Film whole = spectral_film(5), first = spectral_film(5);
-  EXPECT_EQ(whole.accumulators_per_pixel(), 12u);  // r, g, b, weight, 3 splat sums, 5 buckets
+  EXPECT_EQ(whole.accumulators_per_pixel(), 17u);  // r, g, b, weight, 3 splat sums, 5 buckets, their splats
   auto add = [](Film& f, int k) {
     SampledWavelengths l = SampledWavelengths::sample_visible(0.137f * k - std::floor(0.137f * k));
     SampledSpectrum L(0.3f + 0.1f * k);
@@ -142,7 +142,7 @@ TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   resumed.restore(first.accumulators(), 3);
   for (int k = 10; k < 20; ++k) add(resumed, k);
   const std::vector<double> a = resumed.accumulators(), b = whole.accumulators();
-  ASSERT_EQ(a.size(), 2u * 12u);
+  ASSERT_EQ(a.size(), 2u * 17u);
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
   EXPECT_EQ(resumed.nonfinite_samples(), 3u);
   Film rgb(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>());
@@ -349,7 +349,7 @@ Shape "disk" "float radius" 5
   };
   RenderSetup rgb = render(scene("rgb")), spectral = render(scene("spectral"));
   const std::vector<double> a = rgb.film->accumulators(), b = spectral.film->accumulators();
-  const size_t na = Film::kAccumulatorsPerPixel, nb = na + 16;  // the spectral film adds 16 buckets
+  const size_t na = Film::kAccumulatorsPerPixel, nb = na + 32;  // the spectral film adds 16 buckets and their splats
   ASSERT_EQ(b.size(), a.size() / na * nb);
   for (size_t p = 0; p < a.size() / na; ++p)
     EXPECT_EQ(std::memcmp(&a[na * p], &b[nb * p], na * sizeof(double)), 0) << "pixel " << p;
