@@ -31,8 +31,9 @@ double sagittal_cutoff_cpd(const Psf& psf);
 double tangential_cutoff_cpd(const Psf& psf);
 
 // MTF at each frequency (cycles per degree, >= 0), normalised to 1 at zero frequency. Throws
-// OpticsError naming the limit for a frequency beyond the tangential cut-off (where the MTF is
-// 0 by diffraction, whatever the aberrations).
+// OpticsError naming the limit for a frequency beyond the sagittal cut-off D / lambda (where the
+// MTF is 0 by diffraction, whatever the aberrations). Between the tangential cut-off and that the
+// tangential MTF is 0 (the foreshortened pupil's autocorrelation has no support there).
 std::vector<MtfPoint> compute_mtf(const Psf& psf, const std::vector<double>& freqs_cpd);
 
 // The diffraction-limited MTF of a uniform circular pupil at nu = frequency / cut-off in [0, 1]:
