@@ -9,6 +9,7 @@
 #include <complex>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -278,6 +279,17 @@ TEST(PsfBadInput, TooCoarseAGridIsReported) {
 
 namespace eyetrace::optics {
 namespace {
+
+// On the axis the retinal scale is the paraxial front focal length 1 / P (paraxial.h, independent
+// of the chief-ray differences): the image of a distant point moves f tan(angle).
+TEST(PsfEye, RetinalScaleOnAxisIsTheFocalLength) {
+  EyeOptions e;
+  e.model = "navarro";
+  const Prescription p = make_eye(e);
+  const RetinalScale s = retinal_scale(p, 0.0, std::numeric_limits<double>::infinity(), 0.0);
+  EXPECT_NEAR(s.tangential_mm_per_rad / (1000.0 / paraxial_analysis(p).power_D), 1.0, 1e-3);
+  EXPECT_EQ(s.sagittal_mm_per_rad, s.tangential_mm_per_rad);
+}
 
 // Navarro's eye at 20 degrees, 5 mm pupil: every number finite, the retinal scales near the
 // 0.29 mm per degree of a 60 D eye, the tangential cut-off foreshortened by cos 20.
