@@ -2,8 +2,8 @@
 // directive describes, without rendering: paraxial constants, pupils, real-ray spot sizes and
 // chromatic aberration (dispersion laws, chromatic difference of refraction, transverse
 // chromatic aberration) and, with --wave, the wavefront (OPD, Zernike coefficients, refraction)
-// as text or JSON, and optionally a figure (spot diagram above the refraction-vs-wavelength
-// curve). The front door of the optics library.
+// and its diffraction (PSF's Strehl ratio and encircled energy, MTF) as text or JSON, and optionally a figure (spot
+// diagram above the refraction-vs-wavelength curve). The front door of the optics library.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 #include "optics/optics_error.h"
 #include "optics/report.h"
 #include "optics/spot.h"
+#include "optics/wave_optics_report.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
 
@@ -39,6 +40,7 @@ struct OpticsArgs {
   std::string wave_wavelength;  // nm; empty = the camera's
   std::string wave_grid = "64";
   std::string zernike_order = "6";
+  std::string freqs = "5,10,20,30,40,60";  // MTF frequencies, cycles per degree
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -57,6 +59,22 @@ std::vector<double> parse_fields(const std::string& text) {
   }
   if (fields.empty()) throw_error("--fields: give at least one field angle");
   return fields;
+}
+
+// Comma-separated MTF frequencies in cycles per degree, each finite and >= 0.
+std::vector<double> parse_freqs(const std::string& text) {
+  std::vector<double> freqs;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v) || v < 0.0)
+      throw_error(fmt::format("--freqs \"{}\": expected comma-separated frequencies in cycles/deg, each >= 0", text));
+    freqs.push_back(v);
+  }
+  if (freqs.empty()) throw_error("--freqs: give at least one frequency");
+  return freqs;
 }
 
 double parse_distance(const std::string& text) {
@@ -187,6 +205,12 @@ int run_optics(const OpticsArgs& a) {
   o.chromatic = parse_chromatic(a);
   o.wave = a.wave;
   o.wave_options = parse_wave(a);
+  o.mtf_freqs_cpd = parse_freqs(a.freqs);
+  if (o.wave) try {
+      optics::check_mtf_frequencies(p, o.wave_options, o.mtf_freqs_cpd);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("--freqs \"{}\": {}", a.freqs, e.what()));
+    }
   try {
     const nlohmann::json report = optics::optics_report(p, o);
     if (a.json)
@@ -225,7 +249,8 @@ CommandRunner add_optics_command(CLI::App& app) {
                 "Transverse chromatic aberration between these wavelengths, nm: SHORT,LONG (default 450,650)");
   c->add_flag("--wave", args->wave,
               "Add the wavefront at each field of --fields (JSON key `wave`): RMS and PV in waves, OSA Zernike "
-              "coefficients in um, refraction from the wavefront (docs/wavefront.md)");
+              "coefficients in um, refraction from the wavefront, Strehl ratio, encircled energy and MTF of the "
+              "PSF (docs/wavefront.md)");
   c->add_option("--wave-pupil", args->wave_pupil,
                 "Entrance-pupil diameter of the wavefront analysis, mm (default: the paraxial entrance pupil)");
   c->add_option("--wave-wavelength", args->wave_wavelength,
@@ -233,6 +258,9 @@ CommandRunner add_optics_command(CLI::App& app) {
                 "camera's)");
   c->add_option("--wave-grid", args->wave_grid, "Samples across the pupil of the wavefront analysis (default 64)");
   c->add_option("--zernike-order", args->zernike_order, "Highest radial order of the Zernike fit (default 6)");
+  c->add_option("--freqs", args->freqs,
+                "MTF frequencies of --wave, cycles per degree of visual angle (default 5,10,20,30,40,60; each "
+                "within the diffraction cut-off D / wavelength)");
   return [args] { return run_optics(*args); };
 }
 

@@ -9,6 +9,7 @@
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
 #include "optics/prescription_io.h"
+#include "optics/wave_optics_report.h"
 
 namespace eyetrace::optics {
 
@@ -95,10 +96,12 @@ json wave_entry(const Prescription& p, const ReportOptions& options, double fiel
          {"rays", static_cast<int>(w.opd_waves.size())},
          {"rays_lost", w.rays_lost}});
     if (!w.warning.empty()) f["warning"] = w.warning;
+    f.update(wave_optics_json(p, o, options.mtf_freqs_cpd));
   } catch (const OpticsError& e) {
     // A field the analysis cannot serve is reported, not dropped: null numbers and the reason.
-    for (const char* key : {"wavelength_nm", "pupil_radius_mm", "rms_wavefront_waves", "rms_sampled_waves",
-                            "pv_wavefront_waves", "zernike_osa_um", "refraction"})
+    for (const char* key :
+         {"wavelength_nm", "pupil_radius_mm", "rms_wavefront_waves", "rms_sampled_waves", "pv_wavefront_waves",
+          "zernike_osa_um", "refraction", "strehl", "ee50_um", "ee80_um", "mtf"})
       f[key] = nullptr;
     f["error"] = e.what();
   }
@@ -111,6 +114,7 @@ void add_wave(json& r, const Prescription& p, const ReportOptions& options) {
   probe.field_deg = 0.0;
   probe.object_distance_m = options.object_distance_m;
   validate(probe);
+  check_mtf_frequencies(p, probe, options.mtf_freqs_cpd);
   json fields = json::array();
   for (double field : options.fields_deg) fields.push_back(wave_entry(p, options, field));
   r["wave"] = fields;
@@ -241,6 +245,7 @@ std::string format_wave(const json& wave, Num num) {
     const json& c = f["zernike_osa_um"];
     for (size_t j = 0; j < std::min<size_t>(15, c.size()); ++j) out += " " + num(c[j], "{:+.4f}");
     out += "\n";
+    if (f.contains("mtf") && f["mtf"].is_array()) out += format_wave_optics(f);
   }
   return out;
 }

@@ -27,6 +27,8 @@ struct ReportOptions {
   // object_distance_m; wave.field_deg and wave.object_distance_m are ignored.
   bool wave = false;
   WavefrontOptions wave_options;
+  // MTF frequencies of the wave section (cycles per degree), each within the diffraction cut-off.
+  std::vector<double> mtf_freqs_cpd{5.0, 10.0, 20.0, 30.0, 40.0, 60.0};
 };
 
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
@@ -54,7 +56,8 @@ inline constexpr double kEmmetropia_D = 0.005;
 //   zernike_order, zernike_osa_um (c_j, j = 0, 1, ...), refraction {least_squares, paraxial}:
 //   {M_diopters, J0_diopters, J45_diopters}, rays, rays_lost, warning (when rays were lost)}];
 //   a field whose analysis fails (chief ray lost, too few rays) has its numbers null and `error`.
-// Throws OpticsError for invalid chromatic or wavefront options (naming them).
+// Throws OpticsError for invalid chromatic or wavefront options (naming them), and for an MTF
+// frequency beyond the diffraction cut-off.
 nlohmann::json optics_report(const Prescription& prescription, const ReportOptions& options = {});
 
 // Human-readable text of an optics_report() result.

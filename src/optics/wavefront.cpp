@@ -170,6 +170,7 @@ WavefrontResult trace_wavefront(const Prescription& p, const WavefrontOptions& o
   out.field_deg = o.field_deg;
   out.wavelength_nm = lambda;
   out.zernike_order = o.zernike_order;
+  out.grid = o.grid;
   out.pupil_radius_mm = o.pupil_radius_mm > 0.0 ? o.pupil_radius_mm : 0.5 * object_para.entrance_pupil.diameter_mm;
   out.entrance_pupil_z_mm = object_para.entrance_pupil.position_mm;
   out.exit_pupil_z_mm = image_para.exit_pupil.position_mm;

@@ -67,6 +67,7 @@ struct WavefrontResult {
   double exit_pupil_z_mm = 0.0;
   glm::dvec3 image_point_mm{0.0};
   double reference_radius_mm = 0.0;
+  int grid = 0;           // samples across the disc's diameter (the options')
   int rays_in_pupil = 0;  // grid cells inside the disc
   int rays_lost = 0;      // of those, how many did not reach the image (and the reference sphere)
   std::string warning;    // empty, or what limits the result (vignetting)

@@ -57,11 +57,29 @@ TEST(OpticsCommand, WaveJsonAndText) {
     EXPECT_EQ(f["zernike_osa_um"].size(), 28u);
     EXPECT_NEAR(f["pupil_radius_mm"].get<double>(), 3.0, 1e-12);
     EXPECT_TRUE(f["refraction"]["paraxial"]["M_diopters"].is_number());
+    for (const char* key : {"strehl", "ee50_um", "ee80_um"}) EXPECT_TRUE(f[key].is_number()) << key << " " << f.dump();
+    ASSERT_EQ(f["mtf"].size(), 6u);  // the default frequencies 5, 10, 20, 30, 40, 60
+    EXPECT_EQ(f["mtf"][5]["freq_cpd"].get<double>(), 60.0);
+    for (const auto& m : f["mtf"]) EXPECT_TRUE(m["tangential"].is_number() && m["sagittal"].is_number()) << m.dump();
   }
   EXPECT_NEAR(r["wave"][0]["zernike_osa_um"][12].get<double>(), 0.2406, 1e-4);  // docs/wavefront.md
   const test::RunResult text = run_eyetrace("optics --wave --fields 0");
   ASSERT_EQ(text.status, 0) << text.output;
   EXPECT_NE(text.output.find("wavefront (OPD against the sphere"), std::string::npos) << text.output;
+}
+
+TEST(OpticsCommand, WaveFreqsAreTheMtfFrequencies) {
+  const test::RunResult run = run_eyetrace("optics --json --wave --fields 0 --freqs 10,30", false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json f = nlohmann::json::parse(run.output)["wave"][0];
+  ASSERT_EQ(f["mtf"].size(), 2u);
+  EXPECT_EQ(f["mtf"][1]["freq_cpd"].get<double>(), 30.0);
+  for (const char* bad : {"--freqs 10,500", "--freqs 10,x", "--freqs -5"}) {
+    const test::RunResult out = run_eyetrace(std::string("optics --wave --fields 0 ") + bad);
+    EXPECT_EQ(out.status, 1) << out.output;
+    EXPECT_NE(out.output.find("--freqs"), std::string::npos) << out.output;
+  }
+  EXPECT_NE(run_eyetrace("optics --wave --fields 0 --freqs 500").output.find("diffraction cut-off"), std::string::npos);
 }
 
 TEST(OpticsCommand, BadWaveOptionsNameTheFlag) {

@@ -1,0 +1,46 @@
+// FFTW3 behind one lock for planning (see fft.h).
+#include "optics/fft.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <mutex>
+
+#include <fmt/format.h>
+
+#include "optics/optics_error.h"
+
+namespace eyetrace::optics {
+
+namespace {
+
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+FftBuffer::FftBuffer(size_t count) {
+  // std::complex<double> has fftw_complex's layout (both are two doubles, real then imaginary).
+  data = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(count));
+  if (data == nullptr) throw OpticsError(fmt::format("fft: cannot allocate {} complex samples", count));
+  std::fill_n(data, count, std::complex<double>(0.0));
+}
+
+FftBuffer::~FftBuffer() { fftw_free(data); }
+
+void fft2_in_place(std::complex<double>* data, int n) {
+  auto* d = reinterpret_cast<fftw_complex*>(data);
+  fftw_plan plan = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    plan = fftw_plan_dft_2d(n, n, d, d, FFTW_FORWARD, FFTW_ESTIMATE);
+  }
+  if (plan == nullptr) throw OpticsError(fmt::format("fft: FFTW could not plan a {} x {} transform", n, n));
+  fftw_execute(plan);
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  fftw_destroy_plan(plan);
+}
+
+}  // namespace eyetrace::optics
