@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   auto render = eyetrace::add_render_command(app);
   auto optics = eyetrace::add_optics_command(app);
   auto plugins = eyetrace::add_plugins_command(app);
+  auto sweep = eyetrace::add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("optics")) return optics();
     if (app.got_subcommand("plugins")) return plugins();
+    if (app.got_subcommand("sweep")) return sweep();
   } catch (const eyetrace::SceneError& e) {
     // One line per diagnostic, compiler style, then how many when there are several.
     for (const eyetrace::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.to_string().c_str());

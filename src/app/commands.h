@@ -10,5 +10,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_optics_command(CLI::App& app);
 CommandRunner add_plugins_command(CLI::App& app);
+CommandRunner add_sweep_command(CLI::App& app);
 
 }  // namespace eyetrace

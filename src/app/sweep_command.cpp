@@ -1,0 +1,190 @@
+// `eyetrace sweep SWEEPFILE`: every job of a parameter sweep (app/sweep.h), run by up to --jobs
+// local processes, the next job going to the first free slot; finished outputs are skipped; the
+// table is written once at the end. A later MPI scheduler hands out the same jobs to ranks.
+#include <fmt/core.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/sweep.h"
+#include "app/sweep_job.h"
+#include "app/sweep_table.h"
+
+namespace eyetrace {
+
+namespace {
+
+struct SweepArgs {
+  std::string file;
+  int jobs = 1;
+  int threads = 0;  // per job; 0: the cores shared among the jobs
+  bool quiet = false;
+};
+
+// The running children, for the signal handler (which may only use lock-free atomics and kill).
+constexpr int kMaxSlots = 1024;
+std::atomic<pid_t> g_children[kMaxSlots];
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+
+// First SIGINT/SIGTERM: no new jobs, the running renders are told to stop (they write what they
+// have and its state, as `render` does) and the table is written. Second: the renders are told
+// again (they quit at once) and the sweep exits without a table.
+void on_signal(int sig) {
+  const bool second = g_signal.exchange(sig) != 0;
+  for (auto& c : g_children)
+    if (pid_t p = c.load(); p > 0) kill(p, sig);
+  if (second) _exit(128 + sig);
+}
+
+class SignalForwarding {
+ public:
+  SignalForwarding() {
+    g_signal = 0;
+    for (auto& c : g_children) c = 0;
+    struct sigaction sa;
+    std::memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, &previous_[0]);
+    sigaction(SIGTERM, &sa, &previous_[1]);
+  }
+  ~SignalForwarding() {
+    sigaction(SIGINT, &previous_[0], nullptr);
+    sigaction(SIGTERM, &previous_[1], nullptr);
+  }
+  // Starts a job with the signals blocked, so that none arrives between fork and the pid's
+  // record in `slot` (the child unblocks them before exec).
+  pid_t start(int slot, const Sweep& sweep, const SweepJob& job, int threads) {
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigprocmask(SIG_BLOCK, &block, &old);
+    pid_t pid = -1;
+    try {
+      pid = start_job(sweep, job, threads);
+      g_children[slot] = pid;
+    } catch (...) {
+      sigprocmask(SIG_SETMASK, &old, nullptr);
+      throw;
+    }
+    sigprocmask(SIG_SETMASK, &old, nullptr);
+    return pid;
+  }
+
+ private:
+  struct sigaction previous_[2];
+};
+
+struct Progress {
+  bool on;
+  size_t total, finished = 0;
+  void job(const SweepJob& job, const JobResult& r) {
+    ++finished;
+    if (!on) return;
+    std::string detail = r.status == JobStatus::Failed ? ": " + r.error
+                         : r.status == JobStatus::Done ? fmt::format(", {:.2f} s", r.render_seconds)
+                                                       : "";
+    fmt::print(stderr, "[{}/{}] {}: {}{}\n", finished, total, job.name, status_name(r.status), detail);
+  }
+};
+
+// Runs every job not already done, at most `slots` at a time; results in job order.
+std::vector<JobResult> run_jobs(const Sweep& sweep, int slots, int threads, Progress& progress) {
+  std::vector<JobResult> results(sweep.jobs.size());
+  std::vector<size_t> pending;
+  for (size_t i = 0; i < sweep.jobs.size(); ++i)
+    if (already_done(sweep.jobs[i], results[i]))
+      progress.job(sweep.jobs[i], results[i]);
+    else
+      pending.push_back(i);
+  SignalForwarding signals;
+  std::vector<std::pair<pid_t, size_t>> running(size_t(slots), {0, 0});  // slot -> (pid, job)
+  size_t next = 0, busy = 0;
+  while (busy > 0 || (next < pending.size() && g_signal == 0)) {
+    for (int s = 0; s < slots && next < pending.size() && g_signal == 0; ++s)
+      if (running[size_t(s)].first == 0) {
+        const size_t j = pending[next++];
+        running[size_t(s)] = {signals.start(s, sweep, sweep.jobs[j], threads), j};
+        ++busy;
+      }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(fmt::format("waiting for a render: {}", std::strerror(errno)));
+    }
+    for (int s = 0; s < slots; ++s)
+      if (running[size_t(s)].first == pid) {
+        g_children[s] = 0;
+        const size_t j = running[size_t(s)].second;
+        running[size_t(s)] = {0, 0};
+        --busy;
+        results[j] = finish_job(sweep.jobs[j], status);
+        progress.job(sweep.jobs[j], results[j]);
+      }
+  }
+  return results;
+}
+
+int run_sweep(const SweepArgs& a) {
+  const Sweep sweep = read_sweep(a.file);  // every input error before the first render
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.threads > 0 ? a.threads : std::max(1, cores / a.jobs);
+  Progress progress{!a.quiet && isatty(STDERR_FILENO) != 0, sweep.jobs.size()};
+  if (progress.on)
+    fmt::print(stderr, "sweep {}: {} jobs, {} at a time, {} threads each\n", a.file, sweep.jobs.size(), a.jobs,
+               threads);
+  const std::vector<JobResult> results = run_jobs(sweep, a.jobs, threads, progress);
+  write_sweep_table(sweep, results);
+  size_t failed = 0;
+  for (const JobResult& r : results) failed += r.status == JobStatus::Failed;
+  if (progress.on)
+    fmt::print(stderr, "sweep: table {}{}\n", sweep.table, failed ? fmt::format(", {} failed", failed) : "");
+  if (g_signal != 0) return 128 + g_signal;
+  return failed ? 1 : 0;
+}
+
+const char* kSweepFooter = R"(The sweep file is JSON (docs/sweeps.md):
+  {"scene": "scene.pbrt", "camera": "Camera \"navarro\" \"float fov\" 40",
+   "output": "out/sweep", "spp": 64, "resolution": "256x256", "seed": 1,
+   "vary": {"float pupildiameter": [3, 5], "float accommodation": [0, 1, 2]}}
+Each job is `eyetrace render` in its own process, writing <output>/<name>.exr (name from the
+varied values, e.g. accommodation-1_pupildiameter-3), <name>.json (statistics) and, if it
+failed, <name>.log. A job whose output and statistics already hold the same scene and options
+is skipped. The table <output>/<sweep file stem>.csv is written at the end.
+
+Interrupting: the first SIGINT or SIGTERM stops starting jobs and tells the running renders to
+stop (each writes its image so far and its state), writes the table and exits with 130 / 143.
+Run the sweep again to finish it.
+
+Exit status: 0 every job done or skipped; 1 an error in the sweep file, the scene or the output
+folder (nothing rendered), or some job failed (see the table); 2 bad command line; 130 / 143
+interrupted.)";
+
+}  // namespace
+
+CommandRunner add_sweep_command(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* c = app.add_subcommand("sweep", "Render every combination of camera parameters listed in a sweep file");
+  c->footer(kSweepFooter);
+  c->add_option("sweepfile", args->file, "Sweep file (JSON; see below)")->required();
+  c->add_option("-j,--jobs", args->jobs, "Renders run at the same time, each in its own process (default 1)")
+      ->check(CLI::Range(1, kMaxSlots));
+  c->add_option("--threads", args->threads, "Threads per render (default: the cores divided among the jobs)")
+      ->check(CLI::Range(1, 1024));
+  c->add_flag("-q,--quiet", args->quiet, "No progress (there is none either when stderr is not a terminal)");
+  return [args] { return run_sweep(*args); };
+}
+
+}  // namespace eyetrace
