@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
@@ -35,25 +36,8 @@ std::vector<std::string> render_args(const std::string& output, const std::strin
           threads,  "--seed", seed,           "-q",    "-o",    output};
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    char tmpl[] = "/tmp/eyetrace_interrupt_XXXXXX";
-    path = mkdtemp(tmpl);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
-
-std::string read_text(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using test::read_text;
+using test::TempDir;
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
   args.insert(args.end(), more.begin(), more.end());
@@ -95,7 +79,7 @@ void expect_interrupted_output(const std::string& output, const std::string& log
 }
 
 TEST(RenderInterrupt, SigintWritesPartialImageAndResumeMatchesUninterruptedRender) {
-  TempDir dir;
+  TempDir dir("eyetrace_interrupt");
   std::string out = dir.file("out.exr"), ref = dir.file("ref.exr");
   int code = render_and_interrupt(out, SIGINT, dir.file("interrupted.log"));
   EXPECT_EQ(code, 130) << read_text(dir.file("interrupted.log"));
@@ -112,7 +96,7 @@ TEST(RenderInterrupt, SigintWritesPartialImageAndResumeMatchesUninterruptedRende
 }
 
 TEST(RenderInterrupt, SigtermWritesPartialImageAndExits143) {
-  TempDir dir;
+  TempDir dir("eyetrace_interrupt");
   std::string out = dir.file("out.exr");
   int code = render_and_interrupt(out, SIGTERM, dir.file("interrupted.log"));
   EXPECT_EQ(code, 143) << read_text(dir.file("interrupted.log"));
@@ -121,7 +105,7 @@ TEST(RenderInterrupt, SigtermWritesPartialImageAndExits143) {
 
 // --resume refuses a state that is missing or belongs to another render, and keeps it.
 TEST(RenderInterrupt, ResumeRefusesMissingOrMismatchedState) {
-  TempDir dir;
+  TempDir dir("eyetrace_interrupt");
   std::string out = dir.file("out.exr");
   EXPECT_EQ(test::run_eyetrace_logged(with(render_args(out), {"--resume"}), dir.file("missing.log")), 1);
   EXPECT_NE(read_text(dir.file("missing.log")).find("render state \"" + out + ".state\" not found"), std::string::npos)

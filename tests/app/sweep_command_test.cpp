@@ -15,36 +15,19 @@
 #include <gtest/gtest.h>
 
 #include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_text;
 using test::run_eyetrace;
 using test::shell_quote;
+using test::TempDir;
 
 const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    char tmpl[] = "/tmp/eyetrace_sweep_XXXXXX";
-    path = mkdtemp(tmpl);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
-
-std::string read_text(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -73,7 +56,7 @@ const std::vector<std::string> kNames = {"fov-30_lensradius-0", "fov-30_lensradi
                                          "fov-40_lensradius-0.05"};
 
 TEST(Sweep, TwoByTwoRendersFourNamedOutputsAndATable) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   write_text(dir.file("s.json"), two_by_two());
   test::RunResult r = run_eyetrace("sweep " + shell_quote(dir.file("s.json")));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -103,7 +86,7 @@ TEST(Sweep, TwoByTwoRendersFourNamedOutputsAndATable) {
 }
 
 TEST(Sweep, RerunSkipsFinishedOutputsWithoutRendering) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   write_text(dir.file("s.json"), two_by_two());
   ASSERT_EQ(run_eyetrace("sweep -q " + shell_quote(dir.file("s.json"))).status, 0);
   std::vector<fs::file_time_type> before;
@@ -127,7 +110,7 @@ TEST(Sweep, RerunSkipsFinishedOutputsWithoutRendering) {
 }
 
 TEST(Sweep, AFailingJobIsReportedAndTheOthersFinish) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   write_text(dir.file("s.json"), two_by_two("out", "[30, 200]"));  // fov must be below 180 deg
   const test::RunResult r = run_eyetrace("sweep -q " + shell_quote(dir.file("s.json")));
   EXPECT_EQ(r.status, 1) << r.output;
@@ -142,7 +125,7 @@ TEST(Sweep, AFailingJobIsReportedAndTheOthersFinish) {
 }
 
 TEST(Sweep, LocalProcessesGiveTheSameBytesAsOne) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   write_text(dir.file("one.json"), two_by_two("one"));
   write_text(dir.file("two.json"), two_by_two("two"));
   ASSERT_EQ(run_eyetrace("sweep -q --jobs 1 " + shell_quote(dir.file("one.json"))).status, 0);
@@ -158,7 +141,7 @@ TEST(Sweep, LocalProcessesGiveTheSameBytesAsOne) {
 }
 
 TEST(Sweep, AnUnknownKeyIsAnErrorBeforeAnyRender) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   std::string text = two_by_two();
   text.replace(text.find("\"vary\""), 6, "\"vray\"");
   write_text(dir.file("s.json"), text);
@@ -170,7 +153,7 @@ TEST(Sweep, AnUnknownKeyIsAnErrorBeforeAnyRender) {
 }
 
 TEST(Sweep, AnUnknownCameraParameterIsAnErrorBeforeAnyRender) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   std::string text = two_by_two();
   text.replace(text.find("float fov"), 9, "float fvo");
   write_text(dir.file("s.json"), text);
@@ -181,7 +164,7 @@ TEST(Sweep, AnUnknownCameraParameterIsAnErrorBeforeAnyRender) {
 }
 
 TEST(Sweep, AnOutputFolderThatCannotBeMadeIsAnErrorBeforeAnyRender) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   write_text(dir.file("file"), "not a folder");
   write_text(dir.file("s.json"), two_by_two(dir.file("file/out")));
   const test::RunResult r = run_eyetrace("sweep " + shell_quote(dir.file("s.json")));
@@ -190,7 +173,7 @@ TEST(Sweep, AnOutputFolderThatCannotBeMadeIsAnErrorBeforeAnyRender) {
 }
 
 TEST(Sweep, AnInterruptedSweepLeavesNoHalfWrittenFileAndARerunFinishesIt) {
-  TempDir dir;
+  TempDir dir("eyetrace_sweep");
   // Three renders of about a second each on one thread, so the signal lands mid-sweep.
   write_text(dir.file("s.json"), R"({"scene": ")" + kScene + R"(", "camera": "Camera \"perspective\"",
       "output": "out", "spp": 512, "resolution": "32x32", "seed": 1, "vary": {"float fov": [30, 35, 40]}})");

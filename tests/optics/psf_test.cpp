@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "../support/single_surface.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
 #include "optics/mtf.h"
@@ -83,34 +84,8 @@ double rayleigh_ee_v(double fraction) {
   return 0.5 * (lo + hi);
 }
 
-// One refracting surface from air into glass (n = 1.5, R = 10 mm) with the stop in its vertex
-// plane; conic -1/n^2 images an axial object at infinity without aberration onto its far focus
-// n R / (n - 1) = 30 mm behind the vertex (as wavefront_test's single_surface).
-Prescription stigmatic_surface(double stop_radius_mm) {
-  const double n = 1.5, R = 10.0;
-  Prescription p;
-  p.name = "stigmatic surface";
-  p.wavelength_nm = p.reference_wavelength_nm = 555.0;
-  p.media = {{"air", 1.0, 555.0, {}}, {"glass", n, 555.0, {}}};
-  Surface stop;
-  stop.name = "stop";
-  stop.medium = "air";
-  stop.role = SurfaceRole::Stop;
-  stop.semi_diameter_mm = stop_radius_mm;
-  Surface lens;
-  lens.name = "conic";
-  lens.profile = SurfaceProfile::from_radius(R, -1.0 / (n * n));
-  lens.thickness_mm = n * R / (n - 1.0);
-  lens.medium = "glass";
-  lens.index_after = n;
-  Surface image;
-  image.name = "image";
-  image.medium = "glass";
-  image.index_after = n;
-  image.role = SurfaceRole::Image;
-  p.surfaces = {stop, lens, image};
-  return p;
-}
+// The stigmatic single surface of tests/support/single_surface.h, at 555 nm.
+Prescription stigmatic_surface(double stop_radius_mm) { return test::stigmatic_surface(stop_radius_mm, 555.0); }
 
 // The traced stigmatic surface, its real stop defining the pupil: an Airy pattern on the image
 // plane with its first zero at 1.22 lambda N, N = 1 / (2 n' sin u') the working f-number from the

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../support/single_surface.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -43,35 +44,7 @@ void expect_finite(const WavefrontResult& w) {
   for (double v : w.opd_waves) EXPECT_TRUE(std::isfinite(v));
 }
 
-// One refracting surface from air into glass of index n with the stop in its vertex plane. With
-// conic -1/n^2 (an ellipsoid) it images an axial object at infinity without aberration onto its
-// far focus, n R / (n - 1) behind the vertex (Descartes' ovals: the ellipse whose eccentricity is
-// 1/n), where the image plane is put.
-Prescription single_surface(double conic, double stop_radius_mm) {
-  const double n = 1.5, R = 10.0;
-  Prescription p;
-  p.name = "single surface";
-  p.wavelength_nm = p.reference_wavelength_nm = 589.3;
-  p.media = {{"air", 1.0, 589.3, {}}, {"glass", n, 589.3, {}}};
-  Surface stop;
-  stop.name = "stop";
-  stop.medium = "air";
-  stop.role = SurfaceRole::Stop;
-  stop.semi_diameter_mm = stop_radius_mm;
-  Surface lens;
-  lens.name = "conic";
-  lens.profile = SurfaceProfile::from_radius(R, conic);
-  lens.thickness_mm = n * R / (n - 1.0);
-  lens.medium = "glass";
-  lens.index_after = n;
-  Surface image;
-  image.name = "image";
-  image.medium = "glass";
-  image.index_after = n;
-  image.role = SurfaceRole::Image;
-  p.surfaces = {stop, lens, image};
-  return p;
-}
+using test::single_surface;
 
 double c(const WavefrontResult& w, int n, int m) { return w.zernike_um[zernike_single_index(n, m)]; }
 

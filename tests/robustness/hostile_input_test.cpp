@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
 #include "core/error.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
@@ -90,33 +91,13 @@ testing::AssertionResult contains(const char*, const char*, const std::string& m
                                      << (message.empty() ? "(accepted)" : message);
 }
 
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "eyetrace-hostile-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
-
 void write_file(const std::string& path, const std::string& content) {
   std::ofstream out(path, std::ios::binary);
   out << content;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::read_text;
+using test::TempDir;
 
 // ---------------------------------------------------------------------------------------
 // Truncated files and unbalanced blocks
@@ -442,7 +423,7 @@ TEST(HostileInput, EmptyMeshes) {
 // Files: recursive Include, lying PLY, textures that are not images
 
 TEST(HostileInput, RecursiveInclude) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   write_file(dir.file("a.pbrt"), "Include \"b.pbrt\"\n");
   write_file(dir.file("b.pbrt"), "WorldBegin\n\nInclude \"a.pbrt\"\n");
   write_file(dir.file("self.pbrt"), "Import \"self.pbrt\"\n");
@@ -474,7 +455,7 @@ std::string ply_header(const char* format, int64_t vertices, int faces) {
 }
 
 TEST(HostileInput, PlyThatLiesAboutItsSize) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   const std::string three(reinterpret_cast<const char*>(xyz), sizeof(xyz));
   struct Case {
@@ -511,11 +492,11 @@ TEST(HostileInput, PlyThatLiesAboutItsSize) {
 }
 
 TEST(HostileInput, TextureThatIsNotAnImage) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   write_file(dir.file("text.png"), "this is not a PNG file\n");
   write_file(dir.file("empty.exr"), "");
   // A real PNG cut after its header.
-  std::string png = read_file(EYETRACE_SOURCE_DIR "/scenes/textures/chart-uniform.png");
+  std::string png = read_text(EYETRACE_SOURCE_DIR "/scenes/textures/chart-uniform.png");
   ASSERT_GT(png.size(), 200u);
   write_file(dir.file("truncated.png"), png.substr(0, 100));
   for (const char* name : {"text.png", "empty.exr", "truncated.png"}) {
@@ -698,7 +679,7 @@ std::string write_scene(const TempDir& dir, const std::string& name = "scene.pbr
 // 2 for a bad command line (CLI11 rejects the value; its own codes 105, 106... are not
 // used), 1 for an error in the scene or in text read as scene text (--camera).
 TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   std::string truncated = dir.file("truncated.pbrt");
   write_file(truncated, in_world("Shape \"trianglemesh\" \"point3 P\" [ 0 0 0"));
   write_file(dir.file("blocker"), "a regular file where a directory should be");
@@ -745,7 +726,7 @@ TEST(HostileProgram, RefusedRunsExitNonZeroNamingTheProblem) {
 
 // A missing output directory is created (documented in docs/robustness.md).
 TEST(HostileProgram, MissingOutputDirectoryIsCreated) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   RunResult r =
       run_eyetrace("render -q " + shell_quote(write_scene(dir)) + " -o " + shell_quote(dir.file("new/sub/out.png")));
   EXPECT_EQ(r.status, 0) << r.output;
@@ -753,7 +734,7 @@ TEST(HostileProgram, MissingOutputDirectoryIsCreated) {
 }
 
 TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   std::string scene = write_scene(dir);
   std::string output = dir.file("out.exr");
   const std::string precious = "finished work from yesterday\n";
@@ -771,7 +752,7 @@ TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
   std::vector<RunResult> results = run_eyetrace_all(std::vector<std::string>(std::begin(runs), std::end(runs)));
   for (size_t i = 0; i < results.size(); ++i)
     EXPECT_EQ(results[i].status, exit_codes[i]) << runs[i] << "\n" << results[i].output;
-  EXPECT_EQ(read_file(output), precious);
+  EXPECT_EQ(read_text(output), precious);
   // Nothing else (no temporary file) is left behind.
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir.path())) files += e.is_regular_file();
@@ -782,7 +763,7 @@ TEST(HostileProgram, ExistingOutputSurvivesFailedRuns) {
 
 // The Cornell box with its Film line replaced by a spectral film of `buckets` buckets.
 std::string write_spectral_cornell(const TempDir& dir, int buckets) {
-  std::string text = read_file(EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt");
+  std::string text = read_text(EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt");
   const size_t at = text.find("Film \"rgb\"");
   EXPECT_NE(at, std::string::npos);
   text.replace(at, text.find('\n', at) - at,
@@ -796,7 +777,7 @@ std::string write_spectral_cornell(const TempDir& dir, int buckets) {
 // render's image, every bucket bit for bit; a state is refused by a film of another bucket
 // count (and kept); a PNG output is refused.
 TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
-  TempDir dir;
+  TempDir dir("eyetrace-hostile");
   const std::string scene16 = write_spectral_cornell(dir, 16), scene8 = write_spectral_cornell(dir, 8);
   const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr");
   auto args = [&](const std::string& scene, const std::string& output, const std::string& threads) {
@@ -807,26 +788,26 @@ TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
   for (const char* a : {"--checkpoint", "0", "--pass-samples", "8"}) first.push_back(a);
   // 130 is the program's own exit after the signal (being killed by it would be 1000 + 2).
   EXPECT_EQ(test::run_eyetrace_and_signal(first, dir.file("first.log"), out + ".state", SIGINT), 130)
-      << read_file(dir.file("first.log"));
+      << read_text(dir.file("first.log"));
   ASSERT_TRUE(fs::exists(out + ".state"));
   EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "1");
   const Image partial = read_image(out);
   EXPECT_EQ(partial.channels, 19);
   for (float v : partial.pixels) EXPECT_TRUE(std::isfinite(v));
 
-  const std::string state = read_file(out + ".state");
+  const std::string state = read_text(out + ".state");
   RunResult refused = run_eyetrace("render " + shell_quote(scene8) + " --resolution 32x32 --spp 256 --seed 7 -q -o " +
                                    shell_quote(out) + " --resume");
   EXPECT_EQ(refused.status, 1) << refused.output;
   EXPECT_NE(refused.output.find("is for a film with 16 spectral buckets, this render's has 8"), std::string::npos)
       << refused.output;
-  EXPECT_EQ(read_file(out + ".state"), state) << "a refused resume must not touch the state";
+  EXPECT_EQ(read_text(out + ".state"), state) << "a refused resume must not touch the state";
 
   std::vector<std::string> resume = args(scene16, out, "2");
   resume.push_back("--resume");
-  EXPECT_EQ(test::run_eyetrace_logged(resume, dir.file("resume.log")), 0) << read_file(dir.file("resume.log"));
+  EXPECT_EQ(test::run_eyetrace_logged(resume, dir.file("resume.log")), 0) << read_text(dir.file("resume.log"));
   EXPECT_EQ(test::run_eyetrace_logged(args(scene16, ref, "2"), dir.file("ref.log")), 0)
-      << read_file(dir.file("ref.log"));
+      << read_text(dir.file("ref.log"));
   EXPECT_FALSE(fs::exists(out + ".state"));
   const Image a = read_image(out), b = read_image(ref);
   ASSERT_EQ(a.channels, 19);

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "../support/temp_files.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
@@ -47,12 +48,7 @@ void expect_errors(const std::vector<BadCase>& cases) {
   }
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::read_text;
 
 TEST(ParserErrors, Syntax) {
   expect_errors({
