@@ -12,6 +12,8 @@
 #include "app/commands.h"
 #include "app/interrupt.h"
 #include "cameras/lens_system_camera.h"
+#include "render/adaptive_sampling.h"
+#include "render/image_io.h"
 #include "render/progress.h"
 #include "render/render_state.h"
 #include "scene/parser.h"
@@ -37,7 +39,12 @@ struct RenderArgs {
   double max_memory_gib = 0;
   double checkpoint = -1;  // seconds between checkpoints; 0: after every pass; < 0: none
   bool resume = false;
-  int pass_samples = 0;  // 0: adaptive
+  int pass_samples = 0;  // 0: about a second per pass
+  bool adaptive = false;
+  double target_error = 0.01;
+  int min_spp = 16;
+  int max_spp = 0;  // 0: the sampler's samples per pixel
+  std::string spp_image;
 };
 
 IVec2 parse_resolution(const std::string& s) {
@@ -75,9 +82,11 @@ void check_output_extension(const std::string& path) {
 // Everything besides the scene description that changes the image, for the state fingerprint.
 std::string image_options(const RenderArgs& a, const RenderSetup& setup) {
   const Film& f = *setup.film;
-  return fmt::format("spp={} seed={} camera={} resolution={}x{} bounds={},{},{},{}\n{}",
+  const std::string adaptive =
+      a.adaptive ? fmt::format(" adaptive={:.17g},{},{}", a.target_error, a.min_spp, a.max_spp) : "";
+  return fmt::format("spp={} seed={} camera={} resolution={}x{} bounds={},{},{},{}{}\n{}",
                      setup.sampler->samples_per_pixel(), a.seed, a.camera, f.resolution().x, f.resolution().y,
-                     f.bounds().lo.x, f.bounds().lo.y, f.bounds().hi.x, f.bounds().hi.y, setup.description);
+                     f.bounds().lo.x, f.bounds().lo.y, f.bounds().hi.x, f.bounds().hi.y, adaptive, setup.description);
 }
 
 // Loads `path` into the film and tiles, refusing a state made for another render.
@@ -202,6 +211,70 @@ void write_stats(const RenderArgs& a, const nlohmann::json& j) {
   std::filesystem::rename(tmp, a.stats);
 }
 
+// The adaptive options, checked against the sampler the scene and --spp / --max-spp gave.
+std::optional<AdaptiveOptions> adaptive_options(const RenderArgs& a, const Sampler& sampler) {
+  if (!a.adaptive) return std::nullopt;
+  if (!sampler.progressive())
+    throw_parameter_error({}, "--adaptive",
+                          fmt::format("the sampler ({}) cannot stop a pixel at any sample count (a stratified grid "
+                                      "fills its strata row by row); use \"zsobol\", \"sobol\", \"halton\" or "
+                                      "\"independent\"",
+                                      sampler.to_string()));
+  AdaptiveOptions o;
+  o.target_error = a.target_error;
+  o.min_spp = a.min_spp;
+  o.max_spp = sampler.samples_per_pixel();
+  if (o.max_spp < o.min_spp)
+    throw_parameter_error({}, "--max-spp",
+                          fmt::format("{} samples per pixel (after the sampler's rounding) is below --min-spp {}, the "
+                                      "first pass every pixel takes",
+                                      o.max_spp, o.min_spp));
+  return o;
+}
+
+// How the samples spread over the pixels: for --stats and the summary line.
+nlohmann::json spp_distribution(const TileProgress& tiles, const PixelBounds& b) {
+  std::vector<int> n = tiles.adaptive() ? tiles.pixel_done : std::vector<int>();
+  if (n.empty())
+    for (size_t t = 0; t < tiles.done.size(); ++t) n.insert(n.end(), tiles.tile_bounds(t, b).area(), tiles.done[t]);
+  std::sort(n.begin(), n.end());
+  double sum = 0;
+  std::map<int, size_t> histogram;
+  for (int v : n) {
+    sum += v;
+    ++histogram[v];
+  }
+  nlohmann::json h = nlohmann::json::array();
+  for (auto [spp, pixels] : histogram) h.push_back({{"spp", spp}, {"pixels", pixels}});
+  auto at = [&](double q) { return n.empty() ? 0 : n[std::min(n.size() - 1, size_t(q * double(n.size())))]; };
+  return {{"mean", n.empty() ? 0.0 : sum / double(n.size())},
+          {"min", n.empty() ? 0 : n.front()},
+          {"p10", at(0.1)},
+          {"median", at(0.5)},
+          {"p90", at(0.9)},
+          {"max", n.empty() ? 0 : n.back()},
+          {"histogram", h}};
+}
+
+// --spp-image: each pixel's sample count as a one-channel float EXR.
+void write_spp_image(const std::string& path, const TileProgress& tiles, const PixelBounds& b) {
+  Image img;
+  img.width = b.width();
+  img.height = b.height();
+  img.channels = 1;
+  img.channel_names = {"spp"};
+  img.pixels.resize(b.area());
+  for (size_t t = 0; t < tiles.done.size(); ++t) {
+    const PixelBounds tb = tiles.tile_bounds(t, b);
+    for (int y = tb.lo.y; y < tb.hi.y; ++y)
+      for (int x = tb.lo.x; x < tb.hi.x; ++x) {
+        const size_t i = size_t(y - b.lo.y) * size_t(b.width()) + size_t(x - b.lo.x);
+        img.pixels[i] = float(tiles.adaptive() ? tiles.pixel_done[i] : tiles.done[t]);
+      }
+  }
+  write_image(path, img, {{"eyetrace:channel", "samples per pixel"}});
+}
+
 int run_render(const RenderArgs& a) {
   set_warnings_enabled(!a.quiet);
   set_warnings_fatal(a.strict);
@@ -210,7 +283,7 @@ int run_render(const RenderArgs& a) {
   if (!a.camera.empty()) o.camera = parse_directive_text(a.camera, "Camera", "--camera");
   if (!a.resolution.empty()) o.resolution = parse_resolution(a.resolution);
   if (!a.crop.empty()) o.crop = parse_crop(a.crop);
-  o.spp = a.spp;
+  o.spp = a.max_spp > 0 ? a.max_spp : a.spp;
   if (a.seed >= 0) o.seed = uint64_t(a.seed);
   o.max_memory_bytes = a.max_memory_gib > 0 ? uint64_t(a.max_memory_gib * 1073741824.0) : default_memory_limit();
   o.output = a.output;
@@ -222,6 +295,7 @@ int run_render(const RenderArgs& a) {
   const std::optional<RetinalIrradiance> irradiance = retinal_irradiance(setup);
   const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup), setup.files_read);
   const int spp = setup.sampler->samples_per_pixel();
+  const std::optional<AdaptiveOptions> adaptive = adaptive_options(a, *setup.sampler);
   TileProgress tiles = TileProgress::start(setup.film->bounds());
   if (a.resume) resume_from(state_path(output), fingerprint, setup, tiles);
   const int resumed_at = tiles.min_done();
@@ -237,11 +311,12 @@ int run_render(const RenderArgs& a) {
   ro.tiles = &tiles;
   ro.stop = &interrupt.stop_requested();
   ro.pass_samples = a.pass_samples;
+  ro.adaptive = adaptive ? &*adaptive : nullptr;
   auto last_checkpoint = std::chrono::steady_clock::now();
   if (a.checkpoint >= 0)
     ro.on_pass = [&](const TileProgress& t) {
       auto now = std::chrono::steady_clock::now();
-      if (t.min_done() >= spp || std::chrono::duration<double>(now - last_checkpoint).count() < a.checkpoint) return;
+      if (t.complete(spp) || std::chrono::duration<double>(now - last_checkpoint).count() < a.checkpoint) return;
       save(output, a, setup, t, fingerprint, Snapshot{}, irradiance);
       last_checkpoint = std::chrono::steady_clock::now();
     };
@@ -250,7 +325,7 @@ int run_render(const RenderArgs& a) {
   double seconds = progress.elapsed_seconds();
   double render_seconds = seconds - setup_seconds;
 
-  const bool complete = tiles.min_done() >= spp;
+  const bool complete = tiles.complete(spp);
   if (complete) {
     save(output, a, setup, tiles, fingerprint, Snapshot{false, true}, irradiance);
     std::error_code ec;
@@ -265,11 +340,17 @@ int run_render(const RenderArgs& a) {
   } else {
     fmt::print(stderr, "eyetrace: interrupted before any sample was finished: nothing written\n");
   }
+  const nlohmann::json spread = spp_distribution(tiles, setup.film->bounds());
+  if (!a.spp_image.empty() && tiles.max_done() > 0) write_spp_image(a.spp_image, tiles, setup.film->bounds());
   uint64_t rays = counters.rays_traced, cam = counters.camera_rays, lost = counters.camera_rays_lost;
+  const std::string spp_text =
+      adaptive ? fmt::format("adaptive {:.1f} spp (min {}, median {}, max {})", spread["mean"].get<double>(),
+                             spread["min"].get<int>(), spread["median"].get<int>(), spread["max"].get<int>())
+               : fmt::format("{} spp", spp);
   if (!a.quiet && complete)
-    fmt::print("{}: {:.2f} s ({:.2f} s render{}), {} spp, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
-               seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "", spp, cam,
-               cam ? 100.0 * lost / cam : 0.0, render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
+    fmt::print("{}: {:.2f} s ({:.2f} s render{}), {}, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
+               seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "", spp_text,
+               cam, cam ? 100.0 * lost / cam : 0.0, render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
                counters.nonfinite_samples
                    ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load())
                    : "");
@@ -289,6 +370,11 @@ int run_render(const RenderArgs& a) {
                     {"render_seconds", render_seconds},
                     {"samples_per_pixel", spp},
                     {"samples_per_pixel_completed", tiles.min_done()},
+                    {"samples_per_pixel_distribution", spread},
+                    {"adaptive", adaptive ? nlohmann::json{{"target_error", adaptive->target_error},
+                                                           {"min_spp", adaptive->min_spp},
+                                                           {"max_spp", adaptive->max_spp}}
+                                          : nlohmann::json(nullptr)},
                     {"resumed_at_samples_per_pixel", resumed_at},
                     {"interrupted", !complete},
                     {"samples", counters.samples.load()},
@@ -370,6 +456,44 @@ CommandRunner add_render_command(CLI::App& app) {
   c->add_option("--pass-samples", args->pass_samples,
                 "Samples per pixel per pass (default: passes of about a second); the image does not depend on it")
       ->check(CLI::Range(1, 1 << 24));
+  c->add_flag("--adaptive", args->adaptive,
+              "Adaptive sampling: pixels stop taking samples once their estimated relative error is below "
+              "--target-error (docs/adaptive-sampling.md)");
+  c->add_option("--target-error", args->target_error,
+                "Adaptive: the relative standard error of a pixel's mean luminance to reach (default 0.01)")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            double e = 0;
+            try {
+              e = std::stod(v);
+            } catch (const std::exception&) {
+              return "\"" + v + "\" is not a number";
+            }
+            return std::isfinite(e) && e > 0 && e < 1e3 ? "" : "\"" + v + "\": must be a number in (0, 1000)";
+          },
+          "E"));
+  c->add_option("--min-spp", args->min_spp, "Adaptive: samples every pixel takes before any stops (default 16)")
+      ->check(CLI::Range(2, 1 << 20));
+  c->add_option("--max-spp", args->max_spp,
+                "Adaptive: the most samples a pixel takes (default: --spp or the Sampler's)")
+      ->check(CLI::Range(1, 1 << 24));
+  c->add_option("--spp-image", args->spp_image, "Write each pixel's sample count to this EXR (one channel, \"spp\")")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            std::string ext = std::filesystem::path(v).extension().string();
+            for (auto& ch : ext) ch = char(std::tolower(ch));
+            return ext == ".exr" ? "" : "\"" + v + "\": the sample-count image is written as .exr";
+          },
+          "PATH"));
+  c->callback([args, c] {
+    for (const char* o : {"--target-error", "--min-spp", "--max-spp"})
+      if (c->count(o) && !args->adaptive) throw CLI::ValidationError(o, "needs --adaptive");
+    if (args->adaptive && args->max_spp > 0 && args->max_spp < args->min_spp)
+      throw CLI::ValidationError("--max-spp", fmt::format("{} is below --min-spp {}, the first pass every pixel takes",
+                                                          args->max_spp, args->min_spp));
+    if (c->count("--max-spp") && c->count("--spp") && args->max_spp != args->spp)
+      throw CLI::ValidationError("--max-spp", "differs from --spp: with --adaptive, give one of them");
+  });
   return [args] { return run_render(*args); };
 }
 

@@ -19,6 +19,10 @@ class Sampler {
   // The film-position sample; samplers may treat it specially (e.g. stratify it first).
   virtual Vec2 get_pixel_2d() = 0;
   virtual std::unique_ptr<Sampler> clone() const = 0;
+  // Whether a pixel's first n samples are well spread for every n up to samples_per_pixel(), so
+  // that adaptive sampling may stop a pixel anywhere (a stratified grid is not: its first
+  // samples fill the first rows of strata).
+  virtual bool progressive() const { return true; }
   virtual std::string to_string() const = 0;
 };
 

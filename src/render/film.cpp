@@ -70,6 +70,8 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
   px.sum[1] += double(w) * rgb.g;
   px.sum[2] += double(w) * rgb.b;
   px.weight += w;
+  const double wy = double(w) * double(luminance(rgb));
+  px.sum_y2 += wy * wy;
   double* sums = &bucket_sums_[i_px * 2 * size_t(buckets_.count)];
   for (int i = 0; i < kSpectrumSamples; ++i)
     if (bucket[i] >= 0) sums[bucket[i]] += term[i];
@@ -112,6 +114,12 @@ float Film::bucket_value(IVec2 p, int b) const {
   return float((sums[b] + sums[size_t(buckets_.count) + size_t(b)]) * (scale_ / weight));
 }
 
+Film::Moments Film::moments(IVec2 p) const {
+  const Pixel& px = pixels_[index(p)];
+  // The weights of core/math.h's luminance(), applied to the sums in double precision.
+  return {0.2126 * px.sum[0] + 0.7152 * px.sum[1] + 0.0722 * px.sum[2], px.sum_y2, px.weight};
+}
+
 Image Film::image() const {
   Image img;
   img.width = bounds_.width();
@@ -151,7 +159,7 @@ std::vector<double> Film::accumulators() const {
   acc.reserve(pixels_.size() * accumulators_per_pixel());
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const Pixel& p = pixels_[i];
-    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight, p.splat[0], p.splat[1], p.splat[2]});
+    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight, p.splat[0], p.splat[1], p.splat[2], p.sum_y2});
     acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n),
                bucket_sums_.begin() + std::ptrdiff_t((i + 1) * 2 * n));
   }
@@ -163,7 +171,7 @@ void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
   if (acc.size() != pixels_.size() * per) throw std::invalid_argument("Film::restore: wrong number of accumulators");
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const double* a = &acc[per * i];
-    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}};
+    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}, a[7]};
     std::copy(a + kAccumulatorsPerPixel, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n));
   }
   nonfinite_ = nonfinite_samples;

@@ -97,6 +97,8 @@ class Film {
     px.sum[1] += double(w) * L.g;
     px.sum[2] += double(w) * L.b;
     px.weight += w;
+    const double wy = double(w) * double(luminance(L));
+    px.sum_y2 += wy * wy;
     return true;
   }
   // Adds radiance L, already weighted, to `pixel`'s splat sums (R, G, B and, for a spectral
@@ -111,12 +113,20 @@ class Film {
   std::map<std::string, std::string> image_metadata() const;
   uint64_t nonfinite_samples() const { return nonfinite_; }
 
+  // What a pixel's own samples (not splats) say about its mean luminance: the sums of w Y and
+  // (w Y)^2 over its samples (Y the luminance of the sample's linear sRGB, before the film's
+  // scale) and of the weights w. Adaptive sampling estimates each pixel's error from them.
+  struct Moments {
+    double sum_y = 0, sum_y2 = 0, weight = 0;
+  };
+  Moments moments(IVec2 pixel) const;
+
   // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums, the
-  // weight sum and the r, g, b splat sums, then (spectral film) the weighted sum of each bucket
-  // and each bucket's splat sum: kAccumulatorsPerPixel + 2 buckets().count doubles per pixel. A checkpoint stores them,
-  // and a film restored from them continues bit for bit as if it had never stopped.
+  // weight sum, the r, g, b splat sums and the sum of squared weighted luminances, then (spectral film) the weighted
+  // sum of each bucket and each bucket's splat sum: kAccumulatorsPerPixel + 2 buckets().count doubles per pixel. A
+  // checkpoint stores them, and a film restored from them continues bit for bit as if it had never stopped.
   std::vector<double> accumulators() const;
-  static constexpr size_t kAccumulatorsPerPixel = 7;
+  static constexpr size_t kAccumulatorsPerPixel = 8;
   size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + 2 * size_t(buckets_.count); }
   // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
@@ -126,6 +136,7 @@ class Film {
     double sum[3] = {0, 0, 0};
     double weight = 0;
     double splat[3] = {0, 0, 0};
+    double sum_y2 = 0;  // of (w Y)^2 over the pixel's own samples
   };
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
   bool bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lambda, float w, int* bucket,

@@ -51,8 +51,10 @@ class SampleBatch {
  public:
   // tile: the pixels this thread owns, into which a dispersive camera may splat wavelengths
   // (box filter: see Film).
+  // allow_splat false: every wavelength counts in the sample's own pixel only (adaptive
+  // sampling gives the pixels of a tile different sample counts, which splats cannot share).
   SampleBatch(const Integrator& integrator, const Camera& camera, Film& film, ThreadState& ts, RayTally& tally,
-              uint64_t& lost, const PixelBounds& tile)
+              uint64_t& lost, const PixelBounds& tile, bool allow_splat)
       : integrator_(integrator),
         camera_(camera),
         film_(film),
@@ -60,7 +62,7 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        splat_(camera.splats() && film.filter().constant()) {}
+        splat_(allow_splat && camera.splats() && film.filter().constant()) {}
   bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
 
@@ -140,12 +142,24 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
                         RenderCounters& counters) const {
   const PixelBounds& b = film.bounds();
   const int spp = sampler.samples_per_pixel();
+  const AdaptiveOptions* adaptive = opts.adaptive;
   TileProgress own;
   TileProgress& tp = opts.tiles ? *opts.tiles : own;
-  if (tp.done.empty()) tp = TileProgress::start(b);
-  if (!tp.matches(b)) throw std::invalid_argument("Integrator::render: tile progress does not match the film");
+  if (adaptive && adaptive->max_spp != spp)
+    throw std::invalid_argument("Integrator::render: adaptive max_spp differs from the sampler's samples per pixel");
+  // A fresh progress (none, or TileProgress::start's) becomes an adaptive one when asked for.
+  if (tp.done.empty() || (adaptive && !tp.adaptive() && tp.max_done() == 0)) {
+    if (adaptive)
+      start_adaptive(b, *adaptive, tp);
+    else
+      tp = TileProgress::start(b);
+  }
+  if (!tp.matches(b) || tp.adaptive() != bool(adaptive) || (adaptive && tp.pixel_done.size() != b.area()))
+    throw std::invalid_argument("Integrator::render: tile progress does not match the film");
   tbb::enumerable_thread_specific<ThreadState> states([&] { return ThreadState{sampler.clone(), ScratchBuffer()}; });
-  const double total = double(b.area()) * spp;
+  // Progress: uniform, the fraction of all samples; adaptive, of the samples taken and the
+  // most the pixels still going could take (updated each pass, so it jumps as pixels stop).
+  double total = double(b.area()) * spp;
   std::atomic<uint64_t> samples_done{tp.samples(b)};
   std::mutex progress_mutex;
   auto last_report = std::chrono::steady_clock::now();
@@ -159,35 +173,40 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
     auto now = std::chrono::steady_clock::now();
     if (force || now - last_report > std::chrono::milliseconds(250)) {
       last_report = now;
-      opts.on_progress(total > 0 ? double(samples_done.load()) / total : 1.0, counters.rays_traced.load());
+      const double f = tp.complete(spp) ? 1.0 : total > 0 ? double(samples_done.load()) / total : 1.0;
+      opts.on_progress(std::min(f, 1.0), counters.rays_traced.load());
     }
     progress_mutex.unlock();
   };
 
-  // Tile t gets samples [tp.done[t], end) of each pixel; only this thread touches tile t.
-  auto render_tile = [&](size_t t, int end) {
-    if (tp.done[t] >= end || stopped()) return;
+  // Tile t takes, for each pixel, the samples [from, to) that `range` gives it; only this
+  // thread touches tile t.
+  auto render_tile = [&](size_t t, auto&& range) {
     ThreadState& ts = states.local();
     PixelBounds tb = tp.tile_bounds(t, b);
     RayTally tally;
-    uint64_t lost = 0;
+    uint64_t lost = 0, n = 0;
     {
-      SampleBatch batch(*this, camera, film, ts, tally, lost, tb);
+      SampleBatch batch(*this, camera, film, ts, tally, lost, tb, !adaptive);
+      auto [first, end] = range(tb.lo);
       if (batch.splats()) {
         // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
         // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
-        // mono eye on the figure scene), so only where splats happen.
-        for (int i = tp.done[t]; i < end; ++i)
+        // mono eye on the figure scene), so only where splats happen. Uniform only: every
+        // pixel of the tile has the same range.
+        for (int i = first; i < end; ++i)
           for (int y = tb.lo.y; y < tb.hi.y; ++y)
             for (int x = tb.lo.x; x < tb.hi.x; ++x) batch.add(IVec2(x, y), i);
+        n = tb.area() * uint64_t(end - first);
       } else {
         for (int y = tb.lo.y; y < tb.hi.y; ++y)
-          for (int x = tb.lo.x; x < tb.hi.x; ++x)
-            for (int i = tp.done[t]; i < end; ++i) batch.add(IVec2(x, y), i);
+          for (int x = tb.lo.x; x < tb.hi.x; ++x) {
+            auto [from, to] = range(IVec2(x, y));
+            for (int i = from; i < to; ++i) batch.add(IVec2(x, y), i);
+            n += uint64_t(std::max(0, to - from));
+          }
       }
     }
-    uint64_t n = tb.area() * uint64_t(end - tp.done[t]);
-    tp.done[t] = end;
     counters.samples += n;
     counters.camera_rays += n;
     counters.camera_rays_lost += lost;
@@ -197,23 +216,58 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
     samples_done += n;
     report(false);
   };
-
   int threads = opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
-  int pass = opts.pass_samples > 0 ? opts.pass_samples : 1;
-  while (tp.min_done() < spp && !stopped()) {
-    // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
-    const int first = tp.min_done(), end = std::min(spp, first + pass);
-    auto t0 = std::chrono::steady_clock::now();
+  auto for_each_tile = [&](auto&& body) {
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, tp.done.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t t = r.begin(); t != r.end(); ++t) render_tile(t, end);
+        for (size_t t = r.begin(); t != r.end(); ++t)
+          if (!stopped()) body(t);
       });
     });
-    if (stopped()) break;
-    if (opts.on_pass) opts.on_pass(tp);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (opts.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts.pass_seconds);
+  };
+
+  if (adaptive) {
+    // Pixel p of tile t takes [pixel_done, pixel_target); a tile is done when all its pixels are.
+    auto pixel = [&](IVec2 p) { return size_t(p.y - b.lo.y) * size_t(b.width()) + size_t(p.x - b.lo.x); };
+    auto remaining = [&] {
+      uint64_t r = 0;
+      for (size_t i = 0; i < tp.pixel_done.size(); ++i)
+        if (tp.pixel_target[i] > tp.pixel_done[i]) r += uint64_t(spp - tp.pixel_done[i]);
+      return r;
+    };
+    while (!tp.complete(spp) && !stopped()) {
+      total = double(samples_done.load() + remaining());
+      for_each_tile([&](size_t t) {
+        render_tile(t, [&](IVec2 p) { return std::pair(tp.pixel_done[pixel(p)], tp.pixel_target[pixel(p)]); });
+        const PixelBounds tb = tp.tile_bounds(t, b);
+        for (int y = tb.lo.y; y < tb.hi.y; ++y)
+          for (int x = tb.lo.x; x < tb.hi.x; ++x)
+            tp.pixel_done[pixel(IVec2(x, y))] = tp.pixel_target[pixel(IVec2(x, y))];
+      });
+      // Planned as soon as the pass is whole, stopped or not, so that a saved state is either
+      // mid-pass or planned (complete exactly when no pixel has a target beyond its samples).
+      if (tp.pixel_done != tp.pixel_target) break;
+      plan_next_pass(film, *adaptive, tp);
+      if (stopped()) break;
+      if (opts.on_pass) opts.on_pass(tp);
+    }
+  } else {
+    int pass = opts.pass_samples > 0 ? opts.pass_samples : 1;
+    while (tp.min_done() < spp && !stopped()) {
+      // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
+      const int first = tp.min_done(), end = std::min(spp, first + pass);
+      auto t0 = std::chrono::steady_clock::now();
+      for_each_tile([&](size_t t) {
+        if (tp.done[t] >= end) return;
+        render_tile(t, [&](IVec2) { return std::pair(tp.done[t], end); });
+        tp.done[t] = end;
+      });
+      if (stopped()) break;
+      if (opts.on_pass) opts.on_pass(tp);
+      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (opts.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts.pass_seconds);
+    }
   }
   report(true);
   counters.nonfinite_samples = film.nonfinite_samples();

@@ -12,6 +12,7 @@
 #include "core/ray.h"
 #include "core/sampled_spectrum.h"
 #include "core/sampler.h"
+#include "render/adaptive_sampling.h"
 #include "render/tile_progress.h"
 
 namespace eyetrace {
@@ -58,6 +59,9 @@ struct RenderOptions {
   // Called after every complete pass, on the calling thread, with no tile in flight: the
   // film and `tiles` are consistent, so this is where a checkpoint can be written.
   std::function<void(const TileProgress&)> on_pass;
+  // Adaptive sampling (render/adaptive_sampling.h); null: every pixel takes the sampler's
+  // samples per pixel. Its max_spp must be the sampler's samples per pixel.
+  const AdaptiveOptions* adaptive = nullptr;
 };
 
 class Integrator {

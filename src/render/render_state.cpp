@@ -84,6 +84,8 @@ void write_render_state(const std::string& path, const RenderState& s) {
                 s.samples_per_pixel, TileProgress::kTileSize, s.tiles.tiles.x, s.tiles.tiles.y, s.spectral_buckets})
     w.put(int32_t(v));
   w.put_array(s.tiles.done);
+  w.put_array(s.tiles.pixel_done);
+  w.put_array(s.tiles.pixel_target);
   w.put(s.nonfinite_samples);
   w.put_array(s.accumulators);
   w.put(fnv1a(w.bytes()));
@@ -143,6 +145,8 @@ RenderState read_render_state(const std::string& path) {
     r.corrupt(
         fmt::format("its spectral bucket count {} is outside [0, {}]", s.spectral_buckets, SpectralBuckets::kMaxCount));
   s.tiles.done = r.get_array<int>();
+  s.tiles.pixel_done = r.get_array<int>();
+  s.tiles.pixel_target = r.get_array<int>();
   s.nonfinite_samples = r.get<uint64_t>();
   s.accumulators = r.get_array<double>();
   if (r.position() + 8 != bytes.size()) r.corrupt("it has trailing bytes");
@@ -152,6 +156,13 @@ RenderState read_render_state(const std::string& path) {
   if (!sane) r.corrupt("its film and tile sizes disagree");
   for (int d : s.tiles.done)
     if (d < 0 || d > s.samples_per_pixel) r.corrupt("a tile count is outside [0, samples per pixel]");
+  const size_t adaptive = s.tiles.pixel_done.size();
+  if ((adaptive != 0 && adaptive != s.bounds.area()) || s.tiles.pixel_target.size() != adaptive)
+    r.corrupt("its per-pixel sample counts do not match the film");
+  for (size_t i = 0; i < adaptive; ++i)
+    if (s.tiles.pixel_done[i] < 0 || s.tiles.pixel_done[i] > s.tiles.pixel_target[i] ||
+        s.tiles.pixel_target[i] > s.samples_per_pixel)
+      r.corrupt("a pixel's sample count is outside [0, its target <= samples per pixel]");
   return s;
 }
 

@@ -15,16 +15,18 @@
 namespace eyetrace {
 
 struct RenderState {
-  // 3: the accumulators hold 7 + 2 buckets doubles per pixel: r, g, b, weight, the three splat
-  // sums, the buckets, their splat sums (version 2: no splat sums; version 1: 4, RGB films only).
-  static constexpr uint32_t kVersion = 3;
+  // 4: the accumulators hold 8 + 2 buckets doubles per pixel: r, g, b, weight, the three splat
+  // sums, the sum of squared luminances, the buckets, their splat sums; an adaptive render's
+  // per-pixel counts and targets follow the tile counts (version 3: no squared luminances, no
+  // adaptive renders; 2: no splat sums; 1: 4 accumulators, RGB films only).
+  static constexpr uint32_t kVersion = 4;
   uint64_t fingerprint = 0;  // of the scene and every option that changes the image
   IVec2 resolution{0};
   PixelBounds bounds;
   int samples_per_pixel = 0;  // requested
   TileProgress tiles;
   int spectral_buckets = 0;          // Film::buckets().count (0: an RGB film)
-  std::vector<double> accumulators;  // Film::accumulators(): 4 + spectral_buckets per pixel
+  std::vector<double> accumulators;  // Film::accumulators()
   uint64_t nonfinite_samples = 0;
 };
 

@@ -2,6 +2,10 @@
 // pixel it holds. A tile with count n holds sample indices [0, n) of each of its pixels,
 // summed in index order, which is what makes a stopped-and-resumed render bit-identical to
 // an uninterrupted one (the film's per-pixel sums see the same additions in the same order).
+//
+// An adaptive render (render/adaptive_sampling.h) counts per pixel instead: pixel p holds
+// sample indices [0, pixel_done[p]) and the pass under way takes it to pixel_target[p]; a
+// tile is finished with the pass when all its pixels have reached their targets.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -15,6 +19,10 @@ struct TileProgress {
   static constexpr int kTileSize = 16;
   IVec2 tiles{0};         // tile grid over the film's pixel bounds
   std::vector<int> done;  // samples per pixel held, per tile, row-major
+  // Adaptive renders only (empty otherwise): per pixel of the bounds, row-major.
+  std::vector<int> pixel_done, pixel_target;
+
+  bool adaptive() const { return !pixel_done.empty(); }
 
   static TileProgress start(const PixelBounds& b) {
     TileProgress p;
@@ -33,14 +41,26 @@ struct TileProgress {
     r.hi = glm::min(r.lo + IVec2(kTileSize), b.hi);
     return r;
   }
-  int min_done() const { return done.empty() ? 0 : *std::min_element(done.begin(), done.end()); }
-  int max_done() const { return done.empty() ? 0 : *std::max_element(done.begin(), done.end()); }
+  // The fewest and most samples any pixel holds.
+  int min_done() const { return min_of(adaptive() ? pixel_done : done); }
+  int max_done() const { return max_of(adaptive() ? pixel_done : done); }
+  // Every pixel has all the samples it will get: `spp` each, or, adaptive, its target with no
+  // pass planned beyond it.
+  bool complete(int spp) const { return adaptive() ? pixel_done == pixel_target : min_done() >= spp; }
   // Camera samples the film holds in all.
   uint64_t samples(const PixelBounds& b) const {
     uint64_t n = 0;
+    if (adaptive()) {
+      for (int d : pixel_done) n += uint64_t(d);
+      return n;
+    }
     for (size_t t = 0; t < done.size(); ++t) n += uint64_t(tile_bounds(t, b).area()) * uint64_t(done[t]);
     return n;
   }
+
+ private:
+  static int min_of(const std::vector<int>& v) { return v.empty() ? 0 : *std::min_element(v.begin(), v.end()); }
+  static int max_of(const std::vector<int>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 };
 
 }  // namespace eyetrace

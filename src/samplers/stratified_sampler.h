@@ -20,6 +20,7 @@ class StratifiedSampler : public Sampler {
   Vec2 get_2d() override;
   Vec2 get_pixel_2d() override { return get_2d(); }
   std::unique_ptr<Sampler> clone() const override { return std::make_unique<StratifiedSampler>(*this); }
+  bool progressive() const override { return false; }
   std::string to_string() const override;
 
  private:

@@ -259,9 +259,10 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   RenderState too_many = st;
   too_many.spectral_buckets = 100000;
   EXPECT_NE(error_for(too_many).find("spectral bucket count 100000 is outside [0, 512]"), std::string::npos);
-  // Version 1 and 2 files (before spectral films; before splat sums) are refused by version,
+  // Version 1, 2 and 3 files (before spectral films; before splat sums; before squared
+  // luminances and adaptive counts) are refused by version,
   // not misread.
-  for (uint32_t old_version : {1u, 2u}) {
+  for (uint32_t old_version : {1u, 2u, 3u}) {
     write_render_state(path, st);
     std::string bytes;
     {
@@ -278,7 +279,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
       ADD_FAILURE() << "a version " << old_version << " state was read";
     } catch (const SceneError& e) {
       EXPECT_NE(
-          std::string(e.what()).find(fmt::format("format version {}, this eyetrace reads version 3", old_version)),
+          std::string(e.what()).find(fmt::format("format version {}, this eyetrace reads version 4", old_version)),
           std::string::npos)
           << e.what();
     }

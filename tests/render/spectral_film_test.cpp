@@ -129,7 +129,8 @@ TEST(SpectralFilm, SampleNotFiniteAtAnyCountingWavelengthLeavesTheFilmUntouched)
 
 TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   Film whole = spectral_film(5), first = spectral_film(5);
-  EXPECT_EQ(whole.accumulators_per_pixel(), 17u);  // r, g, b, weight, 3 splat sums, 5 buckets, their splats
+  // r, g, b, weight, 3 splat sums, the squared luminances, 5 buckets, their splats
+  EXPECT_EQ(whole.accumulators_per_pixel(), 18u);
   auto add = [](Film& f, int k) {
     SampledWavelengths l = SampledWavelengths::sample_visible(0.137f * k - std::floor(0.137f * k));
     SampledSpectrum L(0.3f + 0.1f * k);
@@ -142,11 +143,11 @@ TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   resumed.restore(first.accumulators(), 3);
   for (int k = 10; k < 20; ++k) add(resumed, k);
   const std::vector<double> a = resumed.accumulators(), b = whole.accumulators();
-  ASSERT_EQ(a.size(), 2u * 17u);
+  ASSERT_EQ(a.size(), 2u * 18u);
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
   EXPECT_EQ(resumed.nonfinite_samples(), 3u);
   Film rgb(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>());
-  EXPECT_THROW(rgb.restore(a, 0), std::invalid_argument);  // an RGB film's 4 per pixel
+  EXPECT_THROW(rgb.restore(a, 0), std::invalid_argument);  // an RGB film's 8 per pixel
   EXPECT_THROW(resumed.restore(rgb.accumulators(), 0), std::invalid_argument);
 }
 
