@@ -1,9 +1,12 @@
 // `eyetrace render SCENE.pbrt`: parse, apply command-line overrides, render, write.
 #include <fmt/core.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <climits>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -12,6 +15,7 @@
 #include "app/commands.h"
 #include "app/interrupt.h"
 #include "cameras/lens_system_camera.h"
+#include "distributed/launch.h"
 #include "render/adaptive_sampling.h"
 #include "render/image_io.h"
 #include "render/progress.h"
@@ -45,6 +49,7 @@ struct RenderArgs {
   int min_spp = 16;
   int max_spp = 0;  // 0: the sampler's samples per pixel
   std::string spp_image;
+  std::string mpi_split = "interleaved";
 };
 
 IVec2 parse_resolution(const std::string& s) {
@@ -275,10 +280,21 @@ void write_spp_image(const std::string& path, const TileProgress& tiles, const P
   write_image(path, img, {{"eyetrace:channel", "samples per pixel"}});
 }
 
-int run_render(const RenderArgs& a) {
-  set_warnings_enabled(!a.quiet);
-  set_warnings_fatal(a.strict);
-  SceneDescription desc = parse_scene_file(a.scene);
+// Everything a render job prepares before its first sample, the same on every rank.
+struct Job {
+  SceneDescription desc;
+  RenderSetup setup;
+  std::string output;
+  std::optional<RetinalIrradiance> irradiance;
+  uint64_t fingerprint = 0;
+  int spp = 0;
+  std::optional<AdaptiveOptions> adaptive;
+  TileProgress tiles;
+};
+
+std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
+  auto job = std::make_unique<Job>();
+  job->desc = parse_scene_file(a.scene);
   RenderOverrides o;
   if (!a.camera.empty()) o.camera = parse_directive_text(a.camera, "Camera", "--camera");
   if (!a.resolution.empty()) o.resolution = parse_resolution(a.resolution);
@@ -287,22 +303,166 @@ int run_render(const RenderArgs& a) {
   if (a.seed >= 0) o.seed = uint64_t(a.seed);
   o.max_memory_bytes = a.max_memory_gib > 0 ? uint64_t(a.max_memory_gib * 1073741824.0) : default_memory_limit();
   o.output = a.output;
+  job->setup = build_render_setup(job->desc, o);
+  RenderSetup& setup = job->setup;
+  job->output = a.output.empty() ? setup.output_filename : a.output;
+  check_output_extension(job->output);
+  job->irradiance = retinal_irradiance(setup);
+  job->fingerprint = scene_fingerprint(job->desc, image_options(a, setup), setup.files_read);
+  job->spp = setup.sampler->samples_per_pixel();
+  job->adaptive = adaptive_options(a, *setup.sampler);
+  job->tiles = TileProgress::start(setup.film->bounds());
+  if (a.resume) {
+    resume_from(state_path(job->output), job->fingerprint, setup, job->tiles);
+    // Every rank restores the whole state; the non-finite count is rank 0's alone to carry.
+    if (group.rank() != 0) setup.film->restore(setup.film->accumulators(), 0);
+  }
+  return job;
+}
 
-  ProgressLine progress(!a.quiet);
-  RenderSetup setup = build_render_setup(desc, o);
-  std::string output = a.output.empty() ? setup.output_filename : a.output;
-  check_output_extension(output);
-  const std::optional<RetinalIrradiance> irradiance = retinal_irradiance(setup);
-  const uint64_t fingerprint = scene_fingerprint(desc, image_options(a, setup), setup.files_read);
-  const int spp = setup.sampler->samples_per_pixel();
-  const std::optional<AdaptiveOptions> adaptive = adaptive_options(a, *setup.sampler);
-  TileProgress tiles = TileProgress::start(setup.film->bounds());
-  if (a.resume) resume_from(state_path(output), fingerprint, setup, tiles);
+// Prepares on every rank; when any fails, the first rank that failed reports its error (an
+// exception) and the others return null, so that a scene error is printed once, and no rank
+// goes on to wait for the others in a collective.
+std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group) {
+  std::unique_ptr<Job> job;
+  std::exception_ptr error;
+  try {
+    job = prepare(a, group);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  const int first_failed = group.min(error ? group.rank() : INT_MAX);
+  if (first_failed == INT_MAX) return job;
+  if (group.rank() == first_failed) std::rethrow_exception(error);
+  return nullptr;
+}
+
+// The job's counters, summed over ranks, and each rank's times (rank 0 gets them; collective).
+struct Totals {
+  uint64_t samples, camera_rays, lost, rays, shadow_rays, shadow_rays_skipped, nonfinite;
+  std::vector<double> busy_seconds, render_seconds, cpu_seconds;
+
+  nlohmann::json ranks_json() const {
+    double mean = 0, most = 0;
+    for (double s : busy_seconds) {
+      mean += s / double(busy_seconds.size());
+      most = std::max(most, s);
+    }
+    return {{"count", busy_seconds.size()},
+            {"render_seconds", render_seconds},
+            {"busy_seconds", busy_seconds},
+            {"cpu_seconds", cpu_seconds},
+            {"load_imbalance", mean > 0 ? most / mean : 1.0}};
+  }
+};
+
+// CPU seconds of this process (all its threads) so far.
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+Totals totals(RenderGroup& g, const RenderCounters& c, double render_seconds, double cpu_seconds) {
+  return {g.sum(c.samples),         g.sum(c.camera_rays),         g.sum(c.camera_rays_lost),  g.sum(c.rays_traced),
+          g.sum(c.shadow_rays),     g.sum(c.shadow_rays_skipped), g.sum(c.nonfinite_samples), g.gather(c.busy_seconds),
+          g.gather(render_seconds), g.gather(cpu_seconds)};
+}
+
+// The image and state of a finished or interrupted render (rank 0).
+void write_result(const RenderArgs& a, Job& job, bool complete) {
+  const TileProgress& tiles = job.tiles;
+  if (complete) {
+    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{false, true}, job.irradiance);
+    std::error_code ec;
+    std::filesystem::remove(state_path(job.output), ec);  // finished: nothing left to resume
+  } else if (tiles.max_done() > 0) {
+    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{true, false}, job.irradiance);
+    fmt::print(stderr,
+               "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
+               job.output, tiles.min_done(), job.spp,
+               tiles.max_done() != tiles.min_done() ? fmt::format(" (up to {} in some tiles)", tiles.max_done()) : "",
+               state_path(job.output));
+  } else {
+    fmt::print(stderr, "eyetrace: interrupted before any sample was finished: nothing written\n");
+  }
+  if (!a.spp_image.empty() && tiles.max_done() > 0) write_spp_image(a.spp_image, tiles, job.setup.film->bounds());
+}
+
+void print_summary(const Job& job, const Totals& t, const nlohmann::json& spread, double seconds, double render_seconds,
+                   int resumed_at, int ranks) {
+  const std::string spp_text =
+      job.adaptive ? fmt::format("adaptive {:.1f} spp (min {}, median {}, max {})", spread["mean"].get<double>(),
+                                 spread["min"].get<int>(), spread["median"].get<int>(), spread["max"].get<int>())
+                   : fmt::format("{} spp", job.spp);
+  fmt::print("{}: {:.2f} s ({:.2f} s render{}{}), {}, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", job.output,
+             seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "",
+             ranks > 1 ? fmt::format(", {} processes", ranks) : "", spp_text, t.camera_rays,
+             t.camera_rays ? 100.0 * t.lost / t.camera_rays : 0.0,
+             render_seconds > 0 ? t.rays / render_seconds / 1e6 : 0.0,
+             t.nonfinite ? fmt::format(", {} non-finite samples discarded", t.nonfinite) : "");
+}
+
+void write_render_stats(const RenderArgs& a, const Job& job, const Totals& t, const nlohmann::json& spread,
+                        double seconds, double setup_seconds, double render_seconds, int resumed_at, bool complete) {
+  const SpectralBuckets& b = job.setup.film->buckets();
+  nlohmann::json film = {{"type", b.spectral() ? "spectral" : "rgb"}};
+  if (b.spectral()) {
+    film["buckets"] = b.count;
+    film["lambda_min_nm"] = b.lambda_min;
+    film["lambda_max_nm"] = b.lambda_max;
+  }
+  if (job.irradiance) film["retinal_irradiance"] = job.irradiance->json();
+  const std::optional<AdaptiveOptions>& ad = job.adaptive;
+  write_stats(
+      a, {{"scene", a.scene},
+          {"output", job.output},
+          {"seconds", seconds},
+          {"setup_seconds", setup_seconds},
+          {"render_seconds", render_seconds},
+          {"samples_per_pixel", job.spp},
+          {"samples_per_pixel_completed", job.tiles.min_done()},
+          {"samples_per_pixel_distribution", spread},
+          {"adaptive",
+           ad ? nlohmann::json{{"target_error", ad->target_error}, {"min_spp", ad->min_spp}, {"max_spp", ad->max_spp}}
+              : nlohmann::json(nullptr)},
+          {"resumed_at_samples_per_pixel", resumed_at},
+          {"interrupted", !complete},
+          {"samples", t.samples},
+          {"camera_rays", t.camera_rays},
+          {"camera_rays_lost", t.lost},
+          {"useful_camera_ray_fraction", t.camera_rays ? double(t.camera_rays - t.lost) / t.camera_rays : 0.0},
+          {"rays_traced", t.rays},
+          {"shadow_rays", t.shadow_rays},
+          {"shadow_rays_skipped", t.shadow_rays_skipped},
+          {"rays_per_second", render_seconds > 0 ? t.rays / render_seconds : 0.0},
+          {"nonfinite_samples", t.nonfinite},
+          {"threads", a.threads},
+          {"ranks", t.ranks_json()},
+          {"resolution", {job.setup.film->resolution().x, job.setup.film->resolution().y}},
+          {"camera", job.setup.camera->to_string()},
+          {"film", film},
+          {"warnings", warning_count()}});
+}
+
+int run_render(const RenderArgs& a) {
+  std::unique_ptr<RenderGroup> group = join_render_group();
+  RenderGroup& g = *group;
+  g.set_split(a.mpi_split == "blocks" ? RenderGroup::Split::kBlocks : RenderGroup::Split::kInterleaved);
+  const bool lead = g.rank() == 0;  // prints, writes files
+  set_warnings_enabled(!a.quiet && lead);
+  set_warnings_fatal(a.strict);
+  ProgressLine progress(!a.quiet && lead);
+  std::unique_ptr<Job> job = prepare_everywhere(a, g);
+  if (!job) return 1;
+  RenderSetup& setup = job->setup;
+  TileProgress& tiles = job->tiles;
+  const int spp = job->spp;
   const int resumed_at = tiles.min_done();
-  const double total = double(setup.film->bounds().area()) * spp;
-  progress.resume_at(tiles.samples(setup.film->bounds()) / total);
-  double setup_seconds = progress.elapsed_seconds();
+  progress.resume_at(double(tiles.samples(setup.film->bounds())) / (double(setup.film->bounds().area()) * spp));
+  const double setup_seconds = progress.elapsed_seconds();
 
+  const double cpu_before = process_cpu_seconds();
   InterruptGuard interrupt;
   RenderCounters counters;
   RenderOptions ro;
@@ -311,88 +471,37 @@ int run_render(const RenderArgs& a) {
   ro.tiles = &tiles;
   ro.stop = &interrupt.stop_requested();
   ro.pass_samples = a.pass_samples;
-  ro.adaptive = adaptive ? &*adaptive : nullptr;
+  ro.adaptive = job->adaptive ? &*job->adaptive : nullptr;
+  ro.group = &g;
   auto last_checkpoint = std::chrono::steady_clock::now();
   if (a.checkpoint >= 0)
-    ro.on_pass = [&](const TileProgress& t) {
-      auto now = std::chrono::steady_clock::now();
-      if (t.complete(spp) || std::chrono::duration<double>(now - last_checkpoint).count() < a.checkpoint) return;
-      save(output, a, setup, t, fingerprint, Snapshot{}, irradiance);
+    ro.on_pass = [&](const TileProgress&) {
+      // Rank 0's clock decides for all (a collective), then the films are made whole.
+      const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
+      if (!g.any(lead && since >= a.checkpoint)) return;
+      g.share(*setup.film, tiles);
+      if (lead && !tiles.complete(spp))
+        save(job->output, a, setup, tiles, job->fingerprint, Snapshot{}, job->irradiance);
       last_checkpoint = std::chrono::steady_clock::now();
     };
-  setup.integrator->render(*setup.camera, *setup.sampler, *setup.film, ro, counters);
+  try {
+    setup.integrator->render(*setup.camera, *setup.sampler, *setup.film, ro, counters);
+  } catch (...) {
+    g.abort_job();  // the other ranks may be waiting for this one in a collective
+    throw;
+  }
   progress.finish();
-  double seconds = progress.elapsed_seconds();
-  double render_seconds = seconds - setup_seconds;
-
+  const double seconds = progress.elapsed_seconds(), render_seconds = seconds - setup_seconds;
+  const Totals t = totals(g, counters, render_seconds, process_cpu_seconds() - cpu_before);
+  const int signal = int(g.max(interrupt.signal_number()));
   const bool complete = tiles.complete(spp);
-  if (complete) {
-    save(output, a, setup, tiles, fingerprint, Snapshot{false, true}, irradiance);
-    std::error_code ec;
-    std::filesystem::remove(state_path(output), ec);  // finished: nothing left to resume
-  } else if (tiles.max_done() > 0) {
-    save(output, a, setup, tiles, fingerprint, Snapshot{true, false}, irradiance);
-    fmt::print(stderr,
-               "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
-               output, tiles.min_done(), spp,
-               tiles.max_done() != tiles.min_done() ? fmt::format(" (up to {} in some tiles)", tiles.max_done()) : "",
-               state_path(output));
-  } else {
-    fmt::print(stderr, "eyetrace: interrupted before any sample was finished: nothing written\n");
-  }
+  if (!lead) return complete ? 0 : 128 + signal;
+  write_result(a, *job, complete);
   const nlohmann::json spread = spp_distribution(tiles, setup.film->bounds());
-  if (!a.spp_image.empty() && tiles.max_done() > 0) write_spp_image(a.spp_image, tiles, setup.film->bounds());
-  uint64_t rays = counters.rays_traced, cam = counters.camera_rays, lost = counters.camera_rays_lost;
-  const std::string spp_text =
-      adaptive ? fmt::format("adaptive {:.1f} spp (min {}, median {}, max {})", spread["mean"].get<double>(),
-                             spread["min"].get<int>(), spread["median"].get<int>(), spread["max"].get<int>())
-               : fmt::format("{} spp", spp);
-  if (!a.quiet && complete)
-    fmt::print("{}: {:.2f} s ({:.2f} s render{}), {}, {} camera rays ({:.1f}% lost), {:.2f} Mrays/s{}\n", output,
-               seconds, render_seconds, resumed_at > 0 ? fmt::format(", resumed at {} spp", resumed_at) : "", spp_text,
-               cam, cam ? 100.0 * lost / cam : 0.0, render_seconds > 0 ? rays / render_seconds / 1e6 : 0.0,
-               counters.nonfinite_samples
-                   ? fmt::format(", {} non-finite samples discarded", counters.nonfinite_samples.load())
-                   : "");
-  if (!a.stats.empty()) {
-    const SpectralBuckets& b = setup.film->buckets();
-    nlohmann::json film = {{"type", b.spectral() ? "spectral" : "rgb"}};
-    if (b.spectral()) {
-      film["buckets"] = b.count;
-      film["lambda_min_nm"] = b.lambda_min;
-      film["lambda_max_nm"] = b.lambda_max;
-    }
-    if (irradiance) film["retinal_irradiance"] = irradiance->json();
-    write_stats(a, {{"scene", a.scene},
-                    {"output", output},
-                    {"seconds", seconds},
-                    {"setup_seconds", setup_seconds},
-                    {"render_seconds", render_seconds},
-                    {"samples_per_pixel", spp},
-                    {"samples_per_pixel_completed", tiles.min_done()},
-                    {"samples_per_pixel_distribution", spread},
-                    {"adaptive", adaptive ? nlohmann::json{{"target_error", adaptive->target_error},
-                                                           {"min_spp", adaptive->min_spp},
-                                                           {"max_spp", adaptive->max_spp}}
-                                          : nlohmann::json(nullptr)},
-                    {"resumed_at_samples_per_pixel", resumed_at},
-                    {"interrupted", !complete},
-                    {"samples", counters.samples.load()},
-                    {"camera_rays", cam},
-                    {"camera_rays_lost", lost},
-                    {"useful_camera_ray_fraction", cam ? double(cam - lost) / cam : 0.0},
-                    {"rays_traced", rays},
-                    {"shadow_rays", counters.shadow_rays.load()},
-                    {"shadow_rays_skipped", counters.shadow_rays_skipped.load()},
-                    {"rays_per_second", render_seconds > 0 ? rays / render_seconds : 0.0},
-                    {"nonfinite_samples", counters.nonfinite_samples.load()},
-                    {"threads", a.threads},
-                    {"resolution", {setup.film->resolution().x, setup.film->resolution().y}},
-                    {"camera", setup.camera->to_string()},
-                    {"film", film},
-                    {"warnings", warning_count()}});
-  }
-  return complete ? 0 : 128 + interrupt.signal_number();
+  if (!a.quiet && complete) print_summary(*job, t, spread, seconds, render_seconds, resumed_at, g.size());
+  if (!a.stats.empty())
+    write_render_stats(a, *job, t, spread, seconds, setup_seconds, render_seconds, resumed_at, complete);
+  return complete ? 0 : 128 + signal;
 }
 
 // CLI11 validators, so that a malformed value is a command-line error (exit status 2). CLI11
@@ -457,10 +566,10 @@ CommandRunner add_render_command(CLI::App& app) {
                 "Samples per pixel per pass (default: passes of about a second); the image does not depend on it")
       ->check(CLI::Range(1, 1 << 24));
   c->add_flag("--adaptive", args->adaptive,
-              "Adaptive sampling: pixels stop taking samples once their estimated relative error is below "
-              "--target-error (docs/adaptive-sampling.md)");
+              "Adaptive sampling: each pixel takes samples in proportion to how noisy its samples are, until the "
+              "image's error reaches --target-error (docs/adaptive-sampling.md)");
   c->add_option("--target-error", args->target_error,
-                "Adaptive: the relative standard error of a pixel's mean luminance to reach (default 0.01)")
+                "Adaptive: the RMS over pixels of the relative error of their mean luminance (default 0.01)")
       ->check(CLI::Validator(
           [](std::string& v) -> std::string {
             double e = 0;
@@ -485,6 +594,10 @@ CommandRunner add_render_command(CLI::App& app) {
             return ext == ".exr" ? "" : "\"" + v + "\": the sample-count image is written as .exr";
           },
           "PATH"));
+  c->add_option("--mpi-split", args->mpi_split,
+                "Under mpirun: deal tiles out \"interleaved\" (tile t to rank t mod N; the default) or in "
+                "\"blocks\" of rows (docs/cluster.md); the image is the same either way")
+      ->check(CLI::IsMember({"interleaved", "blocks"}));
   c->callback([args, c] {
     for (const char* o : {"--target-error", "--min-spp", "--max-spp"})
       if (c->count(o) && !args->adaptive) throw CLI::ValidationError(o, "needs --adaptive");

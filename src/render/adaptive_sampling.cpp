@@ -13,7 +13,7 @@ void start_adaptive(const PixelBounds& bounds, const AdaptiveOptions& opts, Tile
 }
 
 int next_pass_end(int end, const AdaptiveOptions& opts) {
-  const long grown = long(end) + std::max(long(opts.min_spp), long(end) / 2);
+  const long grown = long(end) + std::max(long(opts.min_spp), long(end));
   return int(std::min(grown, long(opts.max_spp)));
 }
 
@@ -48,27 +48,50 @@ std::vector<double> pixel_errors(const Film& film, const TileProgress& tiles) {
   return e;
 }
 
-size_t plan_next_pass(const Film& film, const AdaptiveOptions& opts, TileProgress& tiles) {
+std::vector<int> wanted_samples(const Film& film, const AdaptiveOptions& opts, const TileProgress& tiles) {
   const std::vector<double> e = pixel_errors(film, tiles);
   const PixelBounds& b = film.bounds();
   const int w = b.width(), h = b.height();
-  const int end = *std::max_element(tiles.pixel_target.begin(), tiles.pixel_target.end());
-  const int next = next_pass_end(end, opts);
-  size_t going_on = 0;
+  std::vector<double> sigma(e.size());
+  for (size_t i = 0; i < e.size(); ++i) sigma[i] = e[i] * std::sqrt(double(tiles.pixel_done[i]));
+  std::vector<double> pooled(e.size(), 0.0);
+  double mean = 0.0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      if (tiles.pixel_done[i] >= opts.max_spp || tiles.pixel_done[i] < end) continue;  // capped, or stopped before
-      double pooled = 0.0;
+      double& p = pooled[size_t(y) * size_t(w) + size_t(x)];
+      double sum = 0.0;
+      int count = 0;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int xx = x + dx, yy = y + dy;
-          if (xx >= 0 && yy >= 0 && xx < w && yy < h) pooled = std::max(pooled, e[size_t(yy) * size_t(w) + size_t(xx)]);
+          if (xx >= 0 && yy >= 0 && xx < w && yy < h) {
+            sum += sigma[size_t(yy) * size_t(w) + size_t(xx)];
+            ++count;
+          }
         }
-      if (!(pooled <= opts.target_error)) {
-        tiles.pixel_target[i] = next;
-        ++going_on;
-      }
+      p = std::max(sigma[size_t(y) * size_t(w) + size_t(x)], sum / count);
+      mean += std::min(p, 1e30) / double(e.size());  // an unjudged (+inf) pixel must not make k infinite
+    }
+  const double k = mean / (opts.target_error * opts.target_error);
+  std::vector<int> wanted(e.size());
+  for (size_t i = 0; i < e.size(); ++i) {
+    // k is finite and pooled >= 0 (possibly +inf, but then k > 0): n is never NaN (log2(0) is
+    // -inf, exp2 of it 0); still, only a number below the cap is converted.
+    const double n = std::exp2(std::round(std::log2(k * pooled[i])));
+    wanted[i] = n < double(opts.max_spp) ? std::max(opts.min_spp, int(n)) : opts.max_spp;
+  }
+  return wanted;
+}
+
+size_t plan_next_pass(const Film& film, const AdaptiveOptions& opts, TileProgress& tiles) {
+  const std::vector<int> wanted = wanted_samples(film, opts, tiles);
+  const int end = *std::max_element(tiles.pixel_target.begin(), tiles.pixel_target.end());
+  const int next = next_pass_end(end, opts);
+  size_t going_on = 0;
+  for (size_t i = 0; i < wanted.size(); ++i)
+    if (tiles.pixel_done[i] < wanted[i]) {
+      tiles.pixel_target[i] = std::min(wanted[i], next);
+      ++going_on;
     }
   return going_on;
 }

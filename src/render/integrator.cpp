@@ -136,16 +136,211 @@ int next_pass_samples(int last, double last_seconds, double target) {
   return int(std::clamp(n, 1.0, 2.0 * last));
 }
 
+// One render() call: the passes over the tiles this process owns (all of them unless it is one
+// rank of a RenderGroup), uniform or adaptive, with progress, stopping and the collectives that
+// keep ranks in step.
+class RenderLoop {
+ public:
+  RenderLoop(const Integrator& integrator, const Camera& camera, const Sampler& sampler, Film& film,
+             const RenderOptions& opts, RenderCounters& counters, TileProgress& tp, RenderGroup& group)
+      : integrator_(integrator),
+        camera_(camera),
+        film_(film),
+        opts_(opts),
+        counters_(counters),
+        tp_(tp),
+        group_(group),
+        b_(film.bounds()),
+        spp_(sampler.samples_per_pixel()),
+        states_([&] {
+          return ThreadState{sampler.clone(), ScratchBuffer()};
+        }),
+        arena_(opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency()) {
+    total_ = double(own_area()) * spp_;
+    for (size_t t = 0; t < tp_.done.size(); ++t)
+      if (group_.owns_tile(t, tp_.done.size())) samples_done_ += own_samples(t);
+  }
+
+  void uniform() {
+    int pass = opts_.pass_samples > 0 ? opts_.pass_samples : 1;
+    for (;;) {
+      // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
+      const int first = group_.min(own_min_done());
+      if (group_.any(stopped()) || first >= spp_) break;
+      const int end = std::min(spp_, first + pass);
+      const double seconds = group_.max(timed_pass([&](size_t t) {
+        if (tp_.done[t] >= end) return;
+        render_tile(t, [&](IVec2) { return std::pair(tp_.done[t], end); });
+        tp_.done[t] = end;
+      }));
+      if (group_.any(stopped())) break;
+      if (opts_.on_pass) opts_.on_pass(tp_);
+      if (opts_.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts_.pass_seconds);
+    }
+    group_.share(film_, tp_);
+  }
+
+  // Pixel p takes [pixel_done, pixel_target) in a pass; the pass is whole when every pixel of
+  // every rank has; then (films shared, so every rank decides alike) the next one is planned.
+  void adaptive(const AdaptiveOptions& ao) {
+    while (!tp_.complete(spp_) && !group_.any(stopped())) {
+      total_ = double(samples_done_.load() + own_remaining());
+      timed_pass([&](size_t t) {
+        render_tile(t, [&](IVec2 p) { return std::pair(tp_.pixel_done[pixel(p)], tp_.pixel_target[pixel(p)]); });
+        const PixelBounds tb = tp_.tile_bounds(t, b_);
+        for (int y = tb.lo.y; y < tb.hi.y; ++y)
+          for (int x = tb.lo.x; x < tb.hi.x; ++x)
+            tp_.pixel_done[pixel(IVec2(x, y))] = tp_.pixel_target[pixel(IVec2(x, y))];
+      });
+      group_.share(film_, tp_);
+      // Planned as soon as the pass is whole, stopped or not, so that a saved state is either
+      // mid-pass or planned (complete exactly when no pixel has a target beyond its samples).
+      if (tp_.pixel_done != tp_.pixel_target) break;
+      plan_next_pass(film_, ao, tp_);
+      if (group_.any(stopped())) break;
+      if (opts_.on_pass) opts_.on_pass(tp_);
+    }
+  }
+
+  void report(bool force) {
+    if (!opts_.on_progress) return;
+    if (force)
+      progress_mutex_.lock();
+    else if (!progress_mutex_.try_lock())
+      return;
+    auto now = std::chrono::steady_clock::now();
+    if (force || now - last_report_ > std::chrono::milliseconds(250)) {
+      last_report_ = now;
+      // This rank's share of the work stands for the whole job's (tiles are dealt out evenly);
+      // its rays, times the ranks, for the job's rate.
+      const double f = tp_.complete(spp_) ? 1.0 : total_ > 0 ? double(samples_done_.load()) / total_ : 1.0;
+      opts_.on_progress(std::min(f, 1.0), counters_.rays_traced.load() * uint64_t(group_.size()));
+    }
+    progress_mutex_.unlock();
+  }
+
+ private:
+  bool stopped() const { return opts_.stop && opts_.stop->load(std::memory_order_relaxed); }
+  size_t pixel(IVec2 p) const { return size_t(p.y - b_.lo.y) * size_t(b_.width()) + size_t(p.x - b_.lo.x); }
+
+  uint64_t own_area() const {
+    uint64_t a = 0;
+    for (size_t t = 0; t < tp_.done.size(); ++t)
+      if (group_.owns_tile(t, tp_.done.size())) a += tp_.tile_bounds(t, b_).area();
+    return a;
+  }
+  uint64_t own_samples(size_t t) const {
+    if (!tp_.adaptive()) return uint64_t(tp_.tile_bounds(t, b_).area()) * uint64_t(tp_.done[t]);
+    uint64_t n = 0;
+    const PixelBounds tb = tp_.tile_bounds(t, b_);
+    for (int y = tb.lo.y; y < tb.hi.y; ++y)
+      for (int x = tb.lo.x; x < tb.hi.x; ++x) n += uint64_t(tp_.pixel_done[pixel(IVec2(x, y))]);
+    return n;
+  }
+  // Samples the pixels of this rank that still go on could take at most.
+  uint64_t own_remaining() const {
+    uint64_t r = 0;
+    for (size_t t = 0; t < tp_.done.size(); ++t) {
+      if (!group_.owns_tile(t, tp_.done.size())) continue;
+      const PixelBounds tb = tp_.tile_bounds(t, b_);
+      for (int y = tb.lo.y; y < tb.hi.y; ++y)
+        for (int x = tb.lo.x; x < tb.hi.x; ++x) {
+          const size_t i = pixel(IVec2(x, y));
+          if (tp_.pixel_target[i] > tp_.pixel_done[i]) r += uint64_t(spp_ - tp_.pixel_done[i]);
+        }
+    }
+    return r;
+  }
+  int own_min_done() const {
+    int m = spp_;
+    for (size_t t = 0; t < tp_.done.size(); ++t)
+      if (group_.owns_tile(t, tp_.done.size())) m = std::min(m, tp_.done[t]);
+    return m;
+  }
+
+  // Runs body(t) for every tile this rank owns, in parallel, skipping what is left once stopped;
+  // returns (and counts) the seconds it took.
+  template <typename Body>
+  double timed_pass(Body&& body) {
+    auto t0 = std::chrono::steady_clock::now();
+    arena_.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, tp_.done.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t t = r.begin(); t != r.end(); ++t)
+          if (group_.owns_tile(t, tp_.done.size()) && !stopped()) body(t);
+      });
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    counters_.busy_seconds += seconds;
+    return seconds;
+  }
+
+  // Tile t takes, for each pixel p, the samples [from, to) that range(p) gives; only this thread
+  // touches tile t.
+  template <typename Range>
+  void render_tile(size_t t, Range&& range) {
+    ThreadState& ts = states_.local();
+    PixelBounds tb = tp_.tile_bounds(t, b_);
+    RayTally tally;
+    uint64_t lost = 0, n = 0;
+    {
+      SampleBatch batch(integrator_, camera_, film_, ts, tally, lost, tb, !tp_.adaptive());
+      if (batch.splats()) {
+        // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
+        // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
+        // mono eye on the figure scene), so only where splats happen (uniform renders, where
+        // every pixel of the tile has the same range).
+        auto [first, end] = range(tb.lo);
+        for (int i = first; i < end; ++i)
+          for (int y = tb.lo.y; y < tb.hi.y; ++y)
+            for (int x = tb.lo.x; x < tb.hi.x; ++x) batch.add(IVec2(x, y), i);
+        n = tb.area() * uint64_t(std::max(0, end - first));
+      } else {
+        for (int y = tb.lo.y; y < tb.hi.y; ++y)
+          for (int x = tb.lo.x; x < tb.hi.x; ++x) {
+            auto [from, to] = range(IVec2(x, y));
+            for (int i = from; i < to; ++i) batch.add(IVec2(x, y), i);
+            n += uint64_t(std::max(0, to - from));
+          }
+      }
+    }
+    counters_.samples += n;
+    counters_.camera_rays += n;
+    counters_.camera_rays_lost += lost;
+    counters_.rays_traced += tally.rays;
+    counters_.shadow_rays += tally.shadow_rays;
+    counters_.shadow_rays_skipped += tally.shadow_rays_skipped;
+    samples_done_ += n;
+    report(false);
+  }
+
+  const Integrator& integrator_;
+  const Camera& camera_;
+  Film& film_;
+  const RenderOptions& opts_;
+  RenderCounters& counters_;
+  TileProgress& tp_;
+  RenderGroup& group_;
+  const PixelBounds& b_;
+  const int spp_;
+  tbb::enumerable_thread_specific<ThreadState> states_;
+  tbb::task_arena arena_;
+  double total_ = 0;
+  std::atomic<uint64_t> samples_done_{0};
+  std::mutex progress_mutex_;
+  std::chrono::steady_clock::time_point last_report_ = std::chrono::steady_clock::now();
+};
+
 }  // namespace
 
 void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts,
                         RenderCounters& counters) const {
   const PixelBounds& b = film.bounds();
-  const int spp = sampler.samples_per_pixel();
   const AdaptiveOptions* adaptive = opts.adaptive;
   TileProgress own;
   TileProgress& tp = opts.tiles ? *opts.tiles : own;
-  if (adaptive && adaptive->max_spp != spp)
+  RenderGroup alone;
+  RenderGroup& group = opts.group ? *opts.group : alone;
+  if (adaptive && adaptive->max_spp != sampler.samples_per_pixel())
     throw std::invalid_argument("Integrator::render: adaptive max_spp differs from the sampler's samples per pixel");
   // A fresh progress (none, or TileProgress::start's) becomes an adaptive one when asked for.
   if (tp.done.empty() || (adaptive && !tp.adaptive() && tp.max_done() == 0)) {
@@ -156,120 +351,12 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
   }
   if (!tp.matches(b) || tp.adaptive() != bool(adaptive) || (adaptive && tp.pixel_done.size() != b.area()))
     throw std::invalid_argument("Integrator::render: tile progress does not match the film");
-  tbb::enumerable_thread_specific<ThreadState> states([&] { return ThreadState{sampler.clone(), ScratchBuffer()}; });
-  // Progress: uniform, the fraction of all samples; adaptive, of the samples taken and the
-  // most the pixels still going could take (updated each pass, so it jumps as pixels stop).
-  double total = double(b.area()) * spp;
-  std::atomic<uint64_t> samples_done{tp.samples(b)};
-  std::mutex progress_mutex;
-  auto last_report = std::chrono::steady_clock::now();
-  auto stopped = [&] { return opts.stop && opts.stop->load(std::memory_order_relaxed); };
-  auto report = [&](bool force) {
-    if (!opts.on_progress) return;
-    if (force)
-      progress_mutex.lock();
-    else if (!progress_mutex.try_lock())
-      return;
-    auto now = std::chrono::steady_clock::now();
-    if (force || now - last_report > std::chrono::milliseconds(250)) {
-      last_report = now;
-      const double f = tp.complete(spp) ? 1.0 : total > 0 ? double(samples_done.load()) / total : 1.0;
-      opts.on_progress(std::min(f, 1.0), counters.rays_traced.load());
-    }
-    progress_mutex.unlock();
-  };
-
-  // Tile t takes, for each pixel, the samples [from, to) that `range` gives it; only this
-  // thread touches tile t.
-  auto render_tile = [&](size_t t, auto&& range) {
-    ThreadState& ts = states.local();
-    PixelBounds tb = tp.tile_bounds(t, b);
-    RayTally tally;
-    uint64_t lost = 0, n = 0;
-    {
-      SampleBatch batch(*this, camera, film, ts, tally, lost, tb, !adaptive);
-      auto [first, end] = range(tb.lo);
-      if (batch.splats()) {
-        // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
-        // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
-        // mono eye on the figure scene), so only where splats happen. Uniform only: every
-        // pixel of the tile has the same range.
-        for (int i = first; i < end; ++i)
-          for (int y = tb.lo.y; y < tb.hi.y; ++y)
-            for (int x = tb.lo.x; x < tb.hi.x; ++x) batch.add(IVec2(x, y), i);
-        n = tb.area() * uint64_t(end - first);
-      } else {
-        for (int y = tb.lo.y; y < tb.hi.y; ++y)
-          for (int x = tb.lo.x; x < tb.hi.x; ++x) {
-            auto [from, to] = range(IVec2(x, y));
-            for (int i = from; i < to; ++i) batch.add(IVec2(x, y), i);
-            n += uint64_t(std::max(0, to - from));
-          }
-      }
-    }
-    counters.samples += n;
-    counters.camera_rays += n;
-    counters.camera_rays_lost += lost;
-    counters.rays_traced += tally.rays;
-    counters.shadow_rays += tally.shadow_rays;
-    counters.shadow_rays_skipped += tally.shadow_rays_skipped;
-    samples_done += n;
-    report(false);
-  };
-  int threads = opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(threads);
-  auto for_each_tile = [&](auto&& body) {
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, tp.done.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t t = r.begin(); t != r.end(); ++t)
-          if (!stopped()) body(t);
-      });
-    });
-  };
-
-  if (adaptive) {
-    // Pixel p of tile t takes [pixel_done, pixel_target); a tile is done when all its pixels are.
-    auto pixel = [&](IVec2 p) { return size_t(p.y - b.lo.y) * size_t(b.width()) + size_t(p.x - b.lo.x); };
-    auto remaining = [&] {
-      uint64_t r = 0;
-      for (size_t i = 0; i < tp.pixel_done.size(); ++i)
-        if (tp.pixel_target[i] > tp.pixel_done[i]) r += uint64_t(spp - tp.pixel_done[i]);
-      return r;
-    };
-    while (!tp.complete(spp) && !stopped()) {
-      total = double(samples_done.load() + remaining());
-      for_each_tile([&](size_t t) {
-        render_tile(t, [&](IVec2 p) { return std::pair(tp.pixel_done[pixel(p)], tp.pixel_target[pixel(p)]); });
-        const PixelBounds tb = tp.tile_bounds(t, b);
-        for (int y = tb.lo.y; y < tb.hi.y; ++y)
-          for (int x = tb.lo.x; x < tb.hi.x; ++x)
-            tp.pixel_done[pixel(IVec2(x, y))] = tp.pixel_target[pixel(IVec2(x, y))];
-      });
-      // Planned as soon as the pass is whole, stopped or not, so that a saved state is either
-      // mid-pass or planned (complete exactly when no pixel has a target beyond its samples).
-      if (tp.pixel_done != tp.pixel_target) break;
-      plan_next_pass(film, *adaptive, tp);
-      if (stopped()) break;
-      if (opts.on_pass) opts.on_pass(tp);
-    }
-  } else {
-    int pass = opts.pass_samples > 0 ? opts.pass_samples : 1;
-    while (tp.min_done() < spp && !stopped()) {
-      // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
-      const int first = tp.min_done(), end = std::min(spp, first + pass);
-      auto t0 = std::chrono::steady_clock::now();
-      for_each_tile([&](size_t t) {
-        if (tp.done[t] >= end) return;
-        render_tile(t, [&](IVec2) { return std::pair(tp.done[t], end); });
-        tp.done[t] = end;
-      });
-      if (stopped()) break;
-      if (opts.on_pass) opts.on_pass(tp);
-      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (opts.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts.pass_seconds);
-    }
-  }
-  report(true);
+  RenderLoop loop(*this, camera, sampler, film, opts, counters, tp, group);
+  if (adaptive)
+    loop.adaptive(*adaptive);
+  else
+    loop.uniform();
+  loop.report(true);
   counters.nonfinite_samples = film.nonfinite_samples();
 }
 

@@ -13,6 +13,7 @@
 #include "core/sampled_spectrum.h"
 #include "core/sampler.h"
 #include "render/adaptive_sampling.h"
+#include "render/render_group.h"
 #include "render/tile_progress.h"
 
 namespace eyetrace {
@@ -29,6 +30,7 @@ struct RenderCounters {
   std::atomic<uint64_t> nonfinite_samples{0};
   std::atomic<uint64_t> shadow_rays{0};          // of rays_traced: occlusion tests for light samples
   std::atomic<uint64_t> shadow_rays_skipped{0};  // scattering points that needed no occlusion test
+  double busy_seconds = 0;                       // time in passes, without waiting for other ranks (render thread only)
 };
 
 // Per-thread tally, flushed to RenderCounters once per tile to keep atomics off the hot path.
@@ -62,6 +64,9 @@ struct RenderOptions {
   // Adaptive sampling (render/adaptive_sampling.h); null: every pixel takes the sampler's
   // samples per pixel. Its max_spp must be the sampler's samples per pixel.
   const AdaptiveOptions* adaptive = nullptr;
+  // The processes rendering this image together (render/render_group.h); null: this one alone.
+  // Each renders the tiles it owns; at the end every rank's film is whole.
+  RenderGroup* group = nullptr;
 };
 
 class Integrator {

@@ -68,17 +68,44 @@ TEST(AdaptiveSampling, APixelWithFewerThanTwoSamplesIsNeverConverged) {
   EXPECT_TRUE(std::isinf(pixel_errors(f, counts(f, 1))[0]));
 }
 
-TEST(AdaptiveSampling, PassesGrowByHalfAtLeastTheMinimumAndStopAtTheCap) {
+TEST(AdaptiveSampling, PassesDoubleAndStopAtTheCap) {
   AdaptiveOptions o;
   o.min_spp = 16;
-  o.max_spp = 256;
+  o.max_spp = 300;
   std::vector<int> ends = {16};
   while (ends.back() < o.max_spp) ends.push_back(next_pass_end(ends.back(), o));
-  EXPECT_EQ(ends, (std::vector<int>{16, 32, 48, 72, 108, 162, 243, 256}));
+  EXPECT_EQ(ends, (std::vector<int>{16, 32, 64, 128, 256, 300}));
+}
+
+// Pixel 0 takes 0.5, 1.5, ... (sample sd 0.5 sqrt(n / (n - 1))), pixel 6 takes 0, 2, ... (twice
+// that), the rest 1: sigma relative to sqrt(1 + 0.1^2) (the image mean is 1). Pooled (the larger
+// of its own and its neighbourhood's mean), pixels 0, 1, 5, 6 have s0, s0 / 3, s6 / 3, s6 (a 7x1
+// film: neighbourhoods of 2 or 3); k = mean(pooled) / E^2; each wants k sigma rounded to the
+// nearest power of two, at least min_spp.
+TEST(AdaptiveSampling, PixelsWantSamplesInProportionToTheirSigma) {
+  Film f = film_of(IVec2(7, 1));
+  const int n = 16;
+  for (int i = 0; i < n; ++i)
+    for (int x = 0; x < 7; ++x)
+      f.add_sample(IVec2(x, 0), grey(x == 0 ? 0.5 + (i % 2) : x == 6 ? 2.0 * (i % 2) : 1.0), 1.f);
+  AdaptiveOptions o;
+  o.target_error = 0.05;
+  o.min_spp = 4;
+  o.max_spp = 1000;
+  const double s0 = 0.5 * std::sqrt(n / (n - 1.0)) / std::sqrt(1.01), s6 = 2 * s0;
+  const double k = (s0 + s0 / 3 + s6 / 3 + s6) / 7 / (0.05 * 0.05);
+  auto want = [&](double sigma) { return std::max(4, int(std::exp2(std::round(std::log2(k * sigma))))); };
+  const std::vector<int> expected = {want(s0), want(s0 / 3), 4, 4, 4, want(s6 / 3), want(s6)};
+  EXPECT_EQ(wanted_samples(f, o, counts(f, n)), expected);
+  EXPECT_EQ(expected, (std::vector<int>{64, 16, 4, 4, 4, 32, 128})) << "the case this test means to make";
+  // The next pass takes them towards it, by at most as many samples again (16 + 16).
+  TileProgress t = counts(f, n);
+  EXPECT_EQ(plan_next_pass(f, o, t), 3u);
+  EXPECT_EQ(t.pixel_target, (std::vector<int>{32, n, n, n, n, 32, 32}));
 }
 
 // A 5x5 film, constant everywhere but a noisy centre: the centre and its eight neighbours
-// (whose own samples all agree) take the next pass; the rest stop. Nobody ever goes beyond the cap.
+// (whose own samples all agree) take the next pass; the rest stop. Nobody goes beyond the cap.
 TEST(AdaptiveSampling, APixelBesideANoisyOneGoesOn) {
   Film f = film_of(IVec2(5, 5));
   const int n = 16;
