@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <tuple>
@@ -41,6 +42,10 @@ struct OpticsArgs {
   std::string wave_grid = "64";
   std::string zernike_order = "6";
   std::string freqs = "5,10,20,30,40,60";  // MTF frequencies, cycles per degree
+  bool polychromatic = false;
+  std::string poly_range = "400,700";  // nm
+  std::string poly_step = "10";        // nm
+  std::string poly_source = "equal";   // equal | blackbody:KELVIN
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -164,6 +169,48 @@ optics::WavefrontOptions parse_wave(const OpticsArgs& a) {
   return o;
 }
 
+// Planck's law, relative spectral radiance per nm at a temperature (the constant factors cancel
+// in the normalised weights).
+std::function<double(double)> blackbody(double kelvin) {
+  return [kelvin](double nm) {
+    const double c2 = 1.438776877e7;  // h c / k in nm K (CODATA 2018)
+    return std::pow(nm / 500.0, -5.0) / std::expm1(c2 / (nm * kelvin));
+  };
+}
+
+// The polychromatic options of their flags, each checked on its own so the error names it.
+optics::PolychromaticOptions parse_polychromatic(const OpticsArgs& a) {
+  optics::PolychromaticOptions o;
+  auto check = [&o](const char* flag, const std::string& text) {
+    try {
+      optics::validate(o);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
+    }
+  };
+  std::tie(o.min_wavelength_nm, o.max_wavelength_nm) = parse_pair("--poly-range", a.poly_range);
+  o.step_nm = std::min(o.step_nm, std::abs(o.max_wavelength_nm - o.min_wavelength_nm));
+  check("--poly-range", a.poly_range);
+  char* end = nullptr;
+  o.step_nm = std::strtod(a.poly_step.c_str(), &end);
+  if (a.poly_step.empty() || end != a.poly_step.c_str() + a.poly_step.size())
+    throw_error(fmt::format("--poly-step \"{}\": expected a step in nm, e.g. 10", a.poly_step));
+  check("--poly-step", a.poly_step);
+  if (a.poly_source.rfind("blackbody:", 0) == 0) {
+    const std::string t = a.poly_source.substr(10);
+    const double kelvin = std::strtod(t.c_str(), &end);
+    if (t.empty() || end != t.c_str() + t.size() || !(kelvin >= 500.0 && kelvin <= 1e5))
+      throw_error(
+          fmt::format("--poly-source \"{}\": expected blackbody:KELVIN with 500 <= KELVIN <= 100000", a.poly_source));
+    o.source = blackbody(kelvin);
+    o.source_name = fmt::format("blackbody {:g} K", kelvin);
+  } else if (a.poly_source != "equal") {
+    throw_error(
+        fmt::format("--poly-source \"{}\": expected \"equal\" (equal energy) or blackbody:KELVIN", a.poly_source));
+  }
+  return o;
+}
+
 // The prescription of the --camera directive. Reading it checks every parameter of the
 // directive (view parameters such as fov and mapping too) against the camera's declared ones,
 // as render does.
@@ -206,6 +253,9 @@ int run_optics(const OpticsArgs& a) {
   o.wave = a.wave;
   o.wave_options = parse_wave(a);
   o.mtf_freqs_cpd = parse_freqs(a.freqs);
+  o.polychromatic = a.polychromatic;
+  o.polychromatic_options = parse_polychromatic(a);
+  if (o.polychromatic && !o.wave) throw_error("--polychromatic: give --wave too (it adds to the wave section)");
   if (o.wave) try {
       optics::check_mtf_frequencies(p, o.wave_options, o.mtf_freqs_cpd);
     } catch (const optics::OpticsError& e) {
@@ -261,6 +311,14 @@ CommandRunner add_optics_command(CLI::App& app) {
   c->add_option("--freqs", args->freqs,
                 "MTF frequencies of --wave, cycles per degree of visual angle (default 5,10,20,30,40,60; each "
                 "within the diffraction cut-off D / wavelength)");
+  c->add_flag("--polychromatic", args->polychromatic,
+              "With --wave: add per field the polychromatic PSF's Strehl ratio, encircled energy and MTF, the "
+              "wavelengths of --poly-range weighted by V(lambda) x the source (JSON key `polychromatic`)");
+  c->add_option("--poly-range", args->poly_range,
+                "Wavelengths of --polychromatic, nm: MIN,MAX (default 400,700; within [380, 780])");
+  c->add_option("--poly-step", args->poly_step, "Step between the wavelengths of --polychromatic, nm (default 10)");
+  c->add_option("--poly-source", args->poly_source,
+                "Source spectrum of --polychromatic: equal (equal energy, the default) or blackbody:KELVIN");
   return [args] { return run_optics(*args); };
 }
 

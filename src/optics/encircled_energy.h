@@ -1,5 +1,6 @@
 // Encircled energy of a PSF (psf.h): the radius on the retina of the circle about the PSF's
-// centroid that holds a given fraction of its energy.
+// centroid that holds a given fraction of its energy, and the same for a weighted sum of PSFs
+// with their own centres (the polychromatic PSF, polychromatic_psf.h).
 //
 // Method: the PSF is band-limited (its spectrum is the pupil's autocorrelation, zero beyond a
 // shear of the pupil's diameter) and periodic over its FFT window, so it is the finite Fourier
@@ -13,7 +14,10 @@
 // costs a few hundred Bessel functions; the fraction is found by bisection.
 #pragma once
 
+#include <complex>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "optics/psf.h"
 
@@ -25,5 +29,31 @@ double encircled_energy_radius(const Psf& psf, double fraction);
 
 // The fraction of the PSF's energy within radius_um of its centroid.
 double encircled_energy(const Psf& psf, double radius_um);
+
+// The low frequencies of a PSF's Fourier series (all of its spectrum: zero beyond the pupil's
+// diameter), I_k / (I_0 A) for |kx|, |ky| <= reach, the phase about the PSF's zero angle.
+struct PsfSpectrum {
+  int reach = 0;
+  double window_x_um = 0.0, window_y_um = 0.0;  // the FFT window on the retina (its period)
+  std::vector<std::complex<double>> terms;      // (2 reach + 1)^2, row-major (ky, kx)
+};
+PsfSpectrum psf_spectrum(const Psf& psf);
+
+// The energy within discs about one point of a weighted sum of PSFs, each given by its spectrum
+// and where that point lies in its own coordinates (um on the retina from its zero angle).
+class DiscEnergy {
+ public:
+  explicit DiscEnergy(double bin_cycles_per_um) : bin_(bin_cycles_per_um) {}
+  // Adds weight x (the PSF's energy fraction) to the sum; the weights should sum to 1.
+  void add(const PsfSpectrum& spectrum, glm::dvec2 centre_um, double weight);
+  double fraction(double radius_um) const;
+  // The radius holding `fraction` (bisection on [0, max_radius_um]).
+  double radius(double fraction, double max_radius_um) const;
+
+ private:
+  double bin_;
+  double zero_ = 0.0;  // sum of weight / A: the f = 0 term per um^2
+  std::vector<double> weight_, rho_sum_, count_;
+};
 
 }  // namespace eyetrace::optics

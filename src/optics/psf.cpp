@@ -141,6 +141,21 @@ RetinalScale retinal_scale(const Prescription& p, double field_deg, double objec
   return s;
 }
 
+TracedPsf trace_psf(const Prescription& p, const WavefrontOptions& options, int max_grid) {
+  WavefrontOptions o = options;
+  o.clip_at_stop = true;
+  const RetinalScale scale = retinal_scale(p, o.field_deg, o.object_distance_m, o.wavelength_nm);
+  TracedPsf t{trace_wavefront(p, o), {}};
+  t.psf = compute_psf(t.wavefront, scale);
+  while (!t.psf.warning.empty() && o.grid < max_grid) {
+    const double needed = o.grid * t.psf.max_phase_step_rad / (0.5 * std::numbers::pi);
+    o.grid = std::min(max_grid, 16 * static_cast<int>(std::ceil(needed / 16.0)));
+    t.wavefront = trace_wavefront(p, o);
+    t.psf = compute_psf(t.wavefront, scale);
+  }
+  return t;
+}
+
 double psf_at(const WavefrontResult& w, double cos_field, glm::dvec2 angle_rad) {
   // Tilt phase 2 pi (a_x X + a_y cos(theta) Y) / lambda, X, Y in mm on the entrance-pupil plane;
   // the sign matches FFTW's forward transform, so this is the FFT's PSF between its samples.

@@ -91,6 +91,58 @@ TEST(OpticsCommand, BadWaveOptionsNameTheFlag) {
   }
 }
 
+// --polychromatic adds the V(lambda)-weighted PSF's numbers under each field's wave entry (their
+// values are tested in tests/optics/polychromatic_psf_test.cpp); a narrow range keeps it quick.
+TEST(OpticsCommand, PolychromaticJsonAndText) {
+  const test::RunResult run = run_eyetrace(
+      "optics --json --wave --polychromatic --poly-range 500,600 --poly-step 25 --fields 0 --freqs 10,30", false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json f = nlohmann::json::parse(run.output)["wave"][0];
+  ASSERT_TRUE(f.contains("polychromatic")) << f.dump();
+  const nlohmann::json& poly = f["polychromatic"];
+  EXPECT_EQ(poly["wavelengths_nm"]["count"].get<int>(), 5);
+  EXPECT_EQ(poly["source"].get<std::string>(), "equal-energy");
+  for (const char* key : {"strehl", "ee50_um", "ee80_um"}) EXPECT_TRUE(poly[key].is_number()) << key;
+  EXPECT_GT(poly["strehl"].get<double>(), 0.0);
+  EXPECT_LE(poly["strehl"].get<double>(), 1.0);
+  ASSERT_EQ(poly["mtf"].size(), 2u);
+  EXPECT_EQ(poly["mtf"][1]["freq_cpd"].get<double>(), 30.0);
+  EXPECT_LE(poly["mtf"][1]["tangential"].get<double>(), poly["mtf"][1]["diffraction_limit"][1].get<double>());
+
+  const test::RunResult hot = run_eyetrace(
+      "optics --json --wave --polychromatic --poly-range 500,600 --poly-step 50 --poly-source blackbody:3000 --fields 0",
+      false);
+  ASSERT_EQ(hot.status, 0) << hot.output;
+  EXPECT_EQ(nlohmann::json::parse(hot.output)["wave"][0]["polychromatic"]["source"].get<std::string>(),
+            "blackbody 3000 K");
+  const test::RunResult text =
+      run_eyetrace("optics --wave --polychromatic --poly-range 540,580 --poly-step 20 --fields 0");
+  ASSERT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("polychromatic (540-580 nm every 20 nm, V(lambda) x equal-energy source): Strehl"),
+            std::string::npos)
+      << text.output;
+  // Without it there is no polychromatic object.
+  const test::RunResult plain = run_eyetrace("optics --json --wave --fields 0", false);
+  EXPECT_FALSE(nlohmann::json::parse(plain.output)["wave"][0].contains("polychromatic"));
+}
+
+TEST(OpticsCommand, BadPolychromaticOptionsNameTheFlag) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--wave --polychromatic --poly-range 350,700", "--poly-range \"350,700\": polychromatic range"},
+      {"--wave --polychromatic --poly-range 400", "--poly-range \"400\": expected two wavelengths"},
+      {"--wave --polychromatic --poly-step 0", "--poly-step \"0\": polychromatic step"},
+      {"--wave --polychromatic --poly-step x", "--poly-step \"x\": expected a step"},
+      {"--wave --polychromatic --poly-source sun", "--poly-source \"sun\""},
+      {"--wave --polychromatic --poly-source blackbody:1", "--poly-source \"blackbody:1\""},
+      {"--polychromatic", "--polychromatic: give --wave too"},
+  };
+  for (auto [args, expected] : cases) {
+    const test::RunResult run = run_eyetrace(std::string("optics --fields 0 ") + args);
+    EXPECT_EQ(run.status, 1) << args;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << args << ": " << run.output;
+  }
+}
+
 TEST(OpticsCommand, BadWavelengthsNameTheFlag) {
   const std::pair<const char*, const char*> cases[] = {
       {"--chromatic-range 300,700", "--chromatic-range \"300,700\": chromatic range: 300 nm is outside [360, 1020] nm"},
