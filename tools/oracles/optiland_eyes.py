@@ -17,7 +17,7 @@ entrance-pupil disc, as in eyetrace's wavefront analysis without clip_at_stop. T
 centred, as eyetrace's, on the ray through the centre of the stop (found here by secant steps on
 Optiland's trace; Optiland's own chief ray, through the paraxial entrance pupil's centre, misses
 the stop's centre by 8 um at 20 degrees); the tilt-free RMS on Optiland's own disc is recorded
-beside it (rms_no_tilt_paraxial_centre_waves: 0.7 to 1.3 % larger at 20 degrees, the coma of the
+beside it (rms_no_tilt_paraxial_centre_waves: 0 to 1.1 % smaller at 20 degrees, the coma of the
 disc moved by 10 um).
 
 What is taken from Optiland: its real-ray trace and its optical path difference (OPD) map, with
