@@ -11,10 +11,11 @@
 // treats a sample as constant over its pixel, which blurs the PSF by the pixel: the 50 % and 80 %
 // radii of the Airy pattern came out 1 to 5 % large at lambda / 4D and lambda / 8D sampling.
 // The frequencies are binned by |f| (bins a quarter of the frequency spacing) so that one radius
-// costs a few hundred Bessel functions; the fraction is found by bisection.
+// costs a few hundred Bessel functions a step; the fraction is found by safeguarded Newton steps.
 #pragma once
 
 #include <complex>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -30,13 +31,8 @@ double encircled_energy_radius(const Psf& psf, double fraction);
 // The fraction of the PSF's energy within radius_um of its centroid.
 double encircled_energy(const Psf& psf, double radius_um);
 
-// The low frequencies of a PSF's Fourier series (all of its spectrum: zero beyond the pupil's
-// diameter), I_k / (I_0 A) for |kx|, |ky| <= reach, the phase about the PSF's zero angle.
-struct PsfSpectrum {
-  int reach = 0;
-  double window_x_um = 0.0, window_y_um = 0.0;  // the FFT window on the retina (its period)
-  std::vector<std::complex<double>> terms;      // (2 reach + 1)^2, row-major (ky, kx)
-};
+// The low frequencies of a PSF's Fourier series (PsfSpectrum, psf.h): the one compute_psf made
+// from the pupil, or else from the PSF's samples.
 PsfSpectrum psf_spectrum(const Psf& psf);
 
 // The energy within discs about one point of a weighted sum of PSFs, each given by its spectrum
@@ -47,7 +43,8 @@ class DiscEnergy {
   // Adds weight x (the PSF's energy fraction) to the sum; the weights should sum to 1.
   void add(const PsfSpectrum& spectrum, glm::dvec2 centre_um, double weight);
   double fraction(double radius_um) const;
-  // The radius holding `fraction` (bisection on [0, max_radius_um]).
+  std::pair<double, double> fraction_and_slope(double radius_um) const;  // and d fraction / d radius
+  // The radius holding `fraction` in [0, max_radius_um] (safeguarded Newton steps).
   double radius(double fraction, double max_radius_um) const;
 
  private:

@@ -19,6 +19,7 @@
 // Axes: x and y are the OSA pupil axes (wavefront.h), so x is mirrored from the prescription's.
 #pragma once
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,16 @@ struct PsfOptions {
   int fft_size = 0;
 };
 
+// The low frequencies of a PSF's Fourier series (all of its spectrum: zero beyond the pupil's
+// diameter), I_k / (I_0 A) for |kx|, |ky| <= reach, the phase about the PSF's zero angle; A the
+// FFT window's area on the retina (its period, the same whatever the FFT size: lambda / delta
+// times the retinal scale). The encircled energy is read from it (encircled_energy.h).
+struct PsfSpectrum {
+  int reach = 0;
+  double window_x_um = 0.0, window_y_um = 0.0;
+  std::vector<std::complex<double>> terms;  // (2 reach + 1)^2, row-major (ky, kx)
+};
+
 struct Psf {
   int grid = 0;      // pupil samples across the disc (the wavefront's)
   int fft_size = 0;  // N: samples across the PSF (and its period)
@@ -71,6 +82,7 @@ struct Psf {
   glm::dvec2 peak_rad{0.0};             // where the peak is (x, y), object-space angle from the chief ray
   glm::dvec2 centroid_rad{0.0};         // centroid of the PSF
   double ee50_um = 0.0, ee80_um = 0.0;  // encircled-energy radii about the centroid, on the retina
+  PsfSpectrum spectrum;                 // from the pupil's autocorrelation (2 grid FFT, not N)
   double max_phase_step_rad = 0.0;      // largest phase difference between neighbouring pupil samples
   std::string warning;                  // empty, or what limits the result (a too coarse grid)
 
@@ -92,6 +104,10 @@ struct TracedPsf {
   Psf psf;
 };
 TracedPsf trace_psf(const Prescription& prescription, const WavefrontOptions& options, int max_grid = 512);
+
+// The largest phase difference (rad) between neighbouring samples of a wavefront's grid (both in
+// the pupil): above pi the phase is aliased and the PSF's geometric extent exceeds its FFT period.
+double max_phase_step_rad(const WavefrontResult& wavefront);
 
 // The PSF at an arbitrary angle (x, y) rad by direct summation over the pupil samples (no FFT;
 // used to locate the peak between samples, and by tests), in the units of Psf::intensity.
