@@ -20,10 +20,10 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
-// One wavelength's PSF as the sum needs it, beside the component's summary: its pupil samples
+// One wavelength's PSF as the sum needs it, beside the component's summary: its pupil's phasors
 // (for the peak between samples) and its low-frequency spectrum (for the encircled energy).
 struct Part {
-  WavefrontResult wavefront;
+  PsfEvaluator evaluator;
   PsfSpectrum spectrum;
   double peak_density = 0.0;  // its diffraction-limited peak per um^2 at unit energy
 };
@@ -48,16 +48,16 @@ glm::dvec2 displacement_um(const ChiefRay& c, const ChiefRay& ref) {
 }
 
 // Unit-energy PSF of a part (per um^2) at a retinal point (um from its own chief ray's image).
-double density_at(const Part& part, const PolychromaticComponent& c, double cos_field, glm::dvec2 um) {
+double density_at(const Part& part, const PolychromaticComponent& c, glm::dvec2 um) {
   const glm::dvec2 rad(um.x / (c.scale.sagittal_mm_per_rad * 1000.0), um.y / (c.scale.tangential_mm_per_rad * 1000.0));
-  return part.peak_density * psf_at(part.wavefront, cos_field, rad);
+  return part.peak_density * part.evaluator.at(rad);
 }
 
 double summed_density(const std::vector<Part>& parts, const PolychromaticPsf& out, glm::dvec2 um) {
   double sum = 0.0;
   for (size_t i = 0; i < parts.size(); ++i) {
     const PolychromaticComponent& c = out.components[i];
-    sum += c.weight * density_at(parts[i], c, out.cos_field, um - c.offset_um);
+    sum += c.weight * density_at(parts[i], c, um - c.offset_um);
   }
   return sum;
 }
@@ -211,8 +211,8 @@ PolychromaticPsf polychromatic_psf(const Prescription& p, const WavefrontOptions
     total += c.weight;
     out.components.push_back(std::move(c));
     const double m = psf.fft_size;
-    parts.push_back(
-        {std::move(t.wavefront), psf_spectrum(psf), psf.pupil_samples / (m * m * psf.sample_x_um * psf.sample_y_um)});
+    parts.push_back({PsfEvaluator(t.wavefront, out.cos_field), psf_spectrum(psf),
+                     psf.pupil_samples / (m * m * psf.sample_x_um * psf.sample_y_um)});
     psfs.push_back(std::move(t.psf));
   }
   if (!(total > 0.0))

@@ -118,15 +118,16 @@ std::pair<double, glm::dvec2> refine_peak(const WavefrontResult& w, const Psf& p
   const int n = psf.fft_size;
   glm::dvec2 a((brightest % n - n / 2) * psf.sample_x_rad, (brightest / n - n / 2) * psf.sample_y_rad);
   glm::dvec2 h(0.5 * psf.sample_x_rad, 0.5 * psf.sample_y_rad);
-  double best = psf_at(w, psf.cos_field, a);
+  const PsfEvaluator evaluate(w, psf.cos_field);
+  double best = evaluate.at(a);
   for (int iteration = 0; iteration < 8; ++iteration, h *= 0.5)
     for (int axis = 0; axis < 2; ++axis) {
       glm::dvec2 step(0.0);
       step[axis] = h[axis];
-      const double minus = psf_at(w, psf.cos_field, a - step), plus = psf_at(w, psf.cos_field, a + step);
+      const double minus = evaluate.at(a - step), plus = evaluate.at(a + step);
       const double curvature = plus + minus - 2.0 * best;
       const double t = curvature < 0.0 ? std::clamp(0.5 * (minus - plus) / curvature, -1.0, 1.0) : 0.0;
-      const double moved = psf_at(w, psf.cos_field, a + t * step);
+      const double moved = evaluate.at(a + t * step);
       if (moved > best) best = moved, a += t * step;
     }
   return {best, a};
@@ -198,6 +199,41 @@ double psf_at(const WavefrontResult& w, double cos_field, glm::dvec2 angle_rad) 
   for (size_t i = 0; i < w.pupil_points.size(); ++i)
     sum += std::polar(1.0, kTwoPi * w.opd_waves[i] - kx * w.pupil_points[i].x - ky * w.pupil_points[i].y);
   const double m = static_cast<double>(w.pupil_points.size());
+  return std::norm(sum) / (m * m);
+}
+
+PsfEvaluator::PsfEvaluator(const WavefrontResult& w, double cos_field) : grid_(w.grid) {
+  const double k = kTwoPi / (w.wavelength_nm * 1e-6) * w.pupil_radius_mm;
+  k_x_ = k, k_y_ = k * cos_field;
+  for (size_t i = 0; i < w.pupil_points.size(); ++i) {
+    const glm::dvec2 u = w.pupil_points[i];
+    const int ix = cell_index(u.x, grid_), iy = cell_index(u.y, grid_);
+    auto centre = [this](int i) { return -1.0 + (i + 0.5) * 2.0 / grid_; };
+    if (ix >= 0 && iy >= 0 && ix < grid_ && iy < grid_ && std::abs(centre(ix) - u.x) < 1e-12 &&
+        std::abs(centre(iy) - u.y) < 1e-12) {
+      phasor_.push_back(std::polar(1.0, kTwoPi * w.opd_waves[i]));
+      column_.push_back(ix), row_.push_back(iy);
+    } else {
+      off_grid_points_.push_back(u), off_grid_opd_waves_.push_back(w.opd_waves[i]);
+    }
+  }
+  column_tilt_.resize(static_cast<size_t>(std::max(grid_, 0))), row_tilt_.resize(column_tilt_.size());
+}
+
+double PsfEvaluator::at(glm::dvec2 a) const {
+  // Tilt phase as psf_at: -(k_x a_x X + k_y a_y Y), X and Y the normalised cell centres.
+  for (int i = 0; i < grid_; ++i) {
+    const double u = -1.0 + (i + 0.5) * 2.0 / grid_;
+    column_tilt_[static_cast<size_t>(i)] = std::polar(1.0, -k_x_ * a.x * u);
+    row_tilt_[static_cast<size_t>(i)] = std::polar(1.0, -k_y_ * a.y * u);
+  }
+  std::complex<double> sum(0.0);
+  for (size_t s = 0; s < phasor_.size(); ++s)
+    sum += phasor_[s] * column_tilt_[static_cast<size_t>(column_[s])] * row_tilt_[static_cast<size_t>(row_[s])];
+  for (size_t s = 0; s < off_grid_points_.size(); ++s)
+    sum += std::polar(
+        1.0, kTwoPi * off_grid_opd_waves_[s] - k_x_ * a.x * off_grid_points_[s].x - k_y_ * a.y * off_grid_points_[s].y);
+  const double m = static_cast<double>(phasor_.size() + off_grid_points_.size());
   return std::norm(sum) / (m * m);
 }
 

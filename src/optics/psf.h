@@ -113,4 +113,23 @@ double max_phase_step_rad(const WavefrontResult& wavefront);
 // used to locate the peak between samples, and by tests), in the units of Psf::intensity.
 double psf_at(const WavefrontResult& wavefront, double cos_field, glm::dvec2 angle_rad);
 
+// The same for many angles of one wavefront: the pupil's phasors exp(2 pi i OPD) are made once,
+// and an angle's tilt is separable on the grid (a factor per column times one per row), so an
+// angle costs a complex product per sample instead of a sine and cosine (the peak search makes
+// about 50 of them). Samples off the wavefront's grid fall back to psf_at's sum.
+class PsfEvaluator {
+ public:
+  PsfEvaluator(const WavefrontResult& wavefront, double cos_field);
+  double at(glm::dvec2 angle_rad) const;
+
+ private:
+  int grid_ = 0;
+  double k_x_ = 0.0, k_y_ = 0.0;  // phase per radian of angle per unit normalised pupil coordinate
+  std::vector<std::complex<double>> phasor_;
+  std::vector<int> column_, row_;
+  std::vector<glm::dvec2> off_grid_points_;  // with their phasors' OPD (rare: none from trace_wavefront)
+  std::vector<double> off_grid_opd_waves_;
+  mutable std::vector<std::complex<double>> column_tilt_, row_tilt_;
+};
+
 }  // namespace eyetrace::optics

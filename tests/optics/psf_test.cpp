@@ -189,6 +189,16 @@ TEST(PsfEnergy, SpectrumFromThePupilIsThePsfsSpectrum) {
   EXPECT_NEAR(encircled_energy_radius(p, 0.5), encircled_energy_radius(samples_only, 0.5), 1e-6);
 }
 
+// The evaluator the peak search uses (separable tilt on the grid) is psf_at's direct sum.
+TEST(PsfStrehl, EvaluatorIsTheDirectSum) {
+  WavefrontResult w = synthetic(40, 1.5, [](glm::dvec2 u) { return 0.3 * zernike(7, u.x, u.y) + 0.2 * u.x; });
+  w.pupil_points.push_back({0.013, -0.2});  // off the grid: summed the direct way
+  w.opd_waves.push_back(0.1);
+  const PsfEvaluator evaluate(w, 0.8);
+  for (const glm::dvec2 a : {glm::dvec2(0.0), glm::dvec2(1e-4, -2e-4), glm::dvec2(-3e-4, 5e-5)})
+    EXPECT_NEAR(evaluate.at(a), psf_at(w, 0.8, a), 1e-12) << a.x << " " << a.y;
+}
+
 TEST(PsfStrehl, DefocusMatchesItsClosedFormAndMarechal) {
   const double sigma = 0.05;  // waves RMS: c20 = sigma, W = sigma sqrt(3) (2 rho^2 - 1)
   const WavefrontResult w = synthetic(128, 1.5, [&](glm::dvec2 u) { return sigma * zernike(4, u.x, u.y); });
