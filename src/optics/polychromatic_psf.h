@@ -14,7 +14,7 @@
 // wavelengths' OTFs at the same retinal frequency, each times the phase of its displacement; the
 // energy within a disc is the weighted sum of each PSF's exact disc integral about the same point
 // (encircled_energy.h); the peak is found on the weighted sum of the PSFs summed directly over
-// their pupil samples (psf_at), started from the brightest point of the PSFs resampled onto one
+// their pupil samples (PsfEvaluator), started from the brightest point of the PSFs resampled onto one
 // grid. The Strehl ratio is that peak over the peak of the same weighted sum of the
 // diffraction-limited PSFs of the same pupils, all centred on one point (an achromatic perfect
 // eye).
