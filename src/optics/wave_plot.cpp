@@ -61,7 +61,7 @@ void mtf_panel(RgbImage& img, const Box& b, const Psf& psf, const std::vector<Mt
     img.text(b.x0 - 5 - RgbImage::text_width(label), static_cast<int>(py(0.2 * i)) - 3, label, kBlack);
   }
   std::vector<double> freqs;
-  for (int i = 0; i <= 100; ++i) freqs.push_back(cutoff_t * i / 100.0);
+  for (int i = 0; i <= 100; ++i) freqs.push_back(std::min(cutoff_t, cutoff_t * i / 100.0));  // no ulp past it
   const std::vector<MtfPoint> mtf = compute_mtf(psf, freqs);
   std::vector<std::pair<double, double>> t, s, limit_t, limit_s;
   for (int i = 0; i <= 100; ++i) {
