@@ -31,7 +31,7 @@ std::vector<Row> read_csv(const std::string& path) {
   std::vector<std::string> header;
   std::vector<Row> rows;
   while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // Python's csv writes CR LF
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a CR LF file still reads
     if (line.empty() || line[0] == '#') continue;
     std::vector<std::string> cells;
     std::stringstream s(line);

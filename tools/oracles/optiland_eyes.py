@@ -214,7 +214,7 @@ def main(out):
     with open(out, "w", newline="") as f:
         f.write(f"# Optiland {optiland.__version__ if hasattr(optiland, '__version__') else '0.6.0'} "
                 f"commit {commit}; tools/oracles/optiland_eyes.py; grid {GRID}; 589.3 nm\n")
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()), lineterminator="\n")
         writer.writeheader()
         writer.writerows(rows)
 
