@@ -35,7 +35,7 @@ void wave_report(benchmark::State& state, double field_deg) {
 }
 
 // What `eyetrace optics --wave` does per field beyond the Zernike fit: the same, with the pupil
-// grid refined until the phase is sampled (192 across at 20 degrees, a 1024 x 1024 FFT).
+// grid refined until the phase is sampled (224 across at 20 degrees, a 1024 x 1024 FFT).
 void report_entry(benchmark::State& state, double field_deg) {
   const Prescription p = navarro();
   WavefrontOptions o;

@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -18,6 +21,7 @@
 #include "optics/report.h"
 #include "optics/spot.h"
 #include "optics/wave_optics_report.h"
+#include "optics/wave_plot.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
 
@@ -41,6 +45,11 @@ struct OpticsArgs {
   std::string wave_grid = "64";
   std::string zernike_order = "6";
   std::string freqs = "5,10,20,30,40,60";  // MTF frequencies, cycles per degree
+  bool polychromatic = false;
+  std::string poly_range = "400,700";  // nm
+  std::string poly_step = "10";        // nm
+  std::string poly_source = "equal";   // equal | blackbody:KELVIN
+  std::string psf_scale = "log";       // the PSF image of --plot DIR: log | linear
 };
 
 std::vector<double> parse_fields(const std::string& text) {
@@ -164,6 +173,48 @@ optics::WavefrontOptions parse_wave(const OpticsArgs& a) {
   return o;
 }
 
+// Planck's law, relative spectral radiance per nm at a temperature (the constant factors cancel
+// in the normalised weights).
+std::function<double(double)> blackbody(double kelvin) {
+  return [kelvin](double nm) {
+    const double c2 = 1.438776877e7;  // h c / k in nm K (CODATA 2018)
+    return std::pow(nm / 500.0, -5.0) / std::expm1(c2 / (nm * kelvin));
+  };
+}
+
+// The polychromatic options of their flags, each checked on its own so the error names it.
+optics::PolychromaticOptions parse_polychromatic(const OpticsArgs& a) {
+  optics::PolychromaticOptions o;
+  auto check = [&o](const char* flag, const std::string& text) {
+    try {
+      optics::validate(o);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
+    }
+  };
+  std::tie(o.min_wavelength_nm, o.max_wavelength_nm) = parse_pair("--poly-range", a.poly_range);
+  o.step_nm = std::min(o.step_nm, std::abs(o.max_wavelength_nm - o.min_wavelength_nm));
+  check("--poly-range", a.poly_range);
+  char* end = nullptr;
+  o.step_nm = std::strtod(a.poly_step.c_str(), &end);
+  if (a.poly_step.empty() || end != a.poly_step.c_str() + a.poly_step.size())
+    throw_error(fmt::format("--poly-step \"{}\": expected a step in nm, e.g. 10", a.poly_step));
+  check("--poly-step", a.poly_step);
+  if (a.poly_source.rfind("blackbody:", 0) == 0) {
+    const std::string t = a.poly_source.substr(10);
+    const double kelvin = std::strtod(t.c_str(), &end);
+    if (t.empty() || end != t.c_str() + t.size() || !(kelvin >= 500.0 && kelvin <= 1e5))
+      throw_error(
+          fmt::format("--poly-source \"{}\": expected blackbody:KELVIN with 500 <= KELVIN <= 100000", a.poly_source));
+    o.source = blackbody(kelvin);
+    o.source_name = fmt::format("blackbody {:g} K", kelvin);
+  } else if (a.poly_source != "equal") {
+    throw_error(
+        fmt::format("--poly-source \"{}\": expected \"equal\" (equal energy) or blackbody:KELVIN", a.poly_source));
+  }
+  return o;
+}
+
 // The prescription of the --camera directive. Reading it checks every parameter of the
 // directive (view parameters such as fov and mapping too) against the camera's declared ones,
 // as render does.
@@ -172,8 +223,18 @@ optics::Prescription camera_prescription(const std::string& text) {
   return prescription_from_camera_params(e.name, e.params, ".");
 }
 
-// The figure: the spot diagram (one panel per field) above the chromatic refraction curve,
-// converted to the linear image write_image expects.
+// An RGB figure as the linear image write_image expects.
+void write_rgb(const std::string& path, const optics::RgbImage& rgb,
+               const std::map<std::string, std::string>& attributes) {
+  Image image;
+  image.width = rgb.width;
+  image.height = rgb.height;
+  image.pixels.resize(rgb.rgb.size());
+  for (size_t i = 0; i < rgb.rgb.size(); ++i) image.pixels[i] = srgb_to_linear(rgb.rgb[i] / 255.f);
+  write_image(path, image, attributes);
+}
+
+// The figure: the spot diagram (one panel per field) above the chromatic refraction curve.
 void write_plot(const std::string& path, const optics::Prescription& p, const optics::ReportOptions& o,
                 const nlohmann::json& report) {
   std::vector<optics::SpotResult> spots;
@@ -184,16 +245,65 @@ void write_plot(const std::string& path, const optics::Prescription& p, const op
   optics::RgbImage rgb(std::max(spot.width, curve.width), spot.height + curve.height);
   rgb.blit(spot, (rgb.width - spot.width) / 2, 0);
   rgb.blit(curve, 0, spot.height);
-  Image image;
-  image.width = rgb.width;
-  image.height = rgb.height;
-  image.pixels.resize(rgb.rgb.size());
-  for (size_t i = 0; i < rgb.rgb.size(); ++i) image.pixels[i] = srgb_to_linear(rgb.rgb[i] / 255.f);
-  write_image(path, image,
-              {{"eyetrace:spot_scale_um_per_pixel", fmt::format("{}", spot.um_per_pixel)},
-               {"eyetrace:scale_bar_um", fmt::format("{}", spot.scale_bar_um)},
-               {"eyetrace:spot_diagram_height", fmt::format("{}", spot.height)},
-               {"eyetrace:lca_diopters", report["chromatic"]["lca_diopters"].dump()}});
+  write_rgb(path, rgb,
+            {{"eyetrace:spot_scale_um_per_pixel", fmt::format("{}", spot.um_per_pixel)},
+             {"eyetrace:scale_bar_um", fmt::format("{}", spot.scale_bar_um)},
+             {"eyetrace:spot_diagram_height", fmt::format("{}", spot.height)},
+             {"eyetrace:lca_diopters", report["chromatic"]["lca_diopters"].dump()}});
+}
+
+// --plot names a file (.png or .exr: the spot and chromatic figure) or else a directory, created
+// if missing, for that figure and the wave figures. Checked before the analysis runs.
+bool is_plot_directory(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return !(ext == ".png" || ext == ".exr" || ext == ".PNG" || ext == ".EXR");
+}
+
+void prepare_plot_directory(const std::string& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw_error(
+        fmt::format("--plot \"{}\": exists and is not a directory (give a directory for the figures, or a "
+                    ".png/.exr file for the spot diagram alone)",
+                    dir));
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw_error(fmt::format("--plot \"{}\": cannot create the directory: {}", dir, ec ? ec.message() : "unknown"));
+}
+
+// One figure per analysed field: DIR/wave_field_<deg>.png (MTF curves and the PSF, wave_plot.h),
+// the PSF traced again as the report traced it (trace_psf).
+std::vector<std::string> write_wave_plots(const std::string& dir, const optics::Prescription& p,
+                                          const optics::ReportOptions& o, const nlohmann::json& report, bool log_psf) {
+  std::vector<std::string> written;
+  for (const nlohmann::json& f : report["wave"]) {
+    if (f.contains("error")) continue;  // the text and JSON say why
+    optics::WavefrontOptions w = o.wave_options;
+    w.field_deg = f["field_deg"].get<double>();
+    w.object_distance_m = o.object_distance_m;
+    const optics::TracedPsf traced = optics::trace_psf(p, w);
+    std::vector<optics::MtfPoint> markers;
+    if (f.contains("polychromatic") && f["polychromatic"].contains("mtf"))
+      for (const nlohmann::json& m : f["polychromatic"]["mtf"]) {
+        optics::MtfPoint point;
+        point.freq_cpd = m["freq_cpd"].get<double>();
+        point.tangential = m["tangential"].get<double>(), point.sagittal = m["sagittal"].get<double>();
+        markers.push_back(point);
+      }
+    const std::string title =
+        fmt::format("{} field {:g} deg, {:g} nm, pupil {:.2f} mm: Strehl {:.3f}, EE50 {:.1f} um, EE80 {:.1f} um",
+                    report.value("model", ""), w.field_deg, traced.psf.wavelength_nm, 2.0 * traced.psf.pupil_radius_mm,
+                    traced.psf.strehl, traced.psf.ee50_um, traced.psf.ee80_um);
+    const std::string path = (std::filesystem::path(dir) / fmt::format("wave_field_{:g}.png", w.field_deg)).string();
+    optics::WavePlotOptions options;
+    options.log_psf = log_psf;
+    write_rgb(path, optics::wave_figure(traced.psf, markers, title, options),
+              {{"eyetrace:field_deg", fmt::format("{:g}", w.field_deg)},
+               {"eyetrace:strehl", fmt::format("{}", traced.psf.strehl)},
+               {"eyetrace:psf_scale", log_psf ? "log" : "linear"}});
+    written.push_back(path);
+  }
+  return written;
 }
 
 int run_optics(const OpticsArgs& a) {
@@ -206,6 +316,14 @@ int run_optics(const OpticsArgs& a) {
   o.wave = a.wave;
   o.wave_options = parse_wave(a);
   o.mtf_freqs_cpd = parse_freqs(a.freqs);
+  o.polychromatic = a.polychromatic;
+  o.polychromatic_options = parse_polychromatic(a);
+  if (o.polychromatic && !o.wave) throw_error("--polychromatic: give --wave too (it adds to the wave section)");
+  if (a.psf_scale != "log" && a.psf_scale != "linear")
+    throw_error(fmt::format("--psf-scale \"{}\": expected log or linear", a.psf_scale));
+  const bool plot_directory = !a.plot.empty() && is_plot_directory(a.plot);
+  if (plot_directory) prepare_plot_directory(a.plot);
+  std::vector<std::string> written;
   if (o.wave) try {
       optics::check_mtf_frequencies(p, o.wave_options, o.mtf_freqs_cpd);
     } catch (const optics::OpticsError& e) {
@@ -217,11 +335,22 @@ int run_optics(const OpticsArgs& a) {
       fmt::print("{}\n", report.dump(2));
     else
       fmt::print("{}", optics::format_report(report));
-    if (!a.plot.empty()) write_plot(a.plot, p, o, report);
+    if (plot_directory) {
+      written.push_back((std::filesystem::path(a.plot) / "spots.png").string());
+      write_plot(written.back(), p, o, report);
+      if (o.wave) {
+        const std::vector<std::string> wave = write_wave_plots(a.plot, p, o, report, a.psf_scale == "log");
+        written.insert(written.end(), wave.begin(), wave.end());
+      }
+    } else if (!a.plot.empty()) {
+      write_plot(a.plot, p, o, report);
+      written.push_back(a.plot);
+    }
   } catch (const optics::OpticsError& e) {
     throw_error(fmt::format("optics: {}", e.what()));
   }
-  if (!a.plot.empty() && !a.json) fmt::print("spot diagram and chromatic refraction curve written to {}\n", a.plot);
+  if (!a.json)
+    for (const std::string& path : written) fmt::print("figure written to {}\n", path);
   return 0;
 }
 
@@ -238,8 +367,12 @@ CommandRunner add_optics_command(CLI::App& app) {
   c->add_option("--fields", args->fields, "Field angles for real-ray spots, degrees (default 0,10,20,30,40)");
   c->add_option("--object-distance", args->object_distance,
                 "Distance of the spot sources in metres from the entrance pupil (default: infinity)");
-  c->add_option("--plot", args->plot,
-                "Write a figure (.png or .exr): the spot diagram above the refraction-vs-wavelength curve");
+  c->add_option(
+      "--plot", args->plot,
+      "A .png or .exr file: the spot diagram above the refraction-vs-wavelength curve; any other path: a "
+      "directory (created) for that figure (spots.png) and, with --wave, one figure per field "
+      "(wave_field_<deg>.png: MTF in cycles/deg with the diffraction limit, and the PSF in um on the retina)");
+  c->add_option("--psf-scale", args->psf_scale, "The PSF image of --plot DIR: log (3 decades, default) or linear");
   c->add_option("--chromatic-range", args->chromatic_range,
                 "Wavelengths of the chromatic difference of refraction, nm: MIN,MAX (default 400,700; within "
                 "[360, 1020], where the dispersion laws are used)");
@@ -261,6 +394,14 @@ CommandRunner add_optics_command(CLI::App& app) {
   c->add_option("--freqs", args->freqs,
                 "MTF frequencies of --wave, cycles per degree of visual angle (default 5,10,20,30,40,60; each "
                 "within the diffraction cut-off D / wavelength)");
+  c->add_flag("--polychromatic", args->polychromatic,
+              "With --wave: add per field the polychromatic PSF's Strehl ratio, encircled energy and MTF, the "
+              "wavelengths of --poly-range weighted by V(lambda) x the source (JSON key `polychromatic`)");
+  c->add_option("--poly-range", args->poly_range,
+                "Wavelengths of --polychromatic, nm: MIN,MAX (default 400,700; within [380, 780])");
+  c->add_option("--poly-step", args->poly_step, "Step between the wavelengths of --polychromatic, nm (default 10)");
+  c->add_option("--poly-source", args->poly_source,
+                "Source spectrum of --polychromatic: equal (equal energy, the default) or blackbody:KELVIN");
   return [args] { return run_optics(*args); };
 }
 

@@ -30,17 +30,38 @@ FftBuffer::FftBuffer(size_t count) {
 
 FftBuffer::~FftBuffer() { fftw_free(data); }
 
-void fft2_in_place(std::complex<double>* data, int n) {
-  auto* d = reinterpret_cast<fftw_complex*>(data);
-  fftw_plan plan = nullptr;
-  {
-    std::lock_guard<std::mutex> lock(planner_mutex());
-    plan = fftw_plan_dft_2d(n, n, d, d, FFTW_FORWARD, FFTW_ESTIMATE);
-  }
+namespace {
+
+void run(fftw_plan plan, int n) {
   if (plan == nullptr) throw OpticsError(fmt::format("fft: FFTW could not plan a {} x {} transform", n, n));
   fftw_execute(plan);
   std::lock_guard<std::mutex> lock(planner_mutex());
   fftw_destroy_plan(plan);
+}
+
+}  // namespace
+
+void fft2_in_place(std::complex<double>* data, int n, int nonzero_rows) {
+  auto* d = reinterpret_cast<fftw_complex*>(data);
+  if (nonzero_rows <= 0 || nonzero_rows >= n) {
+    fftw_plan plan = nullptr;
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      plan = fftw_plan_dft_2d(n, n, d, d, FFTW_FORWARD, FFTW_ESTIMATE);
+    }
+    run(plan, n);
+    return;
+  }
+  fftw_plan columns = nullptr, rows = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    // The block is square (the pupil fills the first nonzero_rows rows and columns): first the
+    // columns that hold it (stride n), then every row (contiguous).
+    columns = fftw_plan_many_dft(1, &n, nonzero_rows, d, nullptr, n, 1, d, nullptr, n, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+    rows = fftw_plan_many_dft(1, &n, n, d, nullptr, 1, n, d, nullptr, 1, n, FFTW_FORWARD, FFTW_ESTIMATE);
+  }
+  run(columns, n);
+  run(rows, n);
 }
 
 }  // namespace eyetrace::optics

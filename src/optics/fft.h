@@ -9,7 +9,10 @@ namespace eyetrace::optics {
 // not thread-safe (execution is): plans are made and destroyed under one lock, with FFTW_ESTIMATE
 // (no timing runs, so planning is cheap and the result does not depend on the machine's load).
 // `data` should come from fft_buffer (FFTW's alignment).
-void fft2_in_place(std::complex<double>* data, int n);
+// nonzero_rows < n: only the first nonzero_rows rows and columns hold non-zero values (a
+// zero-padded pupil), so only those columns are transformed (the others stay zero) before the n
+// rows.
+void fft2_in_place(std::complex<double>* data, int n, int nonzero_rows = 0);
 
 struct FftBuffer {
   explicit FftBuffer(size_t count);

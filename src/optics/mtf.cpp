@@ -16,21 +16,10 @@ namespace {
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
-// |OTF(k)| / OTF(0) along one axis for k = 0 .. N/2: the DFT of the line-spread function.
+// |OTF(k)| / OTF(0) along one axis for k = 0 .. N/2.
 std::vector<double> axis_mtf(const Psf& psf, bool along_y) {
-  const int n = psf.fft_size;
-  std::vector<double> lsf(static_cast<size_t>(n), 0.0);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) lsf[static_cast<size_t>(along_y ? y : x)] += psf.at(x, y);
-  std::vector<double> mtf(static_cast<size_t>(n / 2 + 1));
-  double zero = 0.0;
-  for (double v : lsf) zero += v;
-  for (int k = 0; k <= n / 2; ++k) {
-    std::complex<double> sum(0.0);
-    for (int i = 0; i < n; ++i)
-      sum += lsf[static_cast<size_t>(i)] * std::polar(1.0, -2.0 * std::numbers::pi * k * i / n);
-    mtf[static_cast<size_t>(k)] = std::abs(sum) / zero;
-  }
+  std::vector<double> mtf;
+  for (const std::complex<double>& v : axis_otf(psf, along_y)) mtf.push_back(std::abs(v));
   return mtf;
 }
 
@@ -42,6 +31,28 @@ double interpolate(const std::vector<double>& mtf, double k) {
 }
 
 }  // namespace
+
+std::vector<std::complex<double>> axis_otf(const Psf& psf, bool along_y) {
+  const int n = psf.fft_size;
+  std::vector<double> lsf(static_cast<size_t>(n), 0.0);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) lsf[static_cast<size_t>(along_y ? y : x)] += psf.at(x, y);
+  double zero = 0.0;
+  for (double v : lsf) zero += v;
+  // The DFT of the line-spread function about index n/2 (the zero angle), the twiddle factors
+  // by recurrence within each k (renormalised: the product drifts by 1e-16 a step).
+  std::vector<std::complex<double>> otf(static_cast<size_t>(n / 2 + 1));
+  for (int k = 0; k <= n / 2; ++k) {
+    const std::complex<double> step = std::polar(1.0, -2.0 * std::numbers::pi * k / n);
+    std::complex<double> twiddle = std::polar(1.0, 2.0 * std::numbers::pi * k * (n / 2) / n), sum(0.0);
+    for (int i = 0; i < n; ++i, twiddle *= step) {
+      sum += lsf[static_cast<size_t>(i)] * twiddle;
+      if ((i & 63) == 63) twiddle /= std::abs(twiddle);
+    }
+    otf[static_cast<size_t>(k)] = sum / zero;
+  }
+  return otf;
+}
 
 double sagittal_cutoff_cpd(const Psf& psf) {
   return 2.0 * psf.pupil_radius_mm / (psf.wavelength_nm * 1e-6) * kRadPerDeg;

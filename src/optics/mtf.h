@@ -12,6 +12,7 @@
 // compare it with a direct autocorrelation of the pupil samples.
 #pragma once
 
+#include <complex>
 #include <vector>
 
 #include "optics/psf.h"
@@ -35,6 +36,12 @@ double tangential_cutoff_cpd(const Psf& psf);
 // MTF is 0 by diffraction, whatever the aberrations). Between the tangential cut-off and that the
 // tangential MTF is 0 (the foreshortened pupil's autocorrelation has no support there).
 std::vector<MtfPoint> compute_mtf(const Psf& psf, const std::vector<double>& freqs_cpd);
+
+// The optical transfer function along one axis (tangential: frequencies along y) at the FFT
+// frequencies k = 0 .. N/2 (k / (N sample) cycles per radian), normalised to 1 at 0, its phase
+// about the PSF's zero angle (the chief ray's image): a PSF moved by d has its OTF times
+// exp(-2 pi i k d / (N sample)). The MTF is its modulus.
+std::vector<std::complex<double>> axis_otf(const Psf& psf, bool tangential);
 
 // The diffraction-limited MTF of a uniform circular pupil at nu = frequency / cut-off in [0, 1]:
 // (2 / pi) (acos nu - nu sqrt(1 - nu^2)); 0 beyond.

@@ -97,6 +97,11 @@ json wave_entry(const Prescription& p, const ReportOptions& options, double fiel
          {"rays_lost", w.rays_lost}});
     if (!w.warning.empty()) f["warning"] = w.warning;
     f.update(wave_optics_json(p, o, options.mtf_freqs_cpd));
+    if (options.polychromatic) try {
+        f["polychromatic"] = polychromatic_json(p, o, options.polychromatic_options, options.mtf_freqs_cpd);
+      } catch (const OpticsError& e) {
+        f["polychromatic"] = {{"error", e.what()}};
+      }
   } catch (const OpticsError& e) {
     // A field the analysis cannot serve is reported, not dropped: null numbers and the reason.
     for (const char* key :
@@ -115,6 +120,7 @@ void add_wave(json& r, const Prescription& p, const ReportOptions& options) {
   probe.object_distance_m = options.object_distance_m;
   validate(probe);
   check_mtf_frequencies(p, probe, options.mtf_freqs_cpd);
+  if (options.polychromatic) validate(options.polychromatic_options);
   json fields = json::array();
   for (double field : options.fields_deg) fields.push_back(wave_entry(p, options, field));
   r["wave"] = fields;

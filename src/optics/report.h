@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "optics/chromatic.h"
+#include "optics/polychromatic_psf.h"
 #include "optics/prescription.h"
 #include "optics/raster.h"
 #include "optics/spot.h"
@@ -27,6 +28,9 @@ struct ReportOptions {
   // object_distance_m; wave.field_deg and wave.object_distance_m are ignored.
   bool wave = false;
   WavefrontOptions wave_options;
+  // The wave section's polychromatic object per field when set (polychromatic_psf.h).
+  bool polychromatic = false;
+  PolychromaticOptions polychromatic_options;
   // MTF frequencies of the wave section (cycles per degree), each within the diffraction cut-off.
   std::vector<double> mtf_freqs_cpd{5.0, 10.0, 20.0, 30.0, 40.0, 60.0};
 };
@@ -55,7 +59,8 @@ inline constexpr double kEmmetropia_D = 0.005;
 //   rms_wavefront_waves (from the coefficients), rms_sampled_waves, pv_wavefront_waves,
 //   zernike_order, zernike_osa_um (c_j, j = 0, 1, ...), refraction {least_squares, paraxial}:
 //   {M_diopters, J0_diopters, J45_diopters}, rays, rays_lost, warning (when rays were lost)}];
-//   a field whose analysis fails (chief ray lost, too few rays) has its numbers null and `error`.
+//   a field whose analysis fails (chief ray lost, too few rays) has its numbers null and `error`;
+//   with options.polychromatic, `polychromatic` (wave_optics_report.h), or {error} when it fails.
 // Throws OpticsError for invalid chromatic or wavefront options (naming them), and for an MTF
 // frequency beyond the diffraction cut-off.
 nlohmann::json optics_report(const Prescription& prescription, const ReportOptions& options = {});

@@ -24,6 +24,26 @@ double round6(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
 
 json pair(double sagittal, double tangential) { return json::array({round6(sagittal), round6(tangential)}); }
 
+// The polychromatic object's lines (or its error).
+std::string format_polychromatic(const json& poly) {
+  if (poly.contains("error")) return "      polychromatic: " + poly["error"].get<std::string>() + "\n";
+  const json& w = poly["wavelengths_nm"];
+  std::string out = fmt::format(
+      "      polychromatic ({}-{} nm every {} nm, V(lambda) x {} source): Strehl {:.4f}, EE50 {:.2f} um, EE80 "
+      "{:.2f} um, centroid {:+.2f} um tangentially from the {} nm chief ray\n",
+      w["min"].get<double>(), w["max"].get<double>(), w["step"].get<double>(), poly["source"].get<std::string>(),
+      poly["strehl"].get<double>(), poly["ee50_um"].get<double>(), poly["ee80_um"].get<double>(),
+      poly["centroid_um"][1].get<double>(), poly["reference_wavelength_nm"].get<double>());
+  std::string tan = "          tangential", sag = "          sagittal  ";
+  for (const json& m : poly["mtf"]) {
+    tan += fmt::format(" {:>7.4f}", m["tangential"].get<double>());
+    sag += fmt::format(" {:>7.4f}", m["sagittal"].get<double>());
+  }
+  out += tan + "\n" + sag + "\n";
+  if (poly.contains("psf_warning")) out += "      warning: " + poly["psf_warning"].get<std::string>() + "\n";
+  return out;
+}
+
 }  // namespace
 
 void check_mtf_frequencies(const Prescription& p, const WavefrontOptions& o, const std::vector<double>& freqs) {
@@ -39,23 +59,10 @@ void check_mtf_frequencies(const Prescription& p, const WavefrontOptions& o, con
           f, cutoff, 2.0 * radius, lambda));
 }
 
-// The pupil grid is refined (up to kMaxAutoGrid) until neighbouring samples differ by at most
-// pi/2 of phase: the grid fine enough for the Zernike fit (64) aliases the PSF of an oblique
-// field's steep wavefront (Navarro at 20 degrees, 4.5 mm pupil: 4.5 rad steps at 64, EE50 off by 20 %).
-constexpr int kMaxAutoGrid = 512;
-
 json wave_optics_json(const Prescription& p, const WavefrontOptions& options, const std::vector<double>& freqs) {
-  WavefrontOptions o = options;
-  o.clip_at_stop = true;
-  const RetinalScale scale = retinal_scale(p, o.field_deg, o.object_distance_m, o.wavelength_nm);
-  WavefrontResult w = trace_wavefront(p, o);
-  Psf psf = compute_psf(w, scale);
-  while (!psf.warning.empty() && o.grid < kMaxAutoGrid) {
-    const double needed = o.grid * psf.max_phase_step_rad / (0.5 * std::numbers::pi);
-    o.grid = std::min(kMaxAutoGrid, 16 * static_cast<int>(std::ceil(needed / 16.0)));
-    w = trace_wavefront(p, o);
-    psf = compute_psf(w, scale);
-  }
+  const TracedPsf traced = trace_psf(p, options);
+  const WavefrontResult& w = traced.wavefront;
+  const Psf& psf = traced.psf;
   json mtf = json::array();
   for (const MtfPoint& m : compute_mtf(psf, freqs))
     mtf.push_back({{"freq_cpd", m.freq_cpd},
@@ -91,6 +98,43 @@ json wave_optics_json(const Prescription& p, const WavefrontOptions& options, co
   return f;
 }
 
+json polychromatic_json(const Prescription& p, const WavefrontOptions& options, const PolychromaticOptions& poly,
+                        const std::vector<double>& freqs) {
+  const PolychromaticPsf psf = polychromatic_psf(p, options, poly);
+  json mtf = json::array();
+  for (const MtfPoint& m : polychromatic_mtf(psf, freqs)) {
+    const MtfPoint limit = polychromatic_diffraction_limit(psf, m.freq_cpd);
+    mtf.push_back({{"freq_cpd", m.freq_cpd},
+                   {"tangential", round6(m.tangential)},
+                   {"sagittal", round6(m.sagittal)},
+                   {"tangential_cyc_per_mm", round6(m.tangential_cyc_per_mm)},
+                   {"sagittal_cyc_per_mm", round6(m.sagittal_cyc_per_mm)},
+                   {"diffraction_limit", pair(limit.sagittal, limit.tangential)}});
+  }
+  int grid_max = 0;
+  std::string warning;
+  for (const PolychromaticComponent& c : psf.components) {
+    grid_max = std::max(grid_max, c.grid);
+    if (!c.warning.empty() && warning.empty()) warning = fmt::format("{} nm: {}", c.wavelength_nm, c.warning);
+  }
+  json f = {{"wavelengths_nm",
+             {{"min", poly.min_wavelength_nm},
+              {"max", poly.max_wavelength_nm},
+              {"step", poly.step_nm},
+              {"count", psf.components.size()}}},
+            {"source", psf.source_name},
+            {"reference_wavelength_nm", psf.reference_wavelength_nm},
+            {"strehl", round6(psf.strehl)},
+            {"ee50_um", round6(psf.ee50_um)},
+            {"ee80_um", round6(psf.ee80_um)},
+            {"centroid_um", pair(psf.centroid_um.x, psf.centroid_um.y)},
+            {"peak_um", pair(psf.peak_um.x, psf.peak_um.y)},
+            {"grid_max", grid_max},
+            {"mtf", mtf}};
+  if (!warning.empty()) f["psf_warning"] = warning;
+  return f;
+}
+
 std::string format_wave_optics(const json& f) {
   const json& s = f["psf"];
   std::string out = fmt::format(
@@ -109,6 +153,7 @@ std::string format_wave_optics(const json& f) {
   }
   out += freq + "\n" + tan + "\n" + sag + "\n";
   if (f.contains("psf_warning")) out += "      warning: " + f["psf_warning"].get<std::string>() + "\n";
+  if (f.contains("polychromatic")) out += format_polychromatic(f["polychromatic"]);
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "optics/polychromatic_psf.h"
 #include "optics/prescription.h"
 #include "optics/wavefront.h"
 
@@ -29,6 +30,16 @@ void check_mtf_frequencies(const Prescription& prescription, const WavefrontOpti
 // Throws OpticsError when the analysis fails (the report turns it into the field's error).
 nlohmann::json wave_optics_json(const Prescription& prescription, const WavefrontOptions& options,
                                 const std::vector<double>& freqs_cpd);
+
+// The polychromatic object of one field (polychromatic_psf.h; options.field_deg is the field):
+// wavelengths_nm {min, max, step, count}, source, reference_wavelength_nm, strehl, ee50_um,
+// ee80_um, centroid_um and peak_um [sagittal, tangential] (from the reference wavelength's chief
+// ray's image: the lateral colour), grid_max (the finest pupil grid a wavelength needed), mtf
+// [{freq_cpd, tangential, sagittal, tangential_cyc_per_mm, sagittal_cyc_per_mm,
+// diffraction_limit [sagittal, tangential]}], and psf_warning when a wavelength's PSF has one.
+// Throws OpticsError when the analysis fails.
+nlohmann::json polychromatic_json(const Prescription& prescription, const WavefrontOptions& options,
+                                  const PolychromaticOptions& poly, const std::vector<double>& freqs_cpd);
 
 // Two or three lines of text for one field's entry (with the keys above).
 std::string format_wave_optics(const nlohmann::json& field);

@@ -213,6 +213,7 @@ WavefrontResult trace_wavefront(const Prescription& p, const WavefrontOptions& o
   out.pupil_points = s.points;
   summarise(s, wave_mm, out);
 
+  if (!o.fit_zernike) return out;
   std::vector<double> opd_um(s.opd_mm.size());
   for (size_t i = 0; i < opd_um.size(); ++i) opd_um[i] = s.opd_mm[i] * 1000.0;
   const ZernikeFit fit = fit_zernike(s.points, opd_um, o.zernike_order);

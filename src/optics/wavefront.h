@@ -53,6 +53,9 @@ struct WavefrontOptions {
   int grid = 64;                 // samples across the pupil's diameter, [8, 1024]
   int zernike_order = 6;         // highest radial order fitted, [2, 12]
   bool clip_at_stop = false;     // true: the real stop vignettes (else the disc is the pupil)
+  // false: the OPD samples, RMS and PV only (zernike_um, refraction and fit residual left empty
+  // or zero): a PSF needs no fit, which costs more than the trace on a fine grid.
+  bool fit_zernike = true;
 };
 
 struct WavefrontResult {

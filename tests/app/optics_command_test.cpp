@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -91,6 +92,59 @@ TEST(OpticsCommand, BadWaveOptionsNameTheFlag) {
   }
 }
 
+// --polychromatic adds the V(lambda)-weighted PSF's numbers under each field's wave entry (their
+// values are tested in tests/optics/polychromatic_psf_test.cpp); a narrow range keeps it quick.
+TEST(OpticsCommand, PolychromaticJsonAndText) {
+  const test::RunResult run = run_eyetrace(
+      "optics --json --wave --polychromatic --poly-range 500,600 --poly-step 25 --fields 0 --freqs 10,30", false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json f = nlohmann::json::parse(run.output)["wave"][0];
+  ASSERT_TRUE(f.contains("polychromatic")) << f.dump();
+  const nlohmann::json& poly = f["polychromatic"];
+  EXPECT_EQ(poly["wavelengths_nm"]["count"].get<int>(), 5);
+  EXPECT_EQ(poly["source"].get<std::string>(), "equal-energy");
+  for (const char* key : {"strehl", "ee50_um", "ee80_um"}) EXPECT_TRUE(poly[key].is_number()) << key;
+  EXPECT_GT(poly["strehl"].get<double>(), 0.0);
+  EXPECT_LE(poly["strehl"].get<double>(), 1.0);
+  ASSERT_EQ(poly["mtf"].size(), 2u);
+  EXPECT_EQ(poly["mtf"][1]["freq_cpd"].get<double>(), 30.0);
+  EXPECT_LE(poly["mtf"][1]["tangential"].get<double>(), poly["mtf"][1]["diffraction_limit"][1].get<double>());
+
+  const test::RunResult hot = run_eyetrace(
+      "optics --json --wave --polychromatic --poly-range 500,600 --poly-step 50 --poly-source blackbody:3000 --fields "
+      "0",
+      false);
+  ASSERT_EQ(hot.status, 0) << hot.output;
+  EXPECT_EQ(nlohmann::json::parse(hot.output)["wave"][0]["polychromatic"]["source"].get<std::string>(),
+            "blackbody 3000 K");
+  const test::RunResult text =
+      run_eyetrace("optics --wave --polychromatic --poly-range 540,580 --poly-step 20 --fields 0");
+  ASSERT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("polychromatic (540-580 nm every 20 nm, V(lambda) x equal-energy source): Strehl"),
+            std::string::npos)
+      << text.output;
+  // Without it there is no polychromatic object.
+  const test::RunResult plain = run_eyetrace("optics --json --wave --fields 0", false);
+  EXPECT_FALSE(nlohmann::json::parse(plain.output)["wave"][0].contains("polychromatic"));
+}
+
+TEST(OpticsCommand, BadPolychromaticOptionsNameTheFlag) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--wave --polychromatic --poly-range 350,700", "--poly-range \"350,700\": polychromatic range"},
+      {"--wave --polychromatic --poly-range 400", "--poly-range \"400\": expected two wavelengths"},
+      {"--wave --polychromatic --poly-step 0", "--poly-step \"0\": polychromatic step"},
+      {"--wave --polychromatic --poly-step x", "--poly-step \"x\": expected a step"},
+      {"--wave --polychromatic --poly-source sun", "--poly-source \"sun\""},
+      {"--wave --polychromatic --poly-source blackbody:1", "--poly-source \"blackbody:1\""},
+      {"--polychromatic", "--polychromatic: give --wave too"},
+  };
+  for (auto [args, expected] : cases) {
+    const test::RunResult run = run_eyetrace(std::string("optics --fields 0 ") + args);
+    EXPECT_EQ(run.status, 1) << args;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << args << ": " << run.output;
+  }
+}
+
 TEST(OpticsCommand, BadWavelengthsNameTheFlag) {
   const std::pair<const char*, const char*> cases[] = {
       {"--chromatic-range 300,700", "--chromatic-range \"300,700\": chromatic range: 300 nm is outside [360, 1020] nm"},
@@ -121,6 +175,48 @@ TEST(OpticsCommand, PlotHasSpotsAndCurve) {
   EXPECT_EQ(image.height, 256 + 400);  // spot diagram above, curve below
   EXPECT_EQ(read_image_attribute(path, "eyetrace:spot_diagram_height"), "256");
   EXPECT_NEAR(std::stod(read_image_attribute(path, "eyetrace:lca_diopters")), 2.485, 0.001);
+}
+
+// --plot DIR: the spot figure and, with --wave, one figure per field (MTF curves beside the PSF).
+TEST(OpticsCommand, PlotDirectoryHasAWaveFigurePerField) {
+  const std::string dir = std::string(EYETRACE_BINARY_DIR) + "/tests/optics_command_test/wave_plots";
+  std::filesystem::remove_all(dir);
+  const test::RunResult run = run_eyetrace("optics --wave --fields 0,20 --freqs 10,30 --plot " + dir);
+  ASSERT_EQ(run.status, 0) << run.output;
+  for (const char* name : {"spots.png", "wave_field_0.png", "wave_field_20.png"})
+    EXPECT_NE(run.output.find("figure written to " + dir + "/" + name), std::string::npos) << run.output;
+  const Image image = read_image(dir + "/wave_field_20.png");
+  EXPECT_EQ(image.width, 960);
+  EXPECT_EQ(image.height, 440);
+  EXPECT_EQ(read_image_attribute(dir + "/wave_field_20.png", "eyetrace:field_deg"), "20");
+  EXPECT_EQ(read_image_attribute(dir + "/wave_field_0.png", "eyetrace:psf_scale"), "log");
+  // The figure has the PSF panel's black background and the curves' colours, not a blank page.
+  double dark = 0.0, total = 0.0;
+  for (size_t i = 0; i < image.pixels.size(); i += 3) {
+    dark += image.pixels[i] < 0.01f ? 1.0 : 0.0;
+    total += 1.0;
+  }
+  EXPECT_GT(dark / total, 0.2);
+  EXPECT_TRUE(read_image(dir + "/spots.png").width > 0);
+}
+
+TEST(OpticsCommand, BadPlotDirectoryIsAClearError) {
+  const std::string dir = std::string(EYETRACE_BINARY_DIR) + "/tests/optics_command_test";
+  std::filesystem::create_directories(dir);
+  const std::string file = dir + "/not_a_directory";
+  std::ofstream(file) << "x";
+  const test::RunResult over_file = run_eyetrace("optics --wave --fields 0 --plot " + file);
+  EXPECT_EQ(over_file.status, 1);
+  EXPECT_NE(over_file.output.find("--plot \"" + file + "\": exists and is not a directory"), std::string::npos)
+      << over_file.output;
+  const test::RunResult under_file = run_eyetrace("optics --wave --fields 0 --plot " + file + "/figures");
+  EXPECT_EQ(under_file.status, 1);
+  EXPECT_NE(under_file.output.find("--plot \"" + file + "/figures\": cannot create the directory"), std::string::npos)
+      << under_file.output;
+  const test::RunResult scale = run_eyetrace("optics --wave --fields 0 --psf-scale sqrt --plot " + dir + "/x");
+  EXPECT_EQ(scale.status, 1);
+  EXPECT_NE(scale.output.find("--psf-scale \"sqrt\": expected log or linear"), std::string::npos) << scale.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x"));  // checked before anything is written
 }
 
 }  // namespace

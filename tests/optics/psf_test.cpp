@@ -5,6 +5,7 @@
 // diffraction-limited MTF (2/pi)(acos nu - nu sqrt(1 - nu^2)), the Strehl ratio of pure defocus
 // (sin(pi a) / (pi a))^2 for W = a rho^2 waves, and Marechal's exp(-(2 pi sigma)^2) for small
 // RMS sigma; the MTF against a direct autocorrelation of the pupil samples.
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -160,6 +161,42 @@ TEST(PsfEnergy, ParsevalHoldsForAnAberratedPupil) {
   // Intensity is in units of the diffraction-limited peak M^2: the sum is N^2 M / M^2.
   const double n2 = static_cast<double>(p.fft_size) * p.fft_size;
   EXPECT_NEAR(sum / (n2 / p.pupil_samples), 1.0, 1e-9);
+}
+
+// The spectrum the encircled energy reads is the pupil's autocorrelation (two FFTs of 2 grid);
+// it must equal the DFT of the N x N PSF's samples (the definition), term by term.
+TEST(PsfEnergy, SpectrumFromThePupilIsThePsfsSpectrum) {
+  const WavefrontResult w = synthetic(
+      48, 2.0, [](glm::dvec2 u) { return 0.3 * zernike(7, u.x, u.y) + 0.4 * zernike(4, u.x, u.y) + 0.1 * u.y; });
+  const Psf p = compute_psf(w, kEyeScale);
+  ASSERT_FALSE(p.spectrum.terms.empty());
+  Psf samples_only = p;
+  samples_only.spectrum = {};
+  const PsfSpectrum direct = psf_spectrum(samples_only);
+  ASSERT_EQ(direct.reach, 48);  // N = 256: min(grid, N/2 - 1); the pupil's M = 128 reaches 48 too
+  const int side = 2 * direct.reach + 1, inner = 2 * p.spectrum.reach + 1;
+  double largest = 0.0, worst = 0.0;
+  for (int ky = -direct.reach; ky <= direct.reach; ++ky)
+    for (int kx = -direct.reach; kx <= direct.reach; ++kx) {
+      const std::complex<double> d = direct.terms[static_cast<size_t>(ky + direct.reach) * side + kx + direct.reach];
+      const bool in = std::abs(kx) <= p.spectrum.reach && std::abs(ky) <= p.spectrum.reach;
+      const std::complex<double> q =
+          in ? p.spectrum.terms[static_cast<size_t>(ky + p.spectrum.reach) * inner + kx + p.spectrum.reach] : 0.0;
+      largest = std::max(largest, std::abs(d)), worst = std::max(worst, std::abs(d - q));
+    }
+  EXPECT_LT(worst, 1e-9 * largest);
+  EXPECT_NEAR(p.spectrum.window_x_um, direct.window_x_um, 1e-9);
+  EXPECT_NEAR(encircled_energy_radius(p, 0.5), encircled_energy_radius(samples_only, 0.5), 1e-6);
+}
+
+// The evaluator the peak search uses (separable tilt on the grid) is psf_at's direct sum.
+TEST(PsfStrehl, EvaluatorIsTheDirectSum) {
+  WavefrontResult w = synthetic(40, 1.5, [](glm::dvec2 u) { return 0.3 * zernike(7, u.x, u.y) + 0.2 * u.x; });
+  w.pupil_points.push_back({0.013, -0.2});  // off the grid: summed the direct way
+  w.opd_waves.push_back(0.1);
+  const PsfEvaluator evaluate(w, 0.8);
+  for (const glm::dvec2 a : {glm::dvec2(0.0), glm::dvec2(1e-4, -2e-4), glm::dvec2(-3e-4, 5e-5)})
+    EXPECT_NEAR(evaluate.at(a), psf_at(w, 0.8, a), 1e-12) << a.x << " " << a.y;
 }
 
 TEST(PsfStrehl, DefocusMatchesItsClosedFormAndMarechal) {
