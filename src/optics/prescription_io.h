@@ -14,6 +14,12 @@
 //     "dispersion_source": "Navarro et al. (1985) ...", "dispersion_assumed": false }
 //
 // An eye model file adds "accommodation" (read by eye_model.h; ignored here).
+// Optional per-surface fields of a surface that is not rotationally symmetric (docs/eye-models.md,
+// "Non-symmetric surfaces"): "cross_radius_mm" (null = flat) and "cross_conic" (default: conic)
+// make it a biconic whose radius_mm / conic meridian lies at "axis_deg" ([0, 180), default 0,
+// from +x towards +y) and whose cross meridian lies at axis_deg + 90; "decentre_mm": [x, y] and
+// "tilt_deg": [about x, about y] place it (surface_placement.h). A decentred stop is a
+// decentred iris. Absent, the surface is the rotationally symmetric one it always was.
 // radius_mm null = flat; semi_diameter_mm null or 0 = unlimited; role refract | stop | image.
 // Dispersion laws: "none", "navarro-herzberger", "cornu" (n_inf, k_nm, lambda0_nm),
 // "abbe-linear" (nd, vd). dispersion_source (where the laws come from) and dispersion_assumed
