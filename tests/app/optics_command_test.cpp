@@ -123,5 +123,25 @@ TEST(OpticsCommand, PlotHasSpotsAndCurve) {
   EXPECT_NEAR(std::stod(read_image_attribute(path, "eyetrace:lca_diopters")), 2.485, 0.001);
 }
 
+// The refraction as sphere, cylinder and axis and as a power vector (keys of issue 16): a -3 D
+// axial myope has sphere -3 (the refractiveerror it was built with), no cylinder, M = -3.
+TEST(OpticsCommand, SpheroCylinderKeys) {
+  const test::RunResult run =
+      run_eyetrace("optics --json --fields 0 --camera 'Camera \"navarro\" \"float refractiveerror\" -3'", false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(run.output);
+  EXPECT_NEAR(r.at("sphere_diopters").get<double>(), -3.0, 1e-6);
+  EXPECT_EQ(r.at("cylinder_diopters").get<double>(), 0.0);
+  EXPECT_EQ(r.at("axis_deg").get<double>(), 0.0);
+  EXPECT_NEAR(r.at("M").get<double>(), -3.0, 1e-6);
+  EXPECT_EQ(r.at("J0").get<double>(), 0.0);
+  EXPECT_EQ(r.at("J45").get<double>(), 0.0);
+  const test::RunResult text =
+      run_eyetrace("optics --fields 0 --camera 'Camera \"navarro\" \"float refractiveerror\" -3'");
+  EXPECT_NE(text.output.find("refraction -3.000 / +0.000 x 0.0 (sphere D / minus cylinder D x axis deg)"),
+            std::string::npos)
+      << text.output;
+}
+
 }  // namespace
 }  // namespace eyetrace
