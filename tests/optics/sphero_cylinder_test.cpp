@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/meridian_refraction.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
 #include "optics/report.h"
@@ -26,24 +27,7 @@ Prescription navarro() {
   return make_eye(o);
 }
 
-// The refraction (D) at the corneal vertex in one principal meridian, where the anterior cornea
-// has curvature c0: y-nu matrices from the cornea to the retina, V = 1000 A / B (the object
-// vergence focused on the retina: A y + B n u = 0 with n u = -V y / 1000).
-double meridian_refraction(const Prescription& p, double c0) {
-  double A = 1, B = 0, C = 0, D = 1;
-  auto apply = [&](double a, double b, double c, double d) {
-    const double nA = a * A + b * C, nB = a * B + b * D, nC = c * A + d * C, nD = c * B + d * D;
-    A = nA, B = nB, C = nC, D = nD;
-  };
-  for (int i = 0; i < p.image_index(); ++i) {
-    const Surface& s = p.surfaces[i];
-    const double n = i == 0 ? 1.0 : p.surfaces[i - 1].index_after;
-    const double c = i == 0 ? c0 : (s.profile.kind == ProfileKind::Plane ? 0.0 : s.profile.curvature);
-    if (s.role == SurfaceRole::Refract) apply(1, 0, -(s.index_after - n) * c, 1);
-    apply(1, s.thickness_mm / s.index_after, 0, 1);
-  }
-  return 1000.0 * A / B;
-}
+using test::meridian_refraction;
 
 // Navarro's eye with the anterior cornea's meridian at axis_deg as published (7.72 mm) and the
 // one at axis_deg + 90 steeper by cylinder_D of surface power: (n' - n)(c_cross - c) = C.
@@ -62,8 +46,9 @@ TEST(SpheroCylinder, CornealCylinderAtAxis90MatchesThePerMeridianThickLens) {
   // The 90 deg meridian has the flat curvature (sphere), the 180 deg one the steep (more myopic).
   const double v90 = meridian_refraction(p, c_flat), v180 = meridian_refraction(p, c_steep);
   const double expected_cylinder = v180 - v90;
-  // 1.50 D at the cornea is about 1.5 D at the corneal vertex (less the thick-lens effect).
-  EXPECT_NEAR(expected_cylinder, -1.5, 0.15);
+  // The anterior cornea lies in the refraction's reference plane: its 1.50 D of cylinder is
+  // the refraction's, whatever the rest of the eye (the 2x2 products agree to round-off).
+  EXPECT_NEAR(expected_cylinder, -1.5, 1e-9);
   const SpheroCylinder rx = refraction_sphero_cylinder(p);
   EXPECT_NEAR(rx.cylinder_D, expected_cylinder, 0.05);  // the tolerance
   EXPECT_NEAR(rx.cylinder_D, expected_cylinder, 1e-9);  // what it achieves
@@ -88,6 +73,24 @@ TEST(SpheroCylinder, CornealCylinderAtAxis90MatchesThePerMeridianThickLens) {
   EXPECT_NE(text.find("minus cylinder"), std::string::npos) << text;
   // The real-ray spot still traces (through the general path): rays arrive.
   EXPECT_GT(r.at("spot")[0].at("rays").get<int>(), 0);
+}
+
+TEST(SpheroCylinder, ToricLensSurfaceMatchesThePerMeridianThickLens) {
+  // Deep in the eye the thick system matters: the lens's back surface (R -6 mm) with a cross
+  // meridian of -5.5 mm at axis 60 gives a refraction cylinder well below its surface cylinder.
+  Prescription p = navarro();
+  const int back = p.image_index() - 1;
+  const SurfaceProfile c = p.surfaces[back].profile;
+  p.surfaces[back].profile = SurfaceProfile::biconic(c.curvature, c.conic, 1.0 / -5.5, c.conic, 60.0);
+  const double v_axis = meridian_refraction(p, c.curvature, back);
+  const double v_cross = meridian_refraction(p, 1.0 / -5.5, back);
+  const double surface_cylinder = 1000.0 * (p.surfaces[back].index_after - p.surfaces[back - 1].index_after) *
+                                  (1.0 / -5.5 - c.curvature);  // power added in the cross meridian
+  const SpheroCylinder rx = refraction_sphero_cylinder(p);
+  EXPECT_NEAR(rx.cylinder_D, v_cross - v_axis, 1e-9);
+  EXPECT_NEAR(rx.sphere_D, v_axis, 1e-9);
+  EXPECT_NEAR(rx.axis_deg, 60.0, 1e-9);
+  EXPECT_GT(std::abs(std::abs(rx.cylinder_D) - surface_cylinder), 0.1);  // the thick eye's effect
 }
 
 TEST(SpheroCylinder, ObliqueAxisIsTheFlatMeridian) {
