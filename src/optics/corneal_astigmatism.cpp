@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "optics/optics_error.h"
+#include "optics/sphero_cylinder.h"
 
 namespace eyetrace::optics {
 
@@ -23,7 +24,7 @@ void make_cornea_biconic(Prescription& p, double cylinder_D, double& axis_deg) {
   if (p.surfaces.empty() || p.surfaces[0].role != SurfaceRole::Refract ||
       p.surfaces[0].profile.kind == ProfileKind::Biconic)
     throw OpticsError("cylinder", "the first surface is not a rotationally symmetric refracting cornea");
-  if (axis_deg == 180.0) axis_deg = 0.0;  // the clinical "x 180" is the horizontal meridian
+  axis_deg = tabo_axis_deg(axis_deg);  // the prescription frame's angle; TABO 180 is 0
   const SurfaceProfile base = p.surfaces[0].profile;
   const double c = base.is_flat() ? 0.0 : base.curvature;
   p.surfaces[0].profile = SurfaceProfile::biconic(c, base.conic, c, base.conic, axis_deg);

@@ -8,8 +8,9 @@
 // plane, so its power matrix adds to the refraction matrix (sphero_cylinder.h) unchanged. At a
 // spectacle plane (vertex distance d) a refraction F becomes F / (1 + d F) per meridian instead.
 // Cylinders are in the refraction's (correcting lens's) sign: negative = minus cylinder, i.e. the
-// cross meridian is the more powerful one. Axes in [0, 180] deg (180 = 0), from +x towards +y
-// (docs/eye-models.md).
+// cross meridian is the more powerful one. The axis is clinical, in TABO notation as
+// refraction_sphero_cylinder reports it (sphero_cylinder.h), [0, 180] deg (180 = 0); the
+// biconic's axis_deg in the prescription frame is tabo_axis_deg of it.
 #pragma once
 
 #include "optics/prescription.h"

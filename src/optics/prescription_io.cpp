@@ -3,7 +3,9 @@
 #include "optics/prescription_io.h"
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <tuple>
 #include <utility>
 
@@ -257,6 +259,14 @@ json prescription_to_json(const Prescription& p) {
           {"notes", p.notes},
           {"dispersion_source", p.dispersion_source},
           {"dispersion_assumed", p.dispersion_assumed}};
+}
+
+Prescription load_prescription_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw OpticsError(fmt::format("{}: cannot read the prescription file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return prescription_from_json_text(text.str(), path);
 }
 
 Prescription load_embedded_prescription(const std::string& file_name) {

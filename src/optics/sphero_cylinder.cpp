@@ -96,6 +96,15 @@ SpheroCylinder sphero_cylinder(const Mat2& f) {
   return out;
 }
 
-SpheroCylinder refraction_sphero_cylinder(const Prescription& p) { return sphero_cylinder(refraction_matrix_D(p)); }
+Mat2 clinical_from_prescription(const Mat2& m) { return {m.xx, -m.xy, -m.yx, m.yy}; }
+
+double tabo_axis_deg(double a) {
+  const double mirrored = 180.0 - std::fmod(a, 180.0);
+  return mirrored >= 180.0 ? mirrored - 180.0 : mirrored;
+}
+
+SpheroCylinder refraction_sphero_cylinder(const Prescription& p) {
+  return sphero_cylinder(clinical_from_prescription(refraction_matrix_D(p)));
+}
 
 }  // namespace eyetrace::optics

@@ -11,8 +11,13 @@
 // refracts by n u' = n u - (n' - n) K y; a gap of thickness t in index n transfers by
 // y' = y + t / n (n u). Decentrations and tilts are ignored here: to first order they add prism,
 // not power (the astigmatism a tilted lens induces is of second order in the tilt and appears in
-// the real-ray trace and the wavefront only). Axis angles are measured in the system's xy plane
-// from +x towards +y (docs/eye-models.md says how that maps to the clinical TABO notation).
+// the real-ray trace and the wavefront only).
+//
+// Frames: refraction_matrix_D is in the prescription's frame (x, y of the system). The clinical
+// refraction (refraction_sphero_cylinder) is stated in the frame of ANSI Z80.28, as the
+// wavefront's Zernike coefficients are (wavefront.h): x_osa = -x, y_osa = y, i.e. as the examiner
+// facing the eye sees it, so its axis is in TABO notation (0 at the examiner's right, counter-
+// clockwise) and equals 180 - the prescription-frame angle (mod 180); J45 changes sign with it.
 #pragma once
 
 #include "optics/prescription.h"
@@ -55,7 +60,13 @@ struct SpheroCylinder {
 inline constexpr double kNoCylinder_D = 1e-9;
 SpheroCylinder sphero_cylinder(const Mat2& power_D);
 
-// refraction_matrix_D as a sphero-cylinder.
+// A power matrix of the prescription frame in the clinical (ANSI Z80.28) frame: x mirrored.
+Mat2 clinical_from_prescription(const Mat2& m);
+// The angle of a meridian in TABO notation from its angle in the prescription frame (and back:
+// the map is its own inverse), in [0, 180).
+double tabo_axis_deg(double prescription_axis_deg);
+
+// refraction_matrix_D as the clinical sphero-cylinder and power vector (TABO axis).
 SpheroCylinder refraction_sphero_cylinder(const Prescription& p);
 
 }  // namespace eyetrace::optics

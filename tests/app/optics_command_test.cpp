@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
+#include "optics/prescription_io.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
@@ -141,6 +144,38 @@ TEST(OpticsCommand, SpheroCylinderKeys) {
   EXPECT_NE(text.output.find("refraction -3.000 / +0.000 x 0.0 (sphere D / minus cylinder D x axis deg)"),
             std::string::npos)
       << text.output;
+}
+
+// --prescription: a prescription JSON with a toric anterior cornea (1.50 D steeper in the 180
+// meridian: (1.376 - 1)(1/R' - 1/7.72) = 1.5 D) reports -1.50 D of cylinder at axis 90 (the
+// cornea lies in the refraction's reference plane, docs/eye-models.md); a bad field is an error
+// naming the file, the surface and the field.
+TEST(OpticsCommand, PrescriptionFileWithAToricCornea) {
+  const test::TempDir dir("optics-prescription");
+  nlohmann::json j = optics::prescription_to_json(optics::load_embedded_prescription("navarro.json"));
+  j["surfaces"][0]["cross_radius_mm"] = 1.0 / (1.0 / 7.72 + 1.5e-3 / 0.376);
+  j["surfaces"][0]["axis_deg"] = 90.0;
+  const std::string path = dir.file("toric.json");
+  std::ofstream(path) << j.dump(2);
+  const test::RunResult run = run_eyetrace("optics --json --fields 0 --prescription " + path, false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(run.output);
+  EXPECT_NEAR(r.at("cylinder_diopters").get<double>(), -1.5, 1e-6);
+  EXPECT_NEAR(r.at("axis_deg").get<double>(), 90.0, 1e-6);
+  EXPECT_NEAR(r.at("J0").get<double>(), -0.75, 1e-6);  // -C/2 cos(2 x 90 deg) = 0.75 x (-1)
+
+  j["surfaces"][0]["axis_deg"] = 200.0;
+  const std::string bad = dir.file("bad.json");
+  std::ofstream(bad) << j.dump(2);
+  const test::RunResult failed = run_eyetrace("optics --prescription " + bad);
+  EXPECT_NE(failed.status, 0);
+  EXPECT_NE(
+      failed.output.find("--prescription: " + bad + ": surface 0 'cornea anterior': axis_deg 200 is outside [0, 180)"),
+      std::string::npos)
+      << failed.output;
+  const test::RunResult both = run_eyetrace("optics --camera 'Camera \"navarro\"' --prescription " + path);
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.output.find("give --camera or --prescription, not both"), std::string::npos) << both.output;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "optics/paraxial.h"
 #include "optics/report.h"
 #include "optics/sphero_cylinder.h"
+#include "optics/wavefront.h"
 
 namespace eyetrace::optics {
 namespace {
@@ -89,22 +90,40 @@ TEST(SpheroCylinder, ToricLensSurfaceMatchesThePerMeridianThickLens) {
   const SpheroCylinder rx = refraction_sphero_cylinder(p);
   EXPECT_NEAR(rx.cylinder_D, v_cross - v_axis, 1e-9);
   EXPECT_NEAR(rx.sphere_D, v_axis, 1e-9);
-  EXPECT_NEAR(rx.axis_deg, 60.0, 1e-9);
+  EXPECT_NEAR(rx.axis_deg, 120.0, 1e-9);                                 // 60 deg from +x towards +y is TABO 120
   EXPECT_GT(std::abs(std::abs(rx.cylinder_D) - surface_cylinder), 0.1);  // the thick eye's effect
 }
 
-TEST(SpheroCylinder, ObliqueAxisIsTheFlatMeridian) {
+TEST(SpheroCylinder, ObliqueAxisIsTheFlatMeridianInTaboNotation) {
   for (const double axis : {0.0, 30.0, 135.0, 179.0}) {
     const Prescription p = toric_navarro(2.0, axis);
     const double v_axis = meridian_refraction(p, p.surfaces[0].profile.curvature);
     const double v_cross = meridian_refraction(p, p.surfaces[0].profile.cross_curvature);
     const SpheroCylinder rx = refraction_sphero_cylinder(p);
+    // The prescription frame's x is mirrored in the clinical frame (ANSI Z80.28, the examiner's
+    // view): a meridian at a from +x towards +y is at 180 - a in TABO notation.
+    const double tabo = std::fmod(180.0 - axis, 180.0);
     EXPECT_NEAR(rx.sphere_D, v_axis, 1e-9) << axis;
     EXPECT_NEAR(rx.cylinder_D, v_cross - v_axis, 1e-9) << axis;
-    EXPECT_NEAR(rx.axis_deg, axis, 1e-9) << axis;
-    EXPECT_NEAR(rx.J0_D, -rx.cylinder_D / 2 * std::cos(2 * axis * kDeg), 1e-9);
-    EXPECT_NEAR(rx.J45_D, -rx.cylinder_D / 2 * std::sin(2 * axis * kDeg), 1e-9);
+    EXPECT_NEAR(rx.axis_deg, tabo, 1e-9) << axis;
+    EXPECT_NEAR(rx.J0_D, -rx.cylinder_D / 2 * std::cos(2 * tabo * kDeg), 1e-9);
+    EXPECT_NEAR(rx.J45_D, -rx.cylinder_D / 2 * std::sin(2 * tabo * kDeg), 1e-9);
   }
+}
+
+// The power vector agrees with the one the wavefront section reads from the Zernike coefficients
+// of real rays (wavefront.h, "paraxial": curvature at the pupil centre, in the ANSI Z80.28 frame),
+// an independent computation: same frame, same signs; the vergence there is at the entrance
+// pupil, 3 mm inside the cornea, hence the 0.02 D.
+TEST(SpheroCylinder, PowerVectorAgreesWithTheWavefrontsInItsFrame) {
+  const Prescription p = toric_navarro(1.5, 30.0);
+  const SpheroCylinder rx = refraction_sphero_cylinder(p);
+  WavefrontOptions o;
+  const WavefrontResult w = trace_wavefront(p, o);
+  EXPECT_NEAR(w.paraxial.M_D, rx.M_D, 0.02);
+  EXPECT_NEAR(w.paraxial.J0_D, rx.J0_D, 0.02);
+  EXPECT_NEAR(w.paraxial.J45_D, rx.J45_D, 0.02);
+  EXPECT_GT(std::abs(rx.J45_D), 0.5);  // the test has a J45 whose sign matters
 }
 
 TEST(SpheroCylinder, SymmetricEyesHaveNoCylinderAndTheirSphereIsTheRefraction) {
