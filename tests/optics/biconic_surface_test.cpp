@@ -125,6 +125,68 @@ TEST(BiconicSurface, CylinderMatchesTheCircularCylinder) {
   EXPECT_NEAR(swapped.t, static_cast<double>(t), 1e-12);
 }
 
+// The first crossing, whichever way the intersection finds it (Newton from the start conic, the
+// vertex plane, or the bracketed search): random strongly astigmatic biconics and rays from any
+// side, against a brute-force search written here (the formula in long double sampled every
+// 0.5 um along the ray, the first sign change inside the rim, bisected).
+TEST(BiconicSurface, FirstCrossingMatchesABruteForceSearch) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int hits = 0, misses = 0, differ = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double R1 = (u(rng) < 0.5 ? -1 : 1) * (4.0 + 20.0 * u(rng)),
+                 R2 = (u(rng) < 0.5 ? -1 : 1) * (4.0 + 20.0 * u(rng));
+    const double Q1 = -1.5 + 2.0 * u(rng), Q2 = -1.5 + 2.0 * u(rng), axis = 180.0 * u(rng);
+    const SurfaceProfile s = SurfaceProfile::biconic(1.0 / R1, Q1, 1.0 / R2, Q2, axis);
+    const glm::dvec3 o(8.0 * (u(rng) - 0.5), 8.0 * (u(rng) - 0.5), -4.0 + 3.0 * u(rng));
+    const double theta = 1.4 * u(rng), phi = 2.0 * std::numbers::pi * u(rng);  // up to 80 deg off the axis
+    const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    auto g = [&](long double t, bool& valid) {
+      const long double x = o.x + t * d.x, y = o.y + t * d.y, z = o.z + t * d.z;
+      const long double a = axis * std::numbers::pi_v<long double> / 180.0L;
+      const long double uu = std::cos(a) * x + std::sin(a) * y, vv = -std::sin(a) * x + std::cos(a) * y;
+      const long double rad = 1.0L - (1.0L + Q1) * uu * uu / (R1 * R1) - (1.0L + Q2) * vv * vv / (R2 * R2);
+      valid = rad > 0.0L;
+      return valid ? z - (uu * uu / R1 + vv * vv / R2) / (1.0L + std::sqrt(rad)) : 0.0L;
+    };
+    long double t_ref = -1.0L;
+    bool prev_valid = false;
+    long double prev = 0.0L;
+    for (int i = 0; i <= 60000; ++i) {  // t in [0, 30] mm
+      const long double t = i * 0.0005L;
+      bool valid = false;
+      const long double now = g(t, valid);
+      if (valid && prev_valid && (prev < 0.0L) != (now < 0.0L)) {
+        long double lo = t - 0.0005L, hi = t;
+        for (int it = 0; it < 80; ++it) {
+          const long double mid = 0.5L * (lo + hi);
+          bool v = false;
+          ((g(mid, v) < 0.0L) == (prev < 0.0L) ? lo : hi) = mid;
+        }
+        t_ref = 0.5L * (lo + hi);
+        break;
+      }
+      prev_valid = valid, prev = now;
+    }
+    const ProfileHit hit = intersect(s, o, d);
+    EXPECT_FALSE(hit.diverged) << k;
+    if (t_ref < 0.0L) {
+      // No crossing within 30 mm (a hit further on, or a tangent touch, would be found by the
+      // intersection but not here).
+      if (hit.hit && hit.t < 30.0) ++differ;
+      ++misses;
+      continue;
+    }
+    ++hits;
+    ASSERT_TRUE(hit.hit) << k;
+    if (std::abs(hit.t - static_cast<double>(t_ref)) > 1e-9) ++differ;
+    EXPECT_NEAR(hit.t, static_cast<double>(t_ref), 1e-9) << k << " R " << R1 << "/" << R2 << " Q " << Q1 << "/" << Q2;
+  }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(misses, 20);
+}
+
 TEST(BiconicSurface, MissesBeyondTheRimAndBehindWithoutNaN) {
   const SurfaceProfile s = SurfaceProfile::biconic(1.0 / 7.72, -0.26, 1.0 / 7.0, 0.0, 0.0);
   // Parallel to the axis beyond the x meridian's reach (8.97 mm): no sheet there.
