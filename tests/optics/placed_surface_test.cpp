@@ -70,6 +70,25 @@ TEST(PlacedSurface, TiltedPlateDisplacesARayByTheTextbookAmount) {
   }
 }
 
+TEST(PlacedSurface, TiltedExitFaceReflectsTotallyBeyondTheCriticalAngle) {
+  // Glass (n = 1.5) to air through a face tilted by i: an axial ray meets it at incidence i, and
+  // sin i > 1 / n (i > 41.8 deg) is total internal reflection, reported at that face.
+  for (const double tilt : {40.0, 43.0}) {
+    Prescription p = tilted_plate(3.0, 1.5, 0.0, 0.0);
+    p.surfaces[2].placement.tilt_x_deg = tilt;
+    p.surfaces[2].semi_diameter_mm = 2.0;  // clear of the front face at 43 deg
+    const TraceResult r = CompiledSystem(p).trace_forward({{0.0, 0.0, -1.0}, {0.0, 0.0, 1.0}});
+    const bool tir = std::sin(tilt * std::numbers::pi / 180.0) * 1.5 > 1.0;
+    EXPECT_EQ(r.status, tir ? TraceStatus::TotalInternalReflection : TraceStatus::Ok) << tilt;
+    if (tir) {
+      EXPECT_EQ(r.surface, 2);
+    } else {  // Snell: sin(out) = n sin(i) about the tilted normal
+      const double i = tilt * std::numbers::pi / 180.0, out = std::asin(1.5 * std::sin(i));
+      EXPECT_NEAR(std::acos(r.ray.direction.z), out - i, 1e-12);
+    }
+  }
+}
+
 TEST(PlacedSurface, DecentredSphereTracesLikeTheRayMovedTheOtherWay) {
   Prescription centred;
   centred.name = "sphere";
