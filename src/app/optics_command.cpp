@@ -18,6 +18,7 @@
 #include "app/commands.h"
 #include "cameras/lens_system_camera.h"
 #include "optics/optics_error.h"
+#include "optics/prescription_io.h"
 #include "optics/report.h"
 #include "optics/spot.h"
 #include "optics/wave_optics_report.h"
@@ -30,7 +31,8 @@ namespace eyetrace {
 namespace {
 
 struct OpticsArgs {
-  std::string camera = "Camera \"navarro\"";
+  std::string camera;        // empty: 'Camera "navarro"'
+  std::string prescription;  // a prescription JSON file instead of a camera
   bool json = false;
   std::string fields = "0,10,20,30,40";
   std::string object_distance;  // metres; empty = infinity
@@ -308,7 +310,17 @@ std::vector<std::string> write_wave_plots(const std::string& dir, const optics::
 
 int run_optics(const OpticsArgs& a) {
   set_warnings_fatal(a.strict);
-  const optics::Prescription p = camera_prescription(a.camera);
+  if (!a.camera.empty() && !a.prescription.empty()) throw_error("give --camera or --prescription, not both");
+  optics::Prescription p;
+  if (a.prescription.empty()) {
+    p = camera_prescription(a.camera.empty() ? "Camera \"navarro\"" : a.camera);
+  } else {
+    try {
+      p = optics::load_prescription_file(a.prescription);
+    } catch (const optics::OpticsError& e) {
+      throw_error(fmt::format("--prescription: {}", e.what()));
+    }
+  }
   optics::ReportOptions o;
   o.fields_deg = parse_fields(a.fields);
   o.object_distance_m = parse_distance(a.object_distance);
@@ -362,6 +374,9 @@ CommandRunner add_optics_command(CLI::App& app) {
   c->add_option("--camera", args->camera,
                 "Camera directive as for render's --camera, e.g. 'Camera \"navarro\" \"float accommodation\" 2' "
                 "(default: 'Camera \"navarro\"')");
+  c->add_option("--prescription", args->prescription,
+                "A prescription JSON file (docs/eye-models.md: the data/eyes format, with optional biconic, "
+                "tilted and decentred surfaces) instead of --camera");
   c->add_flag("--json", args->json, "Print the report as JSON");
   c->add_flag("--strict", args->strict, "Treat warnings about the camera (e.g. a clamped aperture) as errors");
   c->add_option("--fields", args->fields, "Field angles for real-ray spots, degrees (default 0,10,20,30,40)");

@@ -74,6 +74,13 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
       resolution_(resolution),
       settings_(settings),
       dispersive_(settings.dispersive && system_.dispersive()) {
+  // The pupil sampler and the retina mapping rotate one traced meridian to every azimuth; a
+  // biconic or placed surface breaks that symmetry (issue 16 part 2 brings such eyes here).
+  if (!prescription.rotationally_symmetric())
+    throw optics::OpticsError(
+        fmt::format("the camera does not yet render a system that is not rotationally symmetric ('{}' has a "
+                    "biconic, decentred or tilted surface); `eyetrace optics` analyses it",
+                    prescription.name));
   const Vec4 w = default_screen_window(resolution);
   screen_window_ = glm::dvec4(w);
   screen_scale_ = {(screen_window_[1] - screen_window_[0]) / resolution.x,

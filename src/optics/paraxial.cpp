@@ -24,7 +24,7 @@ RayMatrix multiply(const RayMatrix& m, const RayMatrix& n) {  // m after n
 RayMatrix refraction(const Prescription& p, int i) {
   const Surface& s = p.surfaces[i];
   if (s.role == SurfaceRole::Image || s.profile.is_flat()) return {};
-  const double power = (s.index_after - p.index_before(i)) * s.profile.curvature;  // 1/mm
+  const double power = (s.index_after - p.index_before(i)) * s.profile.mean_curvature();  // 1/mm
   return {1.0, 0.0, -power, 1.0};
 }
 
@@ -112,6 +112,8 @@ ParaxialData paraxial_analysis(const Prescription& p) {
     out.entrance_pupil.position_mm = z[0] + n * ms.B / ms.A;
     out.entrance_pupil.magnification = 1.0 / ms.A;
     out.entrance_pupil.diameter_mm = stop_diameter / std::abs(ms.A);
+    out.entrance_pupil.centre_x_mm = p.surfaces[stop].placement.decentre_x_mm / ms.A;
+    out.entrance_pupil.centre_y_mm = p.surfaces[stop].placement.decentre_y_mm / ms.A;
   }
   // Exit pupil: matrix from the stop plane to the last vertex; the image-space plane at
   // d = -n' B / D behind the last vertex is conjugate to the stop with magnification 1 / D.
@@ -120,6 +122,8 @@ ParaxialData paraxial_analysis(const Prescription& p) {
     out.exit_pupil.position_mm = z[last] - n_img * m2.B / m2.D;
     out.exit_pupil.magnification = 1.0 / m2.D;
     out.exit_pupil.diameter_mm = stop_diameter / std::abs(m2.D);
+    out.exit_pupil.centre_x_mm = p.surfaces[stop].placement.decentre_x_mm / m2.D;
+    out.exit_pupil.centre_y_mm = p.surfaces[stop].placement.decentre_y_mm / m2.D;
   }
   out.refraction_D = refraction_D(p);
   out.axial_length_mm = z.back() - z[0];

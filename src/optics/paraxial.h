@@ -1,6 +1,9 @@
 // First-order (paraxial) analysis of a prescription with 2x2 y-nu matrices: equivalent power,
 // cardinal points, pupils, refraction and the image position that gives a wanted refraction.
-// Conics do not enter (paraxially every conic is its osculating sphere). Positions are in mm
+// Conics do not enter (paraxially every conic is its osculating sphere); a biconic enters as
+// its spherical equivalent (the mean of its meridians' curvatures: sphero_cylinder.h has the
+// per-meridian analysis) and decentrations and tilts as nothing (to first order they add prism,
+// not power), except the stop's decentration, which moves the pupils' centres. Positions are in mm
 // from the first vertex (the anterior corneal vertex for an eye), +z towards the image.
 #pragma once
 
@@ -21,6 +24,9 @@ struct Pupil {
   double position_mm = 0.0;  // from the first vertex
   double diameter_mm = 0.0;
   double magnification = 0.0;  // pupil diameter / stop diameter
+  // The image of the stop's centre in the pupil plane: the stop's decentration times the
+  // magnification (0 for a centred stop). The chief ray of an axial object aims at it.
+  double centre_x_mm = 0.0, centre_y_mm = 0.0;
 };
 
 struct ParaxialData {

@@ -4,6 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <fmt/format.h>
 
@@ -38,6 +43,12 @@ std::vector<double> Prescription::vertex_z_mm() const {
 }
 
 double Prescription::axial_length_mm() const { return surfaces.empty() ? 0.0 : vertex_z_mm().back(); }
+
+bool Prescription::rotationally_symmetric() const {
+  for (const Surface& s : surfaces)
+    if (!s.profile.rotationally_symmetric() || !s.placement.is_identity()) return false;
+  return true;
+}
 
 const Medium* Prescription::find_medium(const std::string& name) const {
   for (const Medium& m : media)
@@ -81,6 +92,30 @@ void check_finite(const Prescription& p, size_t i, const char* what, double valu
 // Height up to which a surface is used: its semi-diameter, else the conic's own reach.
 double used_height(const Surface& s) { return s.limited() ? s.semi_diameter_mm : s.profile.max_height(); }
 
+// The biconic's second meridian and the placement: finite, axis in [0, 180), tilts and
+// decentrations within their limits.
+void validate_shape(const Prescription& p, size_t i) {
+  const Surface& s = p.surfaces[i];
+  const SurfacePlacement& at = s.placement;
+  check_finite(p, i, "decentre_x_mm", at.decentre_x_mm);
+  check_finite(p, i, "decentre_y_mm", at.decentre_y_mm);
+  check_finite(p, i, "tilt_x_deg", at.tilt_x_deg);
+  check_finite(p, i, "tilt_y_deg", at.tilt_y_deg);
+  for (const double d : {at.decentre_x_mm, at.decentre_y_mm})
+    if (std::abs(d) > kMaxDecentre_mm)
+      throw OpticsError(fmt::format("{}: decentration {} mm is beyond +-{} mm", label(p, i), d, kMaxDecentre_mm));
+  for (const double t : {at.tilt_x_deg, at.tilt_y_deg})
+    if (!(std::abs(t) < kMaxTilt_deg))
+      throw OpticsError(
+          fmt::format("{}: tilt {} deg is outside (-{}, {}) deg", label(p, i), t, kMaxTilt_deg, kMaxTilt_deg));
+  if (s.profile.kind != ProfileKind::Biconic) return;
+  check_finite(p, i, "cross curvature", s.profile.cross_curvature);
+  check_finite(p, i, "cross conic", s.profile.cross_conic);
+  check_finite(p, i, "axis_deg", s.profile.axis_deg);
+  if (!(s.profile.axis_deg >= 0.0 && s.profile.axis_deg < 180.0))
+    throw OpticsError(fmt::format("{}: axis_deg {} is outside [0, 180)", label(p, i), s.profile.axis_deg));
+}
+
 void validate_surface(const Prescription& p, size_t i) {
   const Surface& s = p.surfaces[i];
   check_finite(p, i, "curvature", s.profile.curvature);
@@ -102,6 +137,7 @@ void validate_surface(const Prescription& p, size_t i) {
   if (s.index_after > kMaxIndex)
     throw OpticsError(
         fmt::format("{}: index {} of medium '{}' is above {}", label(p, i), s.index_after, s.medium, kMaxIndex));
+  validate_shape(p, i);
   if (s.profile.kind == ProfileKind::Plane && s.profile.curvature != 0.0)
     throw OpticsError(fmt::format("{}: a plane profile has curvature {}", label(p, i), s.profile.curvature));
   const double reach = s.profile.max_height();
@@ -118,6 +154,45 @@ void validate_surface(const Prescription& p, size_t i) {
           fmt::format("{}: the medium after a stop must be the medium before it "
                       "(index {} vs {})",
                       label(p, i), s.index_after, p.index_before(static_cast<int>(i))));
+  }
+}
+
+// z (system frame) where the line parallel to the axis through (x, y) meets the surface whose
+// vertex is at z_vertex, if it does so inside the surface's clear aperture (or reach).
+std::optional<double> surface_z_at(const Surface& s, double z_vertex, double x, double y) {
+  const glm::dmat3 r = s.placement.system_from_local();
+  const glm::dvec3 centre(s.placement.decentre_x_mm, s.placement.decentre_y_mm, z_vertex);
+  // From 1 m in front, along +z, in the local frame (the rotation's inverse is its transpose).
+  const glm::dmat3 local_from_system = glm::transpose(r);
+  const glm::dvec3 o = local_from_system * (glm::dvec3(x, y, z_vertex - 1000.0) - centre);
+  const glm::dvec3 d = local_from_system * glm::dvec3(0.0, 0.0, 1.0);
+  const ProfileHit hit = intersect(s.profile, o, d, 0.0);
+  if (!hit.hit) return std::nullopt;
+  const glm::dvec3 at = o + hit.t * d;
+  const double h = used_height(s);
+  if (std::isfinite(h) && at.x * at.x + at.y * at.y > h * h) return std::nullopt;
+  return z_vertex - 1000.0 + hit.t;
+}
+
+// The crossing check of two adjacent surfaces when either is biconic or placed: on a polar grid
+// (32 azimuths, 64 radii) over the smaller used height about the axis, wherever both surfaces
+// are present.
+void check_crossing_2d(const Prescription& p, size_t i, const std::vector<double>& z) {
+  const Surface& a = p.surfaces[i];
+  const Surface& b = p.surfaces[i + 1];
+  double h = std::fmin(used_height(a), used_height(b));
+  if (!std::isfinite(h)) h = 50.0;  // two unbounded sheets: the central 50 mm
+  for (int k = 0; k < 32; ++k) {
+    const double phi = 2.0 * std::numbers::pi * k / 32;
+    for (int j = 0; j <= 64; ++j) {
+      const double r = h * j / 64, x = r * std::cos(phi), y = r * std::sin(phi);
+      const std::optional<double> za = surface_z_at(a, z[i], x, y), zb = surface_z_at(b, z[i + 1], x, y);
+      if (!za || !zb || *zb - *za >= -1e-9) continue;
+      throw OpticsError(
+          fmt::format("{} and surface {} '{}' cross at ({:.4g}, {:.4g}) mm, inside their clear apertures: "
+                      "thickness {} mm is too small for their sags, tilts and decentrations",
+                      label(p, i), i + 1, b.name, x, y, a.thickness_mm));
+    }
   }
 }
 
@@ -149,6 +224,11 @@ void validate(const Prescription& p) {
   for (size_t i = 0; i + 1 < p.surfaces.size(); ++i) {
     const Surface& a = p.surfaces[i];
     const Surface& b = p.surfaces[i + 1];
+    if (!a.profile.rotationally_symmetric() || !b.profile.rotationally_symmetric() || !a.placement.is_identity() ||
+        !b.placement.is_identity()) {
+      check_crossing_2d(p, i, z);
+      continue;
+    }
     const double h = std::fmin(used_height(a), used_height(b));
     if (!std::isfinite(h)) continue;  // two unbounded sheets: only the axis gap matters
     for (int j = 1; j <= 128; ++j) {
@@ -185,6 +265,25 @@ void set_stop_diameter(Prescription& p, double diameter_mm) {
   p.surfaces[s].semi_diameter_mm = 0.5 * diameter_mm;
 }
 
+namespace {
+
+// "; biconic: cross radius 7.5 conic -0.2, axis 90 deg; decentre (0.3, 0) mm, tilt (2, 0) deg"
+// for a surface that is not rotationally symmetric, "" otherwise.
+std::string shape_note(const Surface& s) {
+  std::string out;
+  if (s.profile.kind == ProfileKind::Biconic)
+    out += fmt::format(
+        "; biconic: cross radius {}, conic {:.5g}, axis {:g} deg",
+        s.profile.cross_curvature == 0.0 ? std::string("flat") : fmt::format("{:.5g}", 1.0 / s.profile.cross_curvature),
+        s.profile.cross_conic, s.profile.axis_deg);
+  if (!s.placement.is_identity())
+    out += fmt::format("; decentre ({:g}, {:g}) mm, tilt ({:g}, {:g}) deg", s.placement.decentre_x_mm,
+                       s.placement.decentre_y_mm, s.placement.tilt_x_deg, s.placement.tilt_y_deg);
+  return out;
+}
+
+}  // namespace
+
 std::string describe(const Prescription& p) {
   std::string out =
       fmt::format("{}{} ({} nm)\n", p.name, p.variant.empty() ? "" : " [" + p.variant + "]", p.wavelength_nm);
@@ -194,8 +293,8 @@ std::string describe(const Prescription& p) {
     const Surface& s = p.surfaces[i];
     const std::string radius = s.profile.is_flat() ? "flat" : fmt::format("{:.5g}", 1.0 / s.profile.curvature);
     const std::string sd = s.limited() ? fmt::format("{:.4g}", s.semi_diameter_mm) : "-";
-    out += fmt::format("{:>3} {:<24} {:>10} {:>9.5g} {:>10.6g} {:>9.6g} {:>8} {:<10} {}\n", i, s.name, radius,
-                       s.profile.conic, s.thickness_mm, s.index_after, sd, s.medium, to_string(s.role));
+    out += fmt::format("{:>3} {:<24} {:>10} {:>9.5g} {:>10.6g} {:>9.6g} {:>8} {:<10} {}{}\n", i, s.name, radius,
+                       s.profile.conic, s.thickness_mm, s.index_after, sd, s.medium, to_string(s.role), shape_note(s));
   }
   return out;
 }

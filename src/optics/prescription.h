@@ -1,8 +1,10 @@
-// Prescription: the data of a rotationally symmetric sequential optical system, ordered from the
-// object side to the image. Conventions (see docs/eye-models.md): millimetres, z along the axis,
-// z = 0 at the first surface vertex, +z towards the image; radius > 0 when the centre of
-// curvature lies on the +z side; each surface carries the thickness to the next vertex and the
-// medium after it. Surfaces are numbered from 0 in every message and result.
+// Prescription: the data of a sequential optical system, ordered from the object side to the
+// image. Conventions (see docs/eye-models.md): millimetres, z along the axis, z = 0 at the first
+// surface vertex, +z towards the image; radius > 0 when the centre of curvature lies on the +z
+// side; each surface carries the thickness to the next vertex and the medium after it. Surfaces
+// are numbered from 0 in every message and result. A surface may be biconic (conic_surface.h)
+// and may be decentred and tilted (surface_placement.h); the system is then not rotationally
+// symmetric and is traced by the general path of sequential_trace.h.
 #pragma once
 
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "optics/conic_surface.h"
 #include "optics/medium.h"
+#include "optics/surface_placement.h"
 
 namespace eyetrace::optics {
 
@@ -29,6 +32,9 @@ struct Surface {
   double index_after = 1.0;       // its index at the prescription's wavelength
   double semi_diameter_mm = 0.0;  // clear radius; 0 or +inf = unlimited
   SurfaceRole role = SurfaceRole::Refract;
+  // Decentration and tilt of the surface's local frame; the clear aperture (and a stop's
+  // opening) is centred on the local axis, so a decentred stop is a decentred iris.
+  SurfacePlacement placement;
 
   bool limited() const { return semi_diameter_mm > 0.0 && semi_diameter_mm < 1e300; }
 };
@@ -56,6 +62,8 @@ struct Prescription {
   double axial_length_mm() const;  // first vertex to image vertex
   double index_before(int surface) const { return surface == 0 ? object_index : surfaces[surface - 1].index_after; }
   const Medium* find_medium(const std::string& name) const;
+  // No biconic profile and no placement: the closed-form batched kernel traces the system.
+  bool rotationally_symmetric() const;
 };
 
 // Throws OpticsError naming the surface and parameter at the first problem found: non-finite

@@ -3,7 +3,11 @@
 #include "optics/prescription_io.h"
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
+#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -72,6 +76,33 @@ Dispersion read_dispersion(const json& j, const std::string& where) {
                     where, law));
   }
   return d;
+}
+
+// Two numbers [x, y] (an absent key gives 0, 0).
+std::pair<double, double> number_pair(const json& j, const char* key, const std::string& where) {
+  if (!j.contains(key)) return {0.0, 0.0};
+  const json& v = j[key];
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+    throw OpticsError(fmt::format("{}: '{}' must be a list of two numbers [x, y]", where, key));
+  return {v[0].get<double>(), v[1].get<double>()};
+}
+
+// The optional fields of a biconic or placed surface (see prescription_io.h).
+void read_shape(const json& s, Surface& surface, const std::string& where) {
+  if (s.contains("cross_radius_mm")) {
+    const double cross = number_or(s, "cross_radius_mm", 0.0, where);
+    if (!s["cross_radius_mm"].is_null() && cross == 0.0)
+      throw OpticsError(fmt::format("{}: cross_radius_mm 0 is not a radius (use null for flat)", where));
+    const SurfaceProfile& base = surface.profile;
+    surface.profile =
+        SurfaceProfile::biconic(base.is_flat() ? 0.0 : base.curvature, base.conic, cross == 0.0 ? 0.0 : 1.0 / cross,
+                                number_or(s, "cross_conic", base.conic, where), number_or(s, "axis_deg", 0.0, where));
+  } else {
+    for (const char* key : {"cross_conic", "axis_deg"})
+      if (s.contains(key)) throw OpticsError(fmt::format("{}: '{}' needs 'cross_radius_mm' (a biconic)", where, key));
+  }
+  std::tie(surface.placement.decentre_x_mm, surface.placement.decentre_y_mm) = number_pair(s, "decentre_mm", where);
+  std::tie(surface.placement.tilt_x_deg, surface.placement.tilt_y_deg) = number_pair(s, "tilt_deg", where);
 }
 
 SurfaceRole read_role(const std::string& role, const std::string& where) {
@@ -145,7 +176,10 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
   for (size_t i = 0; i < j["surfaces"].size(); ++i) {
     const json& s = j["surfaces"][i];
     const std::string where = fmt::format("{}: surface {}", origin, i);
-    check_keys(s, {"name", "radius_mm", "conic", "thickness_mm", "medium", "semi_diameter_mm", "role", "note"}, where);
+    check_keys(s,
+               {"name", "radius_mm", "conic", "thickness_mm", "medium", "semi_diameter_mm", "role", "note",
+                "cross_radius_mm", "cross_conic", "axis_deg", "decentre_mm", "tilt_deg"},
+               where);
     Surface surface;
     surface.name = text(s, "name", where);
     const std::string named = fmt::format("{} '{}'", where, surface.name);
@@ -154,6 +188,7 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
     if (!s["radius_mm"].is_null() && radius == 0.0)
       throw OpticsError(fmt::format("{}: radius_mm 0 is not a radius (use null for flat)", named));
     surface.profile = SurfaceProfile::from_radius(radius, number_or(s, "conic", 0.0, named));
+    read_shape(s, surface, named);
     surface.thickness_mm = number(s, "thickness_mm", named);
     surface.medium = text(s, "medium", named);
     surface.semi_diameter_mm = number_or(s, "semi_diameter_mm", 0.0, named);
@@ -199,6 +234,16 @@ json prescription_to_json(const Prescription& p) {
     e["medium"] = s.medium;
     e["semi_diameter_mm"] = s.limited() ? json(s.semi_diameter_mm) : json(nullptr);
     e["role"] = to_string(s.role);
+    if (s.profile.kind == ProfileKind::Biconic) {  // radius_mm / conic are the first meridian's
+      e["radius_mm"] = s.profile.curvature == 0.0 ? json(nullptr) : json(1.0 / s.profile.curvature);
+      e["cross_radius_mm"] = s.profile.cross_curvature == 0.0 ? json(nullptr) : json(1.0 / s.profile.cross_curvature);
+      e["cross_conic"] = s.profile.cross_conic;
+      e["axis_deg"] = s.profile.axis_deg;
+    }
+    if (!s.placement.is_identity()) {
+      e["decentre_mm"] = {s.placement.decentre_x_mm, s.placement.decentre_y_mm};
+      e["tilt_deg"] = {s.placement.tilt_x_deg, s.placement.tilt_y_deg};
+    }
     surfaces.push_back(e);
   }
   return {{"format", "eyetrace-prescription"},
@@ -214,6 +259,14 @@ json prescription_to_json(const Prescription& p) {
           {"notes", p.notes},
           {"dispersion_source", p.dispersion_source},
           {"dispersion_assumed", p.dispersion_assumed}};
+}
+
+Prescription load_prescription_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw OpticsError(fmt::format("{}: cannot read the prescription file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return prescription_from_json_text(text.str(), path);
 }
 
 Prescription load_embedded_prescription(const std::string& file_name) {

@@ -14,11 +14,16 @@
 //     "dispersion_source": "Navarro et al. (1985) ...", "dispersion_assumed": false }
 //
 // An eye model file adds "accommodation" (read by eye_model.h; ignored here).
-// radius_mm null = flat; semi_diameter_mm null or 0 = unlimited; role refract | stop | image.
-// Dispersion laws: "none", "navarro-herzberger", "cornu" (n_inf, k_nm, lambda0_nm),
-// "abbe-linear" (nd, vd). dispersion_source (where the laws come from) and dispersion_assumed
-// (true when the model's authors publish none and the laws are a choice made here) are optional.
-// Unknown keys are errors, so a misspelt field is never ignored.
+// Optional per-surface fields of a surface that is not rotationally symmetric (docs/eye-models.md,
+// "Non-symmetric surfaces"): "cross_radius_mm" (null = flat) and "cross_conic" (default: conic)
+// make it a biconic whose radius_mm / conic meridian lies at "axis_deg" ([0, 180), default 0,
+// in the prescription frame from +x towards +y; the report's clinical axis is 180 - it) and whose cross meridian lies
+// at axis_deg + 90; "decentre_mm": [x, y] and "tilt_deg": [about x, about y] place it (surface_placement.h). A
+// decentred stop is a decentred iris. Absent, the surface is the rotationally symmetric one it always was. radius_mm
+// null = flat; semi_diameter_mm null or 0 = unlimited; role refract | stop | image. Dispersion laws: "none",
+// "navarro-herzberger", "cornu" (n_inf, k_nm, lambda0_nm), "abbe-linear" (nd, vd). dispersion_source (where the laws
+// come from) and dispersion_assumed (true when the model's authors publish none and the laws are a choice made here)
+// are optional. Unknown keys are errors, so a misspelt field is never ignored.
 #pragma once
 
 #include <string>
@@ -36,6 +41,9 @@ Prescription prescription_from_json_text(const std::string& text, const std::str
 
 // The inverse of prescription_from_json (documentation keys other than notes are not kept).
 nlohmann::json prescription_to_json(const Prescription& p);
+
+// A prescription file (this format) read from disk; errors name the path. Throws OpticsError.
+Prescription load_prescription_file(const std::string& path);
 
 // An embedded data file (data/eyes/<file_name>), parsed. Throws when it is not embedded.
 Prescription load_embedded_prescription(const std::string& file_name);

@@ -9,6 +9,7 @@
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
 #include "optics/prescription_io.h"
+#include "optics/sphero_cylinder.h"
 #include "optics/wave_optics_report.h"
 
 namespace eyetrace::optics {
@@ -143,6 +144,18 @@ std::string dispersion_summary(const json& media) {
   return out;
 }
 
+// The refraction per meridian (sphero_cylinder.h): sphere, cylinder (minus cylinder) and axis,
+// and the power vector, at the first vertex.
+void add_sphero_cylinder(json& r, const Prescription& p) {
+  const SpheroCylinder rx = refraction_sphero_cylinder(p);
+  r["sphere_diopters"] = round6(rx.sphere_D) + 0.0;  // + 0.0: no -0 in the report
+  r["cylinder_diopters"] = round6(rx.cylinder_D) + 0.0;
+  r["axis_deg"] = round6(rx.axis_deg) + 0.0;
+  r["M"] = round6(rx.M_D) + 0.0;
+  r["J0"] = round6(rx.J0_D) + 0.0;
+  r["J45"] = round6(rx.J45_D) + 0.0;
+}
+
 }  // namespace
 
 json optics_report(const Prescription& p, const ReportOptions& options) {
@@ -157,6 +170,7 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
   r["notes"] = p.notes;
   r["power_diopters"] = round6(d.power_D);
   r["refraction_diopters"] = round6(d.refraction_D);
+  add_sphero_cylinder(r, p);
   // Below 0.005 D (a fiftieth of the clinical 0.25 D step) the eye counts as emmetropic: the
   // relaxed Navarro eye's -1e-5 D, the rounding of its published axial length, would otherwise
   // print a far point 98 km away. refraction_diopters keeps the exact value.
@@ -171,10 +185,13 @@ json optics_report(const Prescription& p, const ReportOptions& options) {
   r["back_focal_distance_mm"] = round6(d.back_focal_distance_mm);
   r["stop_diameter_mm"] = p.stop_diameter_mm();
   for (const auto& [key, pupil] :
-       {std::pair{"entrance_pupil", d.entrance_pupil}, std::pair{"exit_pupil", d.exit_pupil}})
+       {std::pair{"entrance_pupil", d.entrance_pupil}, std::pair{"exit_pupil", d.exit_pupil}}) {
     r[key] = {{"position_mm", round6(pupil.position_mm)},
               {"diameter_mm", round6(pupil.diameter_mm)},
               {"magnification", round6(pupil.magnification)}};
+    if (pupil.centre_x_mm != 0.0 || pupil.centre_y_mm != 0.0)  // a decentred iris
+      r[key]["centre_mm"] = {round6(pupil.centre_x_mm) + 0.0, round6(pupil.centre_y_mm) + 0.0};
+  }
   r["spot_object_distance_m"] = finite_or_null(options.object_distance_m);
   json spots = json::array();
   for (double field : options.fields_deg) {
@@ -269,14 +286,22 @@ std::string format_report(const json& r) {
   out += fmt::format("  power {} D, refraction {} D (far point {} m), axial length {} mm, retina radius {} mm\n",
                      num(r["power_diopters"], "{:.3f}"), num(r["refraction_diopters"], "{:.3f}"),
                      num(r["far_point_m"], "{:.3f}"), num(r["axial_length_mm"]), num(r["retina_radius_mm"], "{:.2f}"));
+  if (r.contains("sphere_diopters"))
+    out += fmt::format("  refraction {} / {} x {} (sphere D / minus cylinder D x axis deg); M {} J0 {} J45 {} D\n",
+                       num(r["sphere_diopters"], "{:+.3f}"), num(r["cylinder_diopters"], "{:+.3f}"),
+                       num(r["axis_deg"], "{:.1f}"), num(r["M"], "{:+.3f}"), num(r["J0"], "{:+.3f}"),
+                       num(r["J45"], "{:+.3f}"));
   out += fmt::format("  F {}  F' {}  H {}  H' {}  N {}  N' {} mm (from the first vertex)\n",
                      num(r["focal_points_mm"][0]), num(r["focal_points_mm"][1]), num(r["principal_points_mm"][0]),
                      num(r["principal_points_mm"][1]), num(r["nodal_points_mm"][0]), num(r["nodal_points_mm"][1]));
   out += fmt::format("  focal lengths {} / {} mm, back focal distance {} mm\n", num(r["focal_lengths_mm"][0]),
                      num(r["focal_lengths_mm"][1]), num(r["back_focal_distance_mm"]));
   for (const char* key : {"entrance_pupil", "exit_pupil"})
-    out += fmt::format("  {}: at {} mm, diameter {} mm (x{})\n", key, num(r[key]["position_mm"]),
-                       num(r[key]["diameter_mm"]), num(r[key]["magnification"]));
+    out += fmt::format("  {}: at {} mm, diameter {} mm (x{}){}\n", key, num(r[key]["position_mm"]),
+                       num(r[key]["diameter_mm"]), num(r[key]["magnification"]),
+                       r[key].contains("centre_mm") ? fmt::format(", centre ({}, {}) mm", num(r[key]["centre_mm"][0]),
+                                                                  num(r[key]["centre_mm"][1]))
+                                                    : std::string());
   out += fmt::format(
       "  stop diameter {} mm; spot (source at {}):\n", num(r["stop_diameter_mm"], "{:.2f}"),
       r["spot_object_distance_m"].is_null() ? std::string("infinity") : num(r["spot_object_distance_m"], "{:.3f} m"));

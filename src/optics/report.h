@@ -38,11 +38,16 @@ struct ReportOptions {
 // Refractions smaller than this (D) are reported as emmetropic (far point at infinity).
 inline constexpr double kEmmetropia_D = 0.005;
 
-// Keys: model, variant, source, wavelength_nm, notes, power_diopters, refraction_diopters,
+// Keys: model, variant, source, wavelength_nm, notes, power_diopters, refraction_diopters (for a
+// system with biconic surfaces: that of their spherical equivalents, paraxial.h), the refraction
+// per meridian at the first vertex (sphero_cylinder.h): sphere_diopters, cylinder_diopters
+// (minus cylinder, <= 0), axis_deg ([0, 180), TABO notation, i.e. the ANSI Z80.28 frame of the
+// wave section; 0 without cylinder) and the power vector M, J0, J45 (D, same frame),
 // far_point_m (null when emmetropic: |refraction| < kEmmetropia_D), axial_length_mm, retina_radius_mm (null for flat),
 // retina_conic, focal_points_mm [F, F'], principal_points_mm [H, H'], nodal_points_mm [N, N'],
 // focal_lengths_mm [front, back], back_focal_distance_mm, stop_diameter_mm,
-// entrance_pupil / exit_pupil {position_mm, diameter_mm, magnification},
+// entrance_pupil / exit_pupil {position_mm, diameter_mm, magnification, and centre_mm [x, y]
+// when the stop is decentred},
 // spot: [{field_deg, rms_radius_um (null when no ray passes), rays, rays_launched}],
 // spot_object_distance_m (null = infinity), surfaces (the prescription as a table);
 // chromatic aberration (chromatic.h):

@@ -21,6 +21,7 @@ const char* to_string(TraceStatus status) {
     case TraceStatus::Vignetted: return "vignetted";
     case TraceStatus::StopBlocked: return "stop blocked";
     case TraceStatus::TotalInternalReflection: return "total internal reflection";
+    case TraceStatus::NoConvergence: return "no convergence";
   }
   return "?";
 }
@@ -76,6 +77,8 @@ CompiledSystem::CompiledSystem(const Prescription& p) {
     }
     before = f.after;
     interfaces_.push_back(f);
+    placed_.emplace_back(s, z[i]);
+    general_ = general_ || placed_.back().general;
   }
   stop_index_ = p.stop_index();
   wavelength_nm_ = p.wavelength_nm;
@@ -96,17 +99,25 @@ double CompiledSystem::index_after(int surface, double lambda_nm) const {
 // ---- One ray ---------------------------------------------------------------------------------
 
 TraceResult CompiledSystem::trace_range(const Ray& ray, int first, int last, glm::dvec3* points) const {
+  if (general_)
+    return first <= last ? trace_one<true, false, true>(ray, first, last, 0.0, points)
+                         : trace_one<false, false, true>(ray, first, last, 0.0, points);
   return first <= last ? trace_one<true, false>(ray, first, last, 0.0, points)
                        : trace_one<false, false>(ray, first, last, 0.0, points);
 }
 
 TraceResult CompiledSystem::trace_range(const Ray& ray, int first, int last, double lambda_nm,
                                         glm::dvec3* points) const {
+  if (general_)
+    return first <= last ? trace_one<true, true, true>(ray, first, last, lambda_nm, points)
+                         : trace_one<false, true, true>(ray, first, last, lambda_nm, points);
   return first <= last ? trace_one<true, true>(ray, first, last, lambda_nm, points)
                        : trace_one<false, true>(ray, first, last, lambda_nm, points);
 }
 
-template <bool Forward, bool PerRayWavelength>
+// General: the surfaces with placed_[i].general take step_placed (placed_surface.h); the others
+// the kernel, as in a symmetric system.
+template <bool Forward, bool PerRayWavelength, bool General>
 TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, double lambda_nm, glm::dvec3* points) const {
   constexpr int step_dir = Forward ? 1 : -1;
   glm::dvec3 o = ray.origin;
@@ -124,6 +135,17 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
     const Interface& f = interfaces_[i];
     kernel::Eta<double> eta;
     const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws_.data(), lambda, w, n, eta);
+    if constexpr (General) {
+      if (placed_[i].general) {
+        const trace_detail::PlacedStep m = trace_detail::step_placed(
+            placed_[i], f.sd2, f.role, o, d, refracts && eta.refracts, refracts && eta.refracts ? eta.eta : 1.0);
+        if (m.status != TraceStatus::Ok) return {m.status, i, {o, d}};
+        o = m.p, d = m.d;
+        if (points) points[Forward ? i - first : first - i] = o;
+        if (i == last) break;
+        continue;
+      }
+    }
     const kernel::Moved<double> m = kernel::step(f, o.x, o.y, o.z, d.x, d.y, d.z, refracts, eta);
     if (m.status != kernel::kOk) return {static_cast<TraceStatus>(static_cast<int>(m.status)), i, {o, d}};
     o = {m.px, m.py, m.pz};
@@ -181,6 +203,11 @@ const char* to_string(TraceBatchIsa isa) { return isa == TraceBatchIsa::Avx2 ? "
 
 void CompiledSystem::trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results,
                                        std::size_t count, int first, int last) const {
+  if (general_) {  // one ray at a time (placed_surface.h)
+    for (std::size_t j = 0; j < count; ++j)
+      results[j] = lambda_nm ? trace_range(rays[j], first, last, lambda_nm[j]) : trace_range(rays[j], first, last);
+    return;
+  }
   for (std::size_t base = 0; base < count; base += kTraceBatchSize)
     trace_block(rays + base, lambda_nm ? lambda_nm + base : nullptr, results + base,
                 std::min(kTraceBatchSize, count - base), first, last);

@@ -4,6 +4,11 @@
 // nothing, throws nothing and reports every lost ray by kind instead of producing NaN. Each ray
 // can be traced at its own wavelength: the indices then come from the media's dispersion laws.
 // One kernel (trace_kernel.h) intersects and refracts for the single-ray and the batched trace.
+// A system that is not rotationally symmetric (a biconic surface, a decentred or tilted surface
+// or iris) is traced by the general path instead: one ray at a time (the batch calls loop over
+// it), each surface in its own frame (placed_surface.h); its symmetric, unplaced surfaces still
+// go through the kernel. A symmetric system never enters that path, so its results are those of
+// the kernel, bit for bit.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +17,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "optics/placed_surface.h"
 #include "optics/prescription.h"
 
 namespace eyetrace::optics {
@@ -22,6 +28,7 @@ enum class TraceStatus : std::uint8_t {
   Vignetted,                // meets it outside the semi-diameter
   StopBlocked,              // meets the aperture stop outside its opening
   TotalInternalReflection,  // cannot refract into the next medium
+  NoConvergence,            // the iterative intersection of a biconic gave up (biconic_surface.h)
 };
 
 const char* to_string(TraceStatus status);
@@ -138,8 +145,9 @@ class CompiledSystem {
 
   // The same for many rays at once: results[j] is what trace_range(rays[j], first, last,
   // lambda_nm[j]) gives, bit for bit; lambda_nm == nullptr traces every ray at the compiled
-  // wavelength, as trace_range(rays[j], first, last). Faster per ray (rays in batches of
-  // kTraceBatchSize, several per SIMD register). No allocation.
+  // wavelength, as trace_range(rays[j], first, last). Faster per ray for a rotationally
+  // symmetric system (rays in batches of kTraceBatchSize, several per SIMD register); a
+  // non-symmetric one loops over the single-ray general path. No allocation.
   void trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t count, int first,
                          int last) const;
   void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first, int last) const {
@@ -149,18 +157,24 @@ class CompiledSystem {
     trace_range_batch(rays, nullptr, results, count, image_index() - 1, 0);
   }
 
+  // False when some surface is biconic or placed: then every trace takes the general
+  // (scalar) path.
+  bool rotationally_symmetric() const { return !general_; }
+
   // The compiled data as the kernel reads it (trace_kernel.h).
   const std::vector<trace_detail::Interface>& interfaces() const { return interfaces_; }
   const std::vector<trace_detail::MediumLaw>& laws() const { return laws_; }
 
  private:
-  template <bool Forward, bool PerRayWavelength>
+  template <bool Forward, bool PerRayWavelength, bool General = false>
   TraceResult trace_one(const Ray& ray, int first, int last, double lambda_nm, glm::dvec3* points) const;
   void trace_block(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t n, int first,
                    int last) const;
 
   std::vector<trace_detail::Interface> interfaces_;
-  std::vector<trace_detail::MediumLaw> laws_;  // the distinct media with a dispersion law
+  std::vector<trace_detail::MediumLaw> laws_;        // the distinct media with a dispersion law
+  std::vector<trace_detail::PlacedSurface> placed_;  // per surface; used by the general path only
+  bool general_ = false;                             // some surface is biconic or placed
   int stop_index_ = -1;
   double wavelength_nm_ = 0.0;
   bool herzberger_ = false;  // some law needs the Herzberger weights of the wavelength

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
+#include "optics/prescription_io.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
@@ -217,6 +219,58 @@ TEST(OpticsCommand, BadPlotDirectoryIsAClearError) {
   EXPECT_EQ(scale.status, 1);
   EXPECT_NE(scale.output.find("--psf-scale \"sqrt\": expected log or linear"), std::string::npos) << scale.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x"));  // checked before anything is written
+}
+
+// The refraction as sphere, cylinder and axis and as a power vector (keys of issue 16): a -3 D
+// axial myope has sphere -3 (the refractiveerror it was built with), no cylinder, M = -3.
+TEST(OpticsCommand, SpheroCylinderKeys) {
+  const test::RunResult run =
+      run_eyetrace("optics --json --fields 0 --camera 'Camera \"navarro\" \"float refractiveerror\" -3'", false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(run.output);
+  EXPECT_NEAR(r.at("sphere_diopters").get<double>(), -3.0, 1e-6);
+  EXPECT_EQ(r.at("cylinder_diopters").get<double>(), 0.0);
+  EXPECT_EQ(r.at("axis_deg").get<double>(), 0.0);
+  EXPECT_NEAR(r.at("M").get<double>(), -3.0, 1e-6);
+  EXPECT_EQ(r.at("J0").get<double>(), 0.0);
+  EXPECT_EQ(r.at("J45").get<double>(), 0.0);
+  const test::RunResult text =
+      run_eyetrace("optics --fields 0 --camera 'Camera \"navarro\" \"float refractiveerror\" -3'");
+  EXPECT_NE(text.output.find("refraction -3.000 / +0.000 x 0.0 (sphere D / minus cylinder D x axis deg)"),
+            std::string::npos)
+      << text.output;
+}
+
+// --prescription: a prescription JSON with a toric anterior cornea (1.50 D steeper in the 180
+// meridian: (1.376 - 1)(1/R' - 1/7.72) = 1.5 D) reports -1.50 D of cylinder at axis 90 (the
+// cornea lies in the refraction's reference plane, docs/eye-models.md); a bad field is an error
+// naming the file, the surface and the field.
+TEST(OpticsCommand, PrescriptionFileWithAToricCornea) {
+  const test::TempDir dir("optics-prescription");
+  nlohmann::json j = optics::prescription_to_json(optics::load_embedded_prescription("navarro.json"));
+  j["surfaces"][0]["cross_radius_mm"] = 1.0 / (1.0 / 7.72 + 1.5e-3 / 0.376);
+  j["surfaces"][0]["axis_deg"] = 90.0;
+  const std::string path = dir.file("toric.json");
+  std::ofstream(path) << j.dump(2);
+  const test::RunResult run = run_eyetrace("optics --json --fields 0 --prescription " + path, false);
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(run.output);
+  EXPECT_NEAR(r.at("cylinder_diopters").get<double>(), -1.5, 1e-6);
+  EXPECT_NEAR(r.at("axis_deg").get<double>(), 90.0, 1e-6);
+  EXPECT_NEAR(r.at("J0").get<double>(), -0.75, 1e-6);  // -C/2 cos(2 x 90 deg) = 0.75 x (-1)
+
+  j["surfaces"][0]["axis_deg"] = 200.0;
+  const std::string bad = dir.file("bad.json");
+  std::ofstream(bad) << j.dump(2);
+  const test::RunResult failed = run_eyetrace("optics --prescription " + bad);
+  EXPECT_NE(failed.status, 0);
+  EXPECT_NE(
+      failed.output.find("--prescription: " + bad + ": surface 0 'cornea anterior': axis_deg 200 is outside [0, 180)"),
+      std::string::npos)
+      << failed.output;
+  const test::RunResult both = run_eyetrace("optics --camera 'Camera \"navarro\"' --prescription " + path);
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.output.find("give --camera or --prescription, not both"), std::string::npos) << both.output;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // Prescription validation messages, JSON round trip, and the embedded data files.
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -100,6 +101,80 @@ TEST(PrescriptionValidation, MessagesNameSurfaceAndParameter) {
   p = base;
   std::swap(p.surfaces[4], p.surfaces[5]);
   expect_invalid(p, "surface 4 'retina': only the last surface may have role 'image'");
+}
+
+// The optional fields of a non-symmetric surface (prescription_io.h): read, written back, and
+// rejected with the file, surface and field named.
+TEST(PrescriptionJson, BiconicAndPlacementFieldsRoundTrip) {
+  nlohmann::json j = prescription_to_json(load_embedded_prescription("navarro.json"));
+  j["surfaces"][0]["cross_radius_mm"] = 7.5;
+  j["surfaces"][0]["cross_conic"] = -0.1;
+  j["surfaces"][0]["axis_deg"] = 90.0;
+  j["surfaces"][2]["decentre_mm"] = {0.3, -0.1};
+  j["surfaces"][4]["tilt_deg"] = {1.5, -2.0};
+  const Prescription p = prescription_from_json(j, "toric.json");
+  const SurfaceProfile& c = p.surfaces[0].profile;
+  EXPECT_EQ(c.kind, ProfileKind::Biconic);
+  EXPECT_DOUBLE_EQ(c.curvature, 1.0 / 7.72);
+  EXPECT_DOUBLE_EQ(c.conic, -0.26);
+  EXPECT_DOUBLE_EQ(c.cross_curvature, 1.0 / 7.5);
+  EXPECT_DOUBLE_EQ(c.cross_conic, -0.1);
+  EXPECT_DOUBLE_EQ(c.axis_deg, 90.0);
+  EXPECT_DOUBLE_EQ(p.surfaces[2].placement.decentre_x_mm, 0.3);
+  EXPECT_DOUBLE_EQ(p.surfaces[2].placement.decentre_y_mm, -0.1);
+  EXPECT_DOUBLE_EQ(p.surfaces[4].placement.tilt_x_deg, 1.5);
+  EXPECT_DOUBLE_EQ(p.surfaces[4].placement.tilt_y_deg, -2.0);
+  EXPECT_FALSE(p.rotationally_symmetric());
+  EXPECT_NE(describe(p).find("biconic: cross radius 7.5"), std::string::npos) << describe(p);
+  const Prescription q = prescription_from_json(prescription_to_json(p), "again");
+  EXPECT_EQ(prescription_to_json(q), prescription_to_json(p));
+  // A symmetric prescription writes none of the new keys.
+  const nlohmann::json plain = prescription_to_json(load_embedded_prescription("navarro.json"));
+  for (const auto& s : plain["surfaces"])
+    for (const char* key : {"cross_radius_mm", "cross_conic", "axis_deg", "decentre_mm", "tilt_deg"})
+      EXPECT_FALSE(s.contains(key)) << key;
+}
+
+TEST(PrescriptionJson, BiconicAndPlacementErrorsNameTheField) {
+  auto expect_error = [](const std::function<void(nlohmann::json&)>& edit, const std::string& message) {
+    nlohmann::json j = prescription_to_json(load_embedded_prescription("navarro.json"));
+    edit(j);
+    try {
+      prescription_from_json(j, "bad.json");
+      ADD_FAILURE() << "no error; expected: " << message;
+    } catch (const OpticsError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  };
+  expect_error(
+      [](nlohmann::json& j) {
+        j["surfaces"][0]["cross_radius_mm"] = 7.5;
+        j["surfaces"][0]["axis_deg"] = 200.0;
+      },
+      "bad.json: surface 0 'cornea anterior': axis_deg 200 is outside [0, 180)");
+  expect_error([](nlohmann::json& j) { j["surfaces"][0]["axis_deg"] = 90.0; },
+               "bad.json: surface 0 'cornea anterior': 'axis_deg' needs 'cross_radius_mm' (a biconic)");
+  expect_error([](nlohmann::json& j) { j["surfaces"][0]["cross_radius_mm"] = 0.0; },
+               "bad.json: surface 0 'cornea anterior': cross_radius_mm 0 is not a radius (use null for flat)");
+  expect_error([](nlohmann::json& j) { j["surfaces"][2]["decentre_mm"] = 0.3; },
+               "bad.json: surface 2 'pupil': 'decentre_mm' must be a list of two numbers [x, y]");
+  expect_error(
+      [](nlohmann::json& j) {
+        j["surfaces"][4]["tilt_deg"] = {85.0, 0.0};
+      },
+      "bad.json: surface 4 'lens posterior': tilt 85 deg is outside (-80, 80) deg");
+  expect_error(
+      [](nlohmann::json& j) {
+        j["surfaces"][4]["decentre_mm"] = {2000.0, 0.0};
+      },
+      "bad.json: surface 4 'lens posterior': decentration 2000 mm is beyond +-1000 mm");
+  // A tilt that makes the lens's front face cut through the iris plane.
+  expect_error(
+      [](nlohmann::json& j) {
+        j["surfaces"][3]["tilt_deg"] = {0.0, 5.0};
+      },
+      "bad.json: surface 2 'pupil' and surface 3 'lens anterior' cross at (0.03125, 0) mm, inside their "
+      "clear apertures: thickness 0 mm is too small for their sags, tilts and decentrations");
 }
 
 TEST(MeetingHeight, GullstrandAccommodatedNucleusEdge) {

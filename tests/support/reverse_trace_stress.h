@@ -71,7 +71,7 @@ inline Ray random_reverse_ray(const Prescription& p, const CompiledSystem& sys, 
 
 // Counts the results by status and every way a result can be wrong.
 struct StressTally {
-  std::array<long, 5> by_status{};
+  std::array<long, 6> by_status{};  // by TraceStatus (NoConvergence only in non-symmetric systems)
   long unit_failures = 0, aperture_failures = 0, non_finite = 0, bad_surface = 0;
 
   void add(const TraceResult& t, const Prescription& p, const CompiledSystem& sys) {

@@ -1,0 +1,29 @@
+// An independent paraxial refraction for the astigmatism tests (tests/optics): the refraction
+// (D) at the first vertex in one principal meridian of a system whose only non-symmetric surface
+// is surface `toric` (0 by default), with curvature c0 in that meridian. y-nu matrices written here (refraction by
+// (n' - n) c, transfer by t / n), V = 1000 A / B: the object vergence focused on the image vertex
+// (A y + B n u = 0 with n u = -V y / 1000). Header-only: the optics tests link the optics
+// library alone.
+#pragma once
+
+#include "optics/prescription.h"
+
+namespace eyetrace::optics::test {
+
+inline double meridian_refraction(const Prescription& p, double c0, int toric = 0) {
+  double A = 1, B = 0, C = 0, D = 1;
+  auto apply = [&](double a, double b, double c, double d) {
+    const double nA = a * A + b * C, nB = a * B + b * D, nC = c * A + d * C, nD = c * B + d * D;
+    A = nA, B = nB, C = nC, D = nD;
+  };
+  for (int i = 0; i < p.image_index(); ++i) {
+    const Surface& s = p.surfaces[i];
+    const double n = i == 0 ? p.object_index : p.surfaces[i - 1].index_after;
+    const double c = i == toric ? c0 : (s.profile.kind == ProfileKind::Plane ? 0.0 : s.profile.curvature);
+    if (s.role == SurfaceRole::Refract) apply(1, 0, -(s.index_after - n) * c, 1);
+    apply(1, s.thickness_mm / s.index_after, 0, 1);
+  }
+  return 1000.0 * A / B;
+}
+
+}  // namespace eyetrace::optics::test
