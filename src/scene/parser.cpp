@@ -69,6 +69,8 @@ void SceneParser::parse_file(const fs::path& path, const SourceLoc* included_fro
   std::optional<std::string> text = read_whole_file(path, &error);
   if (!text) {
     std::string message = fmt::format("cannot read scene file \"{}\": {}", path.string(), error);
+    std::error_code exists_ec;
+    if (!fs::exists(path, exists_ec)) throw_missing_file(included_from ? *included_from : SourceLoc{}, "", message);
     if (included_from) throw_error(*included_from, message);
     throw_error(message);
   }
@@ -143,9 +145,24 @@ void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const 
 }
 
 SceneDescription SceneParser::finish(const std::string& top_file) {
+  check_end(top_file);
+  errors_.throw_if_any();
+  return std::move(desc_);
+}
+
+ParsedScene SceneParser::finish_collecting(const std::string& top_file) {
+  check_end(top_file);
+  ParsedScene r;
+  r.errors = errors_.kept();
+  r.buildable = !cut_short_ && in_world_;
+  r.desc = std::move(desc_);
+  return r;
+}
+
+void SceneParser::check_end(const std::string& top_file) {
   // A text cut short by an error has not really ended: its open blocks and missing WorldBegin
   // follow from that error and are not reported again.
-  if (cut_short_) errors_.throw_if_any();
+  if (cut_short_) return;
   if (!blocks_.empty()) {
     const OpenBlock& b = blocks_.back();
     const char* closer = b.directive == "ObjectBegin"      ? "ObjectEnd"
@@ -156,8 +173,6 @@ SceneDescription SceneParser::finish(const std::string& top_file) {
   }
   if (!in_world_)
     errors_.add(Diagnostic{SourceLoc{top_file, 0, 0}, "", Severity::Error, "the scene ends before WorldBegin"});
-  errors_.throw_if_any();
-  return std::move(desc_);
 }
 
 fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const {
@@ -178,7 +193,7 @@ fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& 
     if (fs::exists(c, ec)) return c;
     looked += (looked.empty() ? "" : ", ") + fmt::format("\"{}\"", c.string());
   }
-  fail(loc, "{} \"{}\": file not found (looked for {})", directive, name, looked);
+  throw_missing_file(loc, "", fmt::format("{} \"{}\": file not found (looked for {})", directive, name, looked));
 }
 
 void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
@@ -244,6 +259,18 @@ SceneDescription parse_scene_file(const std::string& path) {
   SceneParser parser(abs.parent_path().lexically_normal());
   parser.parse_file(path, nullptr);
   return parser.finish(path);
+}
+
+ParsedScene parse_scene_file_collecting(const std::string& path) {
+  std::error_code ec;
+  fs::path abs = fs::absolute(path, ec);
+  SceneParser parser(abs.parent_path().lexically_normal());
+  try {
+    parser.parse_file(path, nullptr);
+  } catch (const SceneError& e) {  // the top file itself cannot be read
+    return ParsedScene{SceneDescription{}, e.diagnostics(), false};
+  }
+  return parser.finish_collecting(path);
 }
 
 SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir) {

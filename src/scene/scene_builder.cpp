@@ -132,7 +132,8 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
 
 class Builder {
  public:
-  Builder(const SceneDescription& desc, RenderSetup& setup) : desc_(desc), setup_(setup) {}
+  Builder(const SceneDescription& desc, RenderSetup& setup, bool keep_going)
+      : desc_(desc), setup_(setup), keep_going_(keep_going) {}
 
   // Every texture, shape, instance and light is tried and its errors collected; textures
   // first, and a failed texture stops the build there, since the materials naming it would
@@ -140,8 +141,9 @@ class Builder {
   void build_world() {
     setup_.textures = std::make_unique<TextureStore>();
     setup_.scene = std::make_unique<Scene>();
-    for (const TextureEntity& t : desc_.textures) attempt([&] { build_texture(t); });
-    errors_.throw_if_any();
+    for (const TextureEntity& t : desc_.textures)
+      if (!attempt([&] { build_texture(t); }) && keep_going_) add_stand_in(t);
+    if (!keep_going_) errors_.throw_if_any();
     for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
     std::set<std::string> used;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
@@ -169,12 +171,25 @@ class Builder {
 
  private:
   template <typename F>
-  void attempt(F&& f) {
+  bool attempt(F&& f) {
     try {
       f();
+      return true;
     } catch (const SceneError& e) {
       errors_.add_all(e.diagnostics());
+      return false;
     }
+  }
+
+  // A texture that failed (its error is recorded) as a constant, so that the materials naming
+  // it are checked for their own errors rather than repeating this one.
+  void add_stand_in(const TextureEntity& t) {
+    attempt([&] {
+      if (t.value_type == "float")
+        setup_.textures->add_float(t.texture_name, std::make_unique<ConstantFloatTexture>(0.5f), t.loc);
+      else
+        setup_.textures->add_spectrum(t.texture_name, std::make_unique<ConstantSpectrumTexture>(RGB(0.5f)), t.loc);
+    });
   }
 
   void add_light(const TransformedEntity& l) {
@@ -274,6 +289,7 @@ class Builder {
 
   const SceneDescription& desc_;
   RenderSetup& setup_;
+  const bool keep_going_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
@@ -342,7 +358,11 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
       return false;
     }
   };
-  FilmSettings f = read_film(desc.film, o);
+  FilmSettings f;
+  if (!attempt([&] { f = read_film(desc.film, o); })) {
+    if (!o.keep_going) errors.throw_if_any();
+    f.bounds = crop_to_pixels(f.resolution, Vec4(0.f, 1.f, 0.f, 1.f));
+  }
   check_memory(f, o);
   setup.output_filename = f.filename;
   attempt([&] { setup.camera = make_camera(desc, o, f.resolution); });
@@ -358,11 +378,16 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets);
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
-  if (attempt([&] { Builder(desc, setup).build_world(); }))
+  const SceneEntity& in = desc.integrator;
+  if (attempt([&] { Builder(desc, setup, o.keep_going).build_world(); }))
     attempt([&] {
-      const SceneEntity& in = desc.integrator;
       IntegratorContext ictx{in.params, *setup.scene};
       setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
+    });
+  else if (o.keep_going)  // no scene to make it for: its name and parameters are still checked
+    attempt([&] {
+      reg.integrators.at(in.name, in.loc);
+      PluginParams(in.params, *reg.integrators.find(in.name)->spec, in.name);
     });
   errors.throw_if_any();
   setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),

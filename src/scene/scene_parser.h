@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/parser.h"
 #include "scene/scene_description.h"
 #include "scene/tokenizer.h"
 
@@ -61,12 +62,14 @@ class SceneParser {
   void parse_file(const fs::path& path, const SourceLoc* included_from);
   void parse_text(std::string text, const std::string& filename);
   SceneDescription finish(const std::string& top_file);
+  ParsedScene finish_collecting(const std::string& top_file);
 
  private:
   using Handler = void (SceneParser::*)(Tokenizer&, const SourceLoc&);
   static const std::map<std::string, Handler, std::less<>>& handlers();
 
   void run(Tokenizer& tok);
+  void check_end(const std::string& top_file);
   bool skip_to_directive(Tokenizer& tok);
   [[noreturn]] void unknown_directive(const Token& t, const SourceLoc& loc) const;
 
