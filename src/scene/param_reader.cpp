@@ -6,6 +6,12 @@ namespace eyetrace {
 
 namespace {
 
+// Where `open` is, said from `at`: "2:31", or with its file when an Include lies between them.
+std::string place_of(const Token& open, const Token& at) {
+  if (open.file && open.file != at.file) return fmt::format("{}:{}:{}", open.file->name, open.line, open.column);
+  return fmt::format("{}:{}", open.line, open.column);
+}
+
 enum class ValueKind { Numbers, Integers, Bools, Strings, Spectrum };
 
 struct ParamType {
@@ -116,7 +122,7 @@ class ValueReader {
       case NumberStatus::Ok: break;
       case NumberStatus::NotANumber: {
         std::string hint;
-        if (open) hint = fmt::format(" (is the ']' for the '[' at {}:{} missing?)", open->line, open->column);
+        if (open) hint = fmt::format(" (is the ']' for the '[' at {} missing?)", place_of(*open, t));
         fail(t, fmt::format("expected {}, got {}{}", expected(), t.describe(), hint));
       }
       case NumberStatus::NotFinite: fail(t, fmt::format("{} is not a finite number", t.describe()));
@@ -164,8 +170,8 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
         if (t.kind == TokenKind::End)
           fail(tok.loc(v), "parameter \"{} {}\": '[' has no matching ']' before the end of the file", p.type, p.name);
         if (t.kind == TokenKind::OpenBracket)
-          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)", p.type,
-               p.name, v.line, v.column);
+          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {} missing?)", p.type,
+               p.name, place_of(v, t));
         reader.add(t, &v);
       }
       break;

@@ -39,11 +39,6 @@ struct OpenBlock {
   GraphicsState saved;
 };
 
-struct OpenFile {
-  std::string canonical;  // for recursion checks
-  fs::path dir;           // Include paths resolve here first
-};
-
 inline std::string hint_suffix(const std::string& word, const std::vector<std::string>& candidates) {
   std::string m = closest_match(word, candidates);
   return m.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", m);
@@ -59,7 +54,7 @@ std::vector<std::string> keys_of(const Map& m) {
 class SceneParser {
  public:
   explicit SceneParser(fs::path search_dir);
-  void parse_file(const fs::path& path, const SourceLoc* included_from);
+  void parse_file(const fs::path& path);
   void parse_text(std::string text, const std::string& filename);
   SceneDescription finish(const std::string& top_file);
   ParsedScene finish_collecting(const std::string& top_file);
@@ -87,7 +82,10 @@ class SceneParser {
   Transform current_transform(const SourceLoc& loc, const char* directive) const;
   void push_block(const SourceLoc& loc, const char* directive);
   void pop_block(const SourceLoc& loc, const char* directive, const char* opener);
-  fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const;
+  fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive,
+                           const fs::path& dir) const;
+  static std::string read_scene_text(const fs::path& path, const SourceLoc* included_from);
+  static TokenFile token_file(const fs::path& path);
 
   // Directives.
   void include(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Include"); }
@@ -138,7 +136,6 @@ class SceneParser {
   SceneDescription desc_;
   GraphicsState state_;
   std::vector<OpenBlock> blocks_;
-  std::vector<OpenFile> files_;
   std::map<std::string, TransformPair> coordinate_systems_;
   std::map<std::string, SourceLoc> options_seen_;
   std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;
