@@ -29,6 +29,9 @@ std::vector<ParamSpec> film_base_params() {
       param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
       param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
       param::real("exposuretime", 1).above(0).with_unit("s"),
+      param::real("scale", 1)
+          .above(0)
+          .describe("multiplies the image (pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it)"),
       param::boolean("savefp16", true).describe("ignored"),
       param::real("maxcomponentvalue").describe("ignored"),
       param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
@@ -110,7 +113,7 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
-  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");
     f.buckets.lambda_min = p.get_float("lambdamin");
@@ -228,7 +231,10 @@ class Builder {
     auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir};
-    auto m = reg_.materials.at(e->name, e->loc)(ctx);
+    // pbrt-v4 reads `Material ""` and "none" (deprecated) as "interface": no surface, only the
+    // boundary of a medium.
+    const std::string& name = e->name.empty() || e->name == "none" ? std::string("interface") : e->name;
+    auto m = reg_.materials.at(name, e->loc)(ctx);
     const Material* raw = m ? setup_.scene->own(std::move(m)) : nullptr;
     materials_[key] = raw;
     return raw;

@@ -122,6 +122,9 @@ void SceneParser::note_option(const SourceLoc& loc, const char* directive) {
 }
 
 void SceneParser::apply(const SourceLoc& loc, const char* directive, const Transform& t, bool replace) {
+  if (replace) state_.singular_at.reset();
+  // Still singular after anything but a replacement (a product's rank cannot grow).
+  if (state_.singular_at) return;
   for (int i = 0; i < 2; ++i) {
     if (!state_.active[i]) continue;
     Transform r = replace ? t : state_.ctm[i] * t;
@@ -138,6 +141,10 @@ void SceneParser::apply(const SourceLoc& loc, const char* directive, const Trans
 }
 
 Transform SceneParser::current_transform(const SourceLoc& loc, const char* directive) const {
+  if (state_.singular_at)
+    fail(loc,
+         "{}: the current transform is singular (made so at {}); only shapes may stand under it (they are dropped)",
+         directive, state_.singular_at->to_string());
   if (!(state_.ctm[0] == state_.ctm[1]))
     warn(loc, fmt::format("{}: motion blur is not supported; the start-time transform is used", directive));
   return state_.ctm[0];
@@ -247,7 +254,12 @@ void SceneParser::matrix_directive(Tokenizer& tok, const SourceLoc& loc, const c
   try {
     t = Transform(glm::make_mat4(v.data()));
   } catch (const std::domain_error&) {
-    fail(loc, "{}: the matrix is singular or not finite", directive);
+    // Exporters write an all-zero row for an object scaled to nothing. What it maps is flat (a
+    // plane, a line, a point) and has no normal: pbrt-v4 aborts on the NaN normal when a ray
+    // hits it. Here the shapes under it are dropped, with a warning at each (shape()).
+    if (!replace && state_.singular_at) return;
+    state_.singular_at = loc;
+    return;
   }
   apply(loc, directive, t, replace);
 }
@@ -263,6 +275,7 @@ void SceneParser::coord_sys_transform(Tokenizer& tok, const SourceLoc& loc) {
     fail(loc, "CoordSysTransform: no coordinate system named \"{}\"{}", name,
          hint_suffix(name, keys_of(coordinate_systems_)));
   state_.ctm = it->second;  // both times, as pbrt-v4 does
+  state_.singular_at.reset();
 }
 
 void SceneParser::reverse_orientation(Tokenizer&, const SourceLoc& loc) {
@@ -341,6 +354,7 @@ void SceneParser::world_begin(Tokenizer&, const SourceLoc& loc) {
   require_options(loc, "WorldBegin");
   in_world_ = true;
   state_.ctm = {Transform(), Transform()};
+  state_.singular_at.reset();
   state_.active = {true, true};
   coordinate_systems_["world"] = state_.ctm;
 }
@@ -432,6 +446,12 @@ void SceneParser::shape(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "Shape");
   ShapeEntity s;
   static_cast<SceneEntity&>(s) = read_entity(tok, loc, "Shape");
+  if (state_.singular_at) {
+    warn(loc, fmt::format("Shape \"{}\" dropped: the transform made singular at {} maps it to something flat, "
+                          "without a normal",
+                          s.name, state_.singular_at->to_string()));
+    return;
+  }
   s.params = with_attributes(std::move(s.params), state_.shape_attributes);
   s.world_from_object = current_transform(loc, "Shape");
   s.reverse_orientation = state_.reverse_orientation;
@@ -477,6 +497,12 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
   if (!desc_.instances.count(name))
     fail(loc, "ObjectInstance: no object named \"{}\" has been defined with ObjectBegin{}", name,
          hint_suffix(name, keys_of(desc_.instances)));
+  if (state_.singular_at) {
+    warn(loc, fmt::format("ObjectInstance \"{}\" dropped: the transform made singular at {} maps it to something "
+                          "flat, without a normal",
+                          name, state_.singular_at->to_string()));
+    return;
+  }
   desc_.instance_uses.push_back(InstanceUse{name, loc, current_transform(loc, "ObjectInstance")});
 }
 

@@ -28,6 +28,9 @@ struct GraphicsState {
   std::array<bool, 2> active{true, true};
   bool reverse_orientation = false;
   MaterialRef material{0, ""};  // index 0 is the implicit default material
+  // Where a Transform or ConcatTransform made the CTM singular (ctm then keeps its value from
+  // before): the shapes under it are dropped with a warning, anything else there is an error.
+  std::optional<SourceLoc> singular_at;
   int area_light = -1;
   std::vector<Param> shape_attributes, light_attributes, material_attributes, texture_attributes;
 };
