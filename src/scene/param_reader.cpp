@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "core/named_spectra.h"
+#include "scene/spectrum_file.h"
+
 namespace eyetrace {
 
 namespace {
@@ -158,7 +161,17 @@ Param declare(const Tokenizer& tok, const Token& decl) {
 
 }  // namespace
 
-Param read_parameter(Tokenizer& tok, const Token& decl) {
+// A spectrum named by a file ("spds/Au.eta.spd"): anything with a '.' or '/' that is not one
+// of the named spectra. Its pairs replace the name.
+void read_spectrum_file_of(Param& p, const std::string& search_dir) {
+  if (p.strings.size() != 1 || find_named_spectrum(p.strings[0])) return;
+  const std::string& name = p.strings[0];
+  if (name.find('.') == std::string::npos && name.find('/') == std::string::npos) return;
+  p.numbers = read_spectrum_file(search_dir, name, p.loc, p.name);
+  p.strings.clear();
+}
+
+Param read_parameter(Tokenizer& tok, const Token& decl, const std::string& search_dir) {
   Param p = declare(tok, decl);
   ValueReader reader(tok, p, *find_type(p.type));
   Token v = tok.next();
@@ -180,14 +193,15 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
     case TokenKind::End: fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
   }
   reader.check_counts();
+  if (p.canonical_type() == "spectrum") read_spectrum_file_of(p, search_dir);
   return p;
 }
 
-ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc) {
+ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc, const std::string& search_dir) {
   ParameterList list(directive_loc);
   while (tok.peek().kind == TokenKind::String) {
     Token decl = tok.next();
-    list.add(read_parameter(tok, decl));
+    list.add(read_parameter(tok, decl, search_dir));
   }
   return list;
 }

@@ -248,7 +248,7 @@ std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directi
 SceneEntity SceneParser::read_entity(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
   SceneEntity e;
   e.name = read_name(tok, directive, "type name");
-  e.params = read_parameter_list(tok, loc);
+  e.params = read_parameter_list(tok, loc, desc_.search_dir);
   e.loc = loc;
   return e;
 }

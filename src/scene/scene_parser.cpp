@@ -190,7 +190,7 @@ void SceneParser::transform_end(Tokenizer&, const SourceLoc& loc) { pop_block(lo
 void SceneParser::attribute(Tokenizer& tok, const SourceLoc& loc) {
   SourceLoc target_loc;
   std::string target = read_name(tok, "Attribute", "target", &target_loc);
-  ParameterList params = read_parameter_list(tok, loc);
+  ParameterList params = read_parameter_list(tok, loc, desc_.search_dir);
   std::vector<Param>* list = target == "shape"      ? &state_.shape_attributes
                              : target == "light"    ? &state_.light_attributes
                              : target == "material" ? &state_.material_attributes
@@ -344,7 +344,7 @@ void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
   Token decl = tok.next();
   if (decl.kind != TokenKind::String)
     fail(tok.loc(decl), "Option: expected a quoted \"type name\", got {}", decl.describe());
-  Param p = read_parameter(tok, decl);
+  Param p = read_parameter(tok, decl, desc_.search_dir);
   SceneEntity e{p.name, ParameterList(loc), loc};
   e.params.add(std::move(p));
   desc_.options.push_back(std::move(e));
@@ -402,7 +402,7 @@ void SceneParser::material(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::make_named_material(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "MakeNamedMaterial");
   std::string name = read_name(tok, "MakeNamedMaterial", "material name");
-  ParameterList params = with_attributes(read_parameter_list(tok, loc), state_.material_attributes);
+  ParameterList params = with_attributes(read_parameter_list(tok, loc, desc_.search_dir), state_.material_attributes);
   if (auto it = named_material_locs_.find(name); it != named_material_locs_.end())
     fail(loc, "MakeNamedMaterial: material \"{}\" is already defined at {}", name, it->second.to_string());
   if (!params.has("type"))
@@ -428,7 +428,7 @@ void SceneParser::texture(Tokenizer& tok, const SourceLoc& loc) {
   t.texture_name = read_name(tok, "Texture", "texture name");
   t.value_type = read_name(tok, "Texture", "value type", &type_loc);
   t.name = read_name(tok, "Texture", "texture class");
-  t.params = with_attributes(read_parameter_list(tok, loc), state_.texture_attributes);
+  t.params = with_attributes(read_parameter_list(tok, loc, desc_.search_dir), state_.texture_attributes);
   t.loc = loc;
   if (t.value_type != "float" && t.value_type != "spectrum")
     fail(type_loc, "Texture \"{}\": value type \"{}\" must be \"float\" or \"spectrum\"{}", t.texture_name,
@@ -508,7 +508,7 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
 
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "MakeNamedMedium", "medium name");
-  read_parameter_list(tok, loc);
+  read_parameter_list(tok, loc, desc_.search_dir);
   warn(loc, fmt::format("participating media are not supported; MakeNamedMedium \"{}\" ignored", name));
 }
 

@@ -1,0 +1,20 @@
+// Spectrum files, as pbrt-v4 reads them ("spectrum eta" "spds/Au.eta.spd"): text of
+// (wavelength nm, value) pairs separated by white space or commas, with # comments to the end
+// of a line. pbrt-v4 resolves the name against the search directory (the top-level scene
+// file's directory), as plugins resolve theirs.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/diagnostic.h"
+
+namespace eyetrace {
+
+// The pairs of the file `name` (relative to `search_dir` unless absolute), interleaved, checked:
+// an even count of finite numbers, at least two pairs, increasing positive wavelengths. Errors
+// are at `at` and name the parameter and the file (with its line for a bad value); a file
+// that is not there is DiagnosticKind::MissingFile.
+std::vector<double> read_spectrum_file(const std::string& search_dir, const std::string& name, const SourceLoc& at,
+                                       const std::string& parameter);
+
+}  // namespace eyetrace
