@@ -264,14 +264,23 @@ class Builder {
     return prims;
   }
 
+  // With keep_going the material is made first on its own, so that its errors are reported
+  // even when the shape's own (a missing mesh) stop the shape.
+  void check_material_first(const ShapeEntity& s) {
+    if (keep_going_) attempt([&] { material(s.material, s.loc); });
+  }
+
   void add_shape(const ShapeEntity& s) {
+    check_material_first(s);
     for (auto& prim : make_primitives(s, true)) setup_.scene->add_primitive(std::move(prim));
   }
 
   void build_instance(const InstanceDefinition& def) {
     std::vector<Primitive> prims;
-    for (const ShapeEntity& s : def.shapes)
+    for (const ShapeEntity& s : def.shapes) {
+      check_material_first(s);
       for (auto& prim : make_primitives(s, false)) prims.push_back(std::move(prim));
+    }
     setup_.scene->define_instance(def.name, std::move(prims));
   }
 

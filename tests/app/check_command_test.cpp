@@ -110,6 +110,19 @@ TEST(CheckCommand, JsonMarksMissingFiles) {
   EXPECT_EQ(j["diagnostics"][1]["missing_file"], false);
 }
 
+// A shape whose mesh is missing still has its material checked.
+TEST(CheckCommand, MaterialOfAShapeWithAMissingMeshIsChecked) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "mat.pbrt",
+                                  "WorldBegin\nMaterial \"nosuchmaterial\"\n"
+                                  "Shape \"plymesh\" \"string filename\" \"absent.ply\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:1: error: unsupported material \"nosuchmaterial\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(": 2 errors (1 missing file), 0 warnings"), std::string::npos) << r.output;
+}
+
 // An unterminated string stops the parse: what follows cannot be read, nothing is built.
 TEST(CheckCommand, UnterminatedStringStopsIt) {
   TempDir dir("eyetrace-check");
