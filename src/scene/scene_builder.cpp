@@ -33,10 +33,10 @@ std::vector<ParamSpec> film_base_params() {
           .above(0)
           .describe("multiplies the image (pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it)"),
       param::boolean("savefp16", true).describe("ignored"),
-      param::real("maxcomponentvalue").describe("ignored"),
+      param::real("maxcomponentvalue").describe("ignored, with a warning"),
       param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
-      param::string("sensor", "cie1931").describe("ignored"),
-      param::real("whitebalance", 0).describe("ignored"),
+      param::string("sensor", "cie1931").describe("other values are ignored, with a warning"),
+      param::real("whitebalance", 0).describe("other values are ignored, with a warning"),
   };
 }
 
@@ -45,8 +45,9 @@ std::vector<ParamSpec> film_base_params() {
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
-      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16`, `maxcomponentvalue`, `diagonal`, "
-      "`sensor` and `whitebalance` are accepted and ignored.",
+      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16` and `diagonal` are accepted and "
+      "ignored; `maxcomponentvalue`, a `sensor` other than `cie1931` and a `whitebalance` other than 0, which would "
+      "change the image in pbrt-v4, are ignored with a warning.",
       film_base_params()};
   return spec;
 }
@@ -83,6 +84,16 @@ bool has_extension(const std::string& path, const std::string& ext) {
   return e == ext;
 }
 
+// What pbrt-v4's film would do to the image that eyetrace does not: said, so that
+// `eyetrace check` lists it.
+void warn_ignored_film_params(const PluginParams& p) {
+  if (p.has("maxcomponentvalue")) p.warn_param("maxcomponentvalue", "clamping sample values is not supported; ignored");
+  if (p.get_string("sensor") != "cie1931")
+    p.warn_param("sensor", fmt::format("sensor \"{}\" is not supported; the image is CIE 1931 XYZ to linear sRGB",
+                                       p.get_string("sensor")));
+  if (p.get_float("whitebalance") != 0.f) p.warn_param("whitebalance", "white balancing is not supported; ignored");
+}
+
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
@@ -113,6 +124,7 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
+  warn_ignored_film_params(p);
   f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");

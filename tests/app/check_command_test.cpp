@@ -110,6 +110,23 @@ TEST(CheckCommand, JsonMarksMissingFiles) {
   EXPECT_EQ(j["diagnostics"][1]["missing_file"], false);
 }
 
+// Film parameters pbrt-v4 would change the image with, and eyetrace ignores, are warnings.
+TEST(CheckCommand, IgnoredFilmParametersAreWarnings) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "film.pbrt",
+                                  "Film \"rgb\" \"string sensor\" \"nikon_d850\" \"float whitebalance\" 5000\n"
+                                  "  \"float maxcomponentvalue\" 20 \"bool savefp16\" false\n"
+                                  "WorldBegin\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find(scene + ":1:12: warning: parameter \"sensor\": sensor \"nikon_d850\" is not supported"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(scene + ":1:41: warning: parameter \"whitebalance\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:3: warning: parameter \"maxcomponentvalue\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": 0 errors (0 missing files), 3 warnings"), std::string::npos) << r.output;
+}
+
 // A shape whose mesh is missing still has its material checked.
 TEST(CheckCommand, MaterialOfAShapeWithAMissingMeshIsChecked) {
   TempDir dir("eyetrace-check");
