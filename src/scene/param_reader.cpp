@@ -1,6 +1,7 @@
 #include "scene/param_reader.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/named_spectra.h"
 #include "scene/spectrum_file.h"
@@ -162,11 +163,19 @@ Param declare(const Tokenizer& tok, const Token& decl) {
 }  // namespace
 
 // A spectrum named by a file ("spds/Au.eta.spd"): anything with a '.' or '/' that is not one
-// of the named spectra. Its pairs replace the name.
+// of the named spectra. Its pairs replace the name. A file that is not there stays a name, its
+// resolved path, for the plugin that reads it to report (scene/spectrum_param.h): the directive
+// itself is not an error, so `eyetrace check` still checks the rest of it.
 void read_spectrum_file_of(Param& p, const std::string& search_dir) {
   if (p.strings.size() != 1 || find_named_spectrum(p.strings[0])) return;
   const std::string& name = p.strings[0];
   if (name.find('.') == std::string::npos && name.find('/') == std::string::npos) return;
+  const std::string path = spectrum_file_path(search_dir, name);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    p.strings[0] = path;
+    return;
+  }
   p.numbers = read_spectrum_file(search_dir, name, p.loc, p.name);
   p.strings.clear();
 }

@@ -159,6 +159,7 @@ class Builder {
     for (const TextureEntity& t : desc_.textures)
       if (!attempt([&] { build_texture(t); }) && keep_going_) add_stand_in(t);
     if (!keep_going_) errors_.throw_if_any();
+    if (keep_going_) check_every_material();
     for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
     std::set<std::string> used;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
@@ -274,6 +275,14 @@ class Builder {
       prims.push_back(std::move(prim));
     }
     return prims;
+  }
+
+  // A render makes a material when a shape first uses it; a check makes them all, as pbrt-v4
+  // does, so that one no shape uses (or whose shapes are in a missing file) is checked too.
+  void check_every_material() {
+    for (size_t i = 1; i < desc_.materials.size(); ++i)  // 0: the implicit default
+      attempt([&] { material(MaterialRef{int(i), ""}, desc_.materials[i].loc); });
+    for (const auto& [name, e] : desc_.named_materials) attempt([&] { material(MaterialRef{-1, name}, e.loc); });
   }
 
   // With keep_going the material is made first on its own, so that its errors are reported

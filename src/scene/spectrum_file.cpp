@@ -44,6 +44,10 @@ std::vector<Number> numbers_of(const std::string& text, std::string* bad, int* b
 
 }  // namespace
 
+std::string spectrum_file_path(const std::string& search_dir, const std::string& name) {
+  return resolve_scene_file(search_dir, name);
+}
+
 std::vector<double> read_spectrum_file(const std::string& search_dir, const std::string& name, const SourceLoc& at,
                                        const std::string& parameter) {
   const std::string path = resolve_scene_file(search_dir, name);

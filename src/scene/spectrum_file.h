@@ -10,10 +10,14 @@
 
 namespace eyetrace {
 
+// Where the file `name` is looked for: relative to `search_dir` unless absolute.
+std::string spectrum_file_path(const std::string& search_dir, const std::string& name);
+
 // The pairs of the file `name` (relative to `search_dir` unless absolute), interleaved, checked:
 // an even count of finite numbers, at least two pairs, increasing positive wavelengths. Errors
 // are at `at` and name the parameter and the file (with its line for a bad value); a file
-// that is not there is DiagnosticKind::MissingFile.
+// that is not there is DiagnosticKind::MissingFile (the parser does not call this for one: it
+// leaves its path in the parameter, scene/param_reader.cpp).
 std::vector<double> read_spectrum_file(const std::string& search_dir, const std::string& name, const SourceLoc& at,
                                        const std::string& parameter);
 

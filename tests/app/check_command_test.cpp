@@ -140,6 +140,25 @@ TEST(CheckCommand, MaterialOfAShapeWithAMissingMeshIsChecked) {
   EXPECT_NE(r.output.find(": 2 errors (1 missing file), 0 warnings"), std::string::npos) << r.output;
 }
 
+// Every material is made, as pbrt-v4 does, even one no shape uses (here its shapes would be
+// in a file that is missing); a missing spectrum file does not hide the material's type.
+TEST(CheckCommand, EveryMaterialIsChecked) {
+  TempDir dir("eyetrace-check");
+  const std::string scene =
+      write(dir, "all.pbrt",
+            "WorldBegin\nMaterial \"nosuchmaterial\" \"spectrum eta\" \"spds/none.spd\"\n"
+            "MakeNamedMaterial \"m\" \"string type\" \"conductor\" \"spectrum k\" \"spds/k.spd\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:1: error: unsupported material \"nosuchmaterial\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(scene + ":3:49: error: parameter \"k\": spectrum file \"" + dir.file("spds/k.spd") +
+                          "\" not found"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(": 2 errors (1 missing file), 0 warnings"), std::string::npos) << r.output;
+}
+
 // An unterminated string stops the parse: what follows cannot be read, nothing is built.
 TEST(CheckCommand, UnterminatedStringStopsIt) {
   TempDir dir("eyetrace-check");

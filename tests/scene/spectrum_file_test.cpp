@@ -1,7 +1,8 @@
 // Spectrum files ("spectrum eta" "au_eta.spd"), read by the parser as pbrt-v4 does, relative
 // to the top-level scene's directory: the pairs are those of the file (six samples of pbrt-v4's
 // Au_eta, so metal-Au-eta agrees at them), and a file that is missing or malformed is an error
-// naming the parameter, the file and, for a bad value, its line.
+// naming the parameter, the file and, for a bad value, its line (a missing one where the
+// parameter is read).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "../support/temp_files.h"
 #include "core/named_spectra.h"
 #include "scene/parser.h"
+#include "scene/spectrum_param.h"
 
 namespace eyetrace {
 namespace {
@@ -60,12 +62,23 @@ TEST(SpectrumFile, ResolvedAgainstTheSceneDirectory) {
   EXPECT_EQ(d.materials.back().params.find("eta")->numbers.size(), 12u);
 }
 
-TEST(SpectrumFile, MissingFileIsAMissingFileError) {
-  const Diagnostic e = error_of(scene("spds/none.spd"), kSpectra.string());
-  EXPECT_EQ(e.kind, DiagnosticKind::MissingFile);
-  EXPECT_EQ(e.parameter, "eta");
-  EXPECT_EQ(e.loc.to_string(), "s.pbrt:2:22");
-  EXPECT_EQ(e.message, "parameter \"eta\": spectrum file \"" + (kSpectra / "spds/none.spd").string() + "\" not found");
+// A file that is not there does not fail the directive (so `eyetrace check` goes on with it):
+// its path stays in the parameter, and reading the parameter is the missing-file error.
+TEST(SpectrumFile, MissingFileIsAMissingFileErrorWhereItIsRead) {
+  SceneDescription d = parse_scene_string(scene("spds/none.spd"), "s.pbrt", kSpectra.string());
+  const Param* eta = d.materials.back().params.find("eta");
+  ASSERT_NE(eta, nullptr);
+  const std::string path = (kSpectra / "spds/none.spd").string();
+  ASSERT_EQ(eta->strings, std::vector<std::string>{path});
+  try {
+    spectrum_param_value(*eta, SpectrumType::Unbounded);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.first().kind, DiagnosticKind::MissingFile);
+    EXPECT_EQ(e.first().parameter, "eta");
+    EXPECT_EQ(e.first().loc.to_string(), "s.pbrt:2:22");
+    EXPECT_EQ(e.first().message, "parameter \"eta\": spectrum file \"" + path + "\" not found");
+  }
 }
 
 TEST(SpectrumFile, MalformedFilesNameTheLine) {
