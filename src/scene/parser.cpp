@@ -209,8 +209,7 @@ void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char*
     if (open[i]->canonical != file.canonical) continue;
     std::string chain;
     for (size_t j = i; j < open.size(); ++j) chain += fs::path(open[j]->canonical).filename().string() + " -> ";
-    fail(loc, "recursive {} of \"{}\" ({}{})", directive, path.string(), chain,
-         fs::path(file.canonical).filename().string());
+    fail(loc, "recursive Include of \"{}\" ({}{})", path.string(), chain, fs::path(file.canonical).filename().string());
   }
   if (open.size() >= kMaxIncludeDepth) fail(loc, "Include nesting is deeper than {} files", kMaxIncludeDepth);
   tok.include(read_scene_text(path, &loc), std::move(file));
