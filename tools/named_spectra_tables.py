@@ -6,6 +6,7 @@ fluorescent illuminants stdillum-F1..F12, illum-acesD60 and the camera sensor cu
 Only the numbers are taken; each table is written whole, (lambda nm, value) pairs.
 
     tools/named_spectra_tables.py PBRT_V4/src/pbrt/util/spectrum.cpp > src/core/named_spectra_tables.cpp
+    tools/format   # the committed file is clang-formatted
 """
 import re
 import sys
