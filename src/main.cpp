@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   auto optics = eyetrace::add_optics_command(app);
   auto plugins = eyetrace::add_plugins_command(app);
   auto sweep = eyetrace::add_sweep_command(app);
+  auto check = eyetrace::add_check_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("optics")) return optics();
     if (app.got_subcommand("plugins")) return plugins();
     if (app.got_subcommand("sweep")) return sweep();
+    if (app.got_subcommand("check")) return check();
   } catch (const eyetrace::SceneError& e) {
     // One line per diagnostic, compiler style, then how many when there are several.
     for (const eyetrace::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.to_string().c_str());

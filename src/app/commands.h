@@ -11,5 +11,6 @@ CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_optics_command(CLI::App& app);
 CommandRunner add_plugins_command(CLI::App& app);
 CommandRunner add_sweep_command(CLI::App& app);
+CommandRunner add_check_command(CLI::App& app);
 
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 // needs a diagnostic's parameter or message reads the field, never the formatted text.
 #pragma once
 #include <cstddef>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,16 @@ struct SourceLoc {
 
 enum class Severity { Error, Warning };
 
+// What an error is about, where the command line tells them apart: `eyetrace check` lists the
+// files a scene names but that are not there (missing data) apart from the rest.
+enum class DiagnosticKind { General, MissingFile };
+
 struct Diagnostic {
   SourceLoc loc;
   std::string parameter;  // the scene parameter or command-line option it concerns, if any
   Severity severity = Severity::Error;
   std::string message;
+  DiagnosticKind kind = DiagnosticKind::General;
   // "scene.pbrt:12:5: error: message"; without a place "error: message", or
   // "error: --option message" for a command-line option.
   std::string to_string() const;
@@ -32,10 +38,14 @@ struct Diagnostic {
 
 // The errors of one run, collected so that a scene with several mistakes reports them all:
 // each stage records what fails and carries on where later errors still mean something.
-// Identical diagnostics are kept once. Beyond kMaxErrors they are counted, not kept.
+// Identical diagnostics are kept once. Beyond the limit (kMaxErrors unless
+// set_diagnostic_limit() changed it) they are counted, not kept.
 class DiagnosticList {
  public:
   static constexpr size_t kMaxErrors = 20;
+  // Process-wide: `eyetrace check` lists every error (0: no limit), a render the first 20.
+  static void set_limit(size_t max_kept);
+  static size_t limit();
   void add(const Diagnostic& d);
   void add_all(const std::vector<Diagnostic>& ds);
   bool empty() const { return kept_.empty(); }
@@ -46,6 +56,7 @@ class DiagnosticList {
 
  private:
   std::vector<Diagnostic> kept_;
+  std::set<std::string> seen_;  // kept_ as text: a scene can have thousands of diagnostics
   size_t suppressed_ = 0;
 };
 

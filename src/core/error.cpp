@@ -25,13 +25,26 @@ std::string Diagnostic::to_string() const {
 
 bool Diagnostic::operator==(const Diagnostic& o) const {
   return loc.file == o.loc.file && loc.line == o.loc.line && loc.column == o.loc.column && parameter == o.parameter &&
-         severity == o.severity && message == o.message;
+         severity == o.severity && message == o.message && kind == o.kind;
 }
 
+namespace {
+std::atomic<size_t> g_diagnostic_limit{DiagnosticList::kMaxErrors};
+
+// Everything operator== compares, as one string.
+std::string identity_of(const Diagnostic& d) {
+  return fmt::format("{}\x1f{}\x1f{}\x1f{}\x1f{}", d.to_string(), d.loc.file, d.parameter, int(d.kind),
+                     int(d.severity));
+}
+}  // namespace
+
+void DiagnosticList::set_limit(size_t max_kept) { g_diagnostic_limit = max_kept; }
+size_t DiagnosticList::limit() { return g_diagnostic_limit; }
+
 void DiagnosticList::add(const Diagnostic& d) {
-  for (const Diagnostic& k : kept_)
-    if (k == d) return;
-  if (kept_.size() < kMaxErrors)
+  if (!seen_.insert(identity_of(d)).second) return;
+  const size_t max_kept = limit();
+  if (max_kept == 0 || kept_.size() < max_kept)
     kept_.push_back(d);
   else
     ++suppressed_;
@@ -49,7 +62,7 @@ void DiagnosticList::throw_if_any() const {
                              "",
                              Severity::Error,
                              fmt::format("{} more error{} not shown (at most {} are listed)", suppressed_,
-                                         suppressed_ == 1 ? "" : "s", kMaxErrors)});
+                                         suppressed_ == 1 ? "" : "s", limit())});
   throw SceneError(std::move(all));
 }
 
@@ -74,7 +87,12 @@ void throw_parameter_error(const SourceLoc& loc, const std::string& parameter, c
   throw SceneError(Diagnostic{loc, parameter, Severity::Error, message});
 }
 
+void throw_missing_file(const SourceLoc& loc, const std::string& parameter, const std::string& message) {
+  throw SceneError(Diagnostic{loc, parameter, Severity::Error, message, DiagnosticKind::MissingFile});
+}
+
 namespace {
+WarningCollector* g_collector = nullptr;  // guarded by g_warn_mutex
 std::atomic<bool> g_warnings_enabled{true};
 std::atomic<bool> g_warnings_fatal{false};
 std::atomic<int> g_warning_count{0};
@@ -85,7 +103,30 @@ void set_warnings_enabled(bool enabled) { g_warnings_enabled = enabled; }
 void set_warnings_fatal(bool fatal) { g_warnings_fatal = fatal; }
 int warning_count() { return g_warning_count; }
 
+WarningCollector::WarningCollector() {
+  std::lock_guard<std::mutex> lock(g_warn_mutex);
+  outer_ = g_collector;
+  g_collector = this;
+}
+
+WarningCollector::~WarningCollector() {
+  std::lock_guard<std::mutex> lock(g_warn_mutex);
+  g_collector = outer_;
+}
+
+std::vector<Diagnostic> WarningCollector::warnings() const {
+  std::lock_guard<std::mutex> lock(g_warn_mutex);
+  return list_.kept();
+}
+
 void warn(const SourceLoc& loc, const std::string& message) {
+  {
+    std::lock_guard<std::mutex> lock(g_warn_mutex);
+    if (g_collector) {
+      g_collector->list_.add(Diagnostic{loc, "", Severity::Warning, message});
+      return;
+    }
+  }
   if (g_warnings_fatal)
     throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
   std::string text = Diagnostic{loc, "", Severity::Warning, message}.to_string();

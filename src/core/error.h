@@ -29,12 +29,30 @@ class SceneError : public std::runtime_error {
 [[noreturn]] void throw_error(const std::string& message);
 // An error about one scene parameter or command-line option: `parameter` is kept as a field.
 [[noreturn]] void throw_parameter_error(const SourceLoc& loc, const std::string& parameter, const std::string& message);
+// An error about a file the scene names that is not there (DiagnosticKind::MissingFile).
+[[noreturn]] void throw_missing_file(const SourceLoc& loc, const std::string& parameter, const std::string& message);
 // Warnings go to stderr (once per distinct text) unless warnings are silenced by --quiet.
 // With strict warnings (--strict) a warning is thrown as an error instead.
 void warn(const SourceLoc& loc, const std::string& message);
 void set_warnings_enabled(bool enabled);
 void set_warnings_fatal(bool fatal);
 int warning_count();
+
+// While alive, every warning (from any thread) is collected here instead of printed, and is
+// never fatal: `eyetrace check` lists them all with the errors. Identical ones are kept once.
+class WarningCollector {
+ public:
+  WarningCollector();
+  ~WarningCollector();
+  WarningCollector(const WarningCollector&) = delete;
+  WarningCollector& operator=(const WarningCollector&) = delete;
+  std::vector<Diagnostic> warnings() const;
+
+ private:
+  friend void warn(const SourceLoc& loc, const std::string& message);
+  DiagnosticList list_;
+  WarningCollector* outer_;
+};
 
 template <typename... Args>
 [[noreturn]] void fail(const SourceLoc& loc, fmt::format_string<Args...> f, Args&&... args) {

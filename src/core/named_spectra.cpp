@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/cie_tables.h"
+#include "core/named_spectra_tables.h"
 
 namespace eyetrace {
 
@@ -172,17 +173,28 @@ const NamedSpectrum kSpectra[] = {
     {"stdillum-D65", NamedSpectrumKind::Illuminant, {}, d65},
 };
 
+// Ours first, then the rest of pbrt-v4's (core/named_spectra_tables.h).
+const std::vector<const NamedSpectrum*>& all_spectra() {
+  static const std::vector<const NamedSpectrum*> all = [] {
+    std::vector<const NamedSpectrum*> v;
+    for (const auto& s : kSpectra) v.push_back(&s);
+    for (const auto& s : pbrt_named_spectrum_tables()) v.push_back(&s);
+    return v;
+  }();
+  return all;
+}
+
 }  // namespace
 
 const NamedSpectrum* find_named_spectrum(std::string_view name) {
-  for (const auto& s : kSpectra)
-    if (s.name == name) return &s;
+  for (const NamedSpectrum* s : all_spectra())
+    if (s->name == name) return s;
   return nullptr;
 }
 
 std::vector<std::string> named_spectrum_names() {
   std::vector<std::string> names;
-  for (const auto& s : kSpectra) names.emplace_back(s.name);
+  for (const NamedSpectrum* s : all_spectra()) names.emplace_back(s->name);
   return names;
 }
 

@@ -1,5 +1,5 @@
-// The named spectra of pbrt-v4 scenes ("metal-Cu-eta", "glass-BK7", "stdillum-D65", ...)
-// that eyetrace knows, as functions of wavelength in nm.
+// The named spectra of pbrt-v4 scenes ("metal-Cu-eta", "glass-BK7", "stdillum-D65", ...), all
+// of pbrt-v4's, as functions of wavelength in nm.
 #pragma once
 #include <span>
 #include <string>
@@ -12,6 +12,7 @@ enum class NamedSpectrumKind {
   Metal,       // conductor eta or k: projected to RGB like a reflectance
   Glass,       // dielectric index: used at 550 nm only (the renderer is not dispersive)
   Illuminant,  // emission: normalised to luminance 1
+  Sensor,      // a camera's spectral response (pbrt-v4's canon_*, nikon_*, sony_*, ...): as given
 };
 
 struct NamedSpectrum {

@@ -8,10 +8,11 @@
 
 namespace eyetrace {
 
-PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name)
+PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name, float rr_threshold)
     : Integrator(scene),
       max_depth_(max_depth),
       name_(std::move(name)),
+      rr_threshold_(rr_threshold),
       lights_(scene.lights()),
       hittable_lights_(
           std::any_of(scene.lights().begin(), scene.lights().end(), [](const auto& l) { return !l->is_delta(); })) {}
@@ -99,10 +100,12 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
     prev_ctx = LightSampleContext{si.p, si.n};
     ray = spawn_ray(si, bs->wi);
     if (!is_finite(beta)) break;
-    // Russian roulette once the path has some length; unbiased (survivors are reweighted).
+    // Russian roulette once the path has some length and its throughput is below the
+    // threshold; unbiased (survivors are reweighted). A path survives with probability q, the
+    // throughput's largest component (pbrt-v4's 1 - max(0, 1 - q)), so above 1 it always does.
     // Judged on the wavelengths still carried (a terminated one's beta no longer matters).
     float q = lambda.secondary_terminated() ? beta[0] : max_component(beta);
-    if (depth > 1 && q < 1.f) {
+    if (depth > 1 && q < std::min(rr_threshold_, 1.f)) {
       if (sampler.get_1d() >= q) break;
       beta /= q;
     }
@@ -120,18 +123,33 @@ PluginSpec make_path_spec(int default_depth, const std::string& summary, const s
                      param::string("lightsampler", "bvh")
                          .in({"bvh", "power", "uniform"})
                          .describe("eyetrace always samples lights in proportion to their power"),
-                     param::boolean("regularize", false).describe("`true` warns and is ignored")}};
+                     param::boolean("regularize", false).describe("`true` warns and is ignored"),
+                     param::real("rrthreshold", 1)
+                         .at_least(0)
+                         .describe("Russian roulette where the path throughput's largest component is below it "
+                                   "(pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it and uses 1)")}};
 }
 
+struct PathParams {
+  int max_depth;
+  float rr_threshold;
+};
+
 // The options pbrt-v4's path integrators share; eyetrace has one light sampler.
-int read_path_params(const IntegratorContext& ctx, const PluginSpec& spec, const std::string& name) {
+PathParams read_path_params(const IntegratorContext& ctx, const PluginSpec& spec, const std::string& name) {
   const PluginParams p(ctx.params, spec, name);
   // pbrt-v4's default "bvh" is unbiased like ours; only an explicit request is worth a note.
   const std::string ls = p.get_string("lightsampler");
   if (p.has("lightsampler") && ls != "power")
     warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
   if (p.get_bool("regularize")) warn(p.loc(), "\"regularize\" is not supported; ignored");
-  return p.get_int("maxdepth");
+  return {p.get_int("maxdepth"), p.get_float("rrthreshold")};
+}
+
+std::unique_ptr<Integrator> make_path(const IntegratorContext& ctx, const PluginSpec& spec, const std::string& name,
+                                      const std::string& renders_as) {
+  const PathParams p = read_path_params(ctx, spec, name);
+  return std::make_unique<PathIntegrator>(ctx.scene, p.max_depth, renders_as, p.rr_threshold);
 }
 
 }  // namespace
@@ -157,12 +175,11 @@ const PluginSpec& direct_integrator_spec() {
 }
 
 std::unique_ptr<Integrator> create_path_integrator(const IntegratorContext& ctx) {
-  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, path_integrator_spec(), "path"), "path");
+  return make_path(ctx, path_integrator_spec(), "path", "path");
 }
 
 std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ctx) {
-  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, direct_integrator_spec(), "direct"),
-                                          "direct");
+  return make_path(ctx, direct_integrator_spec(), "direct", "direct");
 }
 
 std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx) {
@@ -170,8 +187,7 @@ std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& c
   // line 0); only a scene that asks for it by name is told that it gets "path".
   if (ctx.params.loc().line > 0)
     warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
-  return std::make_unique<PathIntegrator>(ctx.scene, read_path_params(ctx, volpath_integrator_spec(), "volpath"),
-                                          "path");
+  return make_path(ctx, volpath_integrator_spec(), "volpath", "path");
 }
 
 }  // namespace eyetrace

@@ -13,7 +13,9 @@ class BSDF;
 
 class PathIntegrator : public Integrator {
  public:
-  PathIntegrator(const Scene& scene, int max_depth, std::string name);
+  // Russian roulette applies where the path throughput's largest component is below
+  // `rr_threshold` (pbrt-v3's and early pbrt-v4's "rrthreshold"; 1 is today's pbrt-v4).
+  PathIntegrator(const Scene& scene, int max_depth, std::string name, float rr_threshold = 1.f);
   SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
                            RayTally& tally) const override;
   std::string to_string() const override;
@@ -24,6 +26,7 @@ class PathIntegrator : public Integrator {
                                 Sampler& sampler, RayTally& tally) const;
   int max_depth_;
   std::string name_;
+  float rr_threshold_;
   PowerLightSampler lights_;
   // Whether any light can be hit by a ray (area and infinite lights; point, spot and distant
   // lights cannot). Without one, the BSDF-sampled ray after the last bounce, which exists

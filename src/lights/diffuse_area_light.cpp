@@ -1,5 +1,7 @@
 #include "lights/diffuse_area_light.h"
 
+#include <filesystem>
+
 #include "lights/light_params.h"
 #include "scene/scene_files.h"
 
@@ -100,6 +102,8 @@ std::unique_ptr<Light> create_diffuse_area_light(const AreaLightContext& ctx) {
   if (!filename.empty()) {
     if (L) params.fail("filename", "an area light takes \"L\" or \"filename\", not both");
     std::string path = resolve_scene_file(ctx.search_dir, filename);
+    if (!std::filesystem::exists(path))
+      params.fail_missing_file("filename", fmt::format("emission image \"{}\" not found", path));
     std::string error;
     image = read_rgb_image(path, &error);
     if (!image) params.fail("filename", fmt::format("cannot read emission image \"{}\": {}", path, error));

@@ -1,5 +1,7 @@
 #include "lights/infinite_light.h"
 
+#include <filesystem>
+
 #include "core/sampling.h"
 #include "lights/light_params.h"
 #include "scene/scene_files.h"
@@ -89,6 +91,8 @@ void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_
 namespace {
 
 EnvironmentMap read_environment_map(const PluginParams& params, const std::string& path) {
+  if (!std::filesystem::exists(path))
+    params.fail_missing_file("filename", fmt::format("environment image \"{}\" not found", path));
   std::string error;
   size_t non_finite = 0;
   std::optional<RGBImage> image = read_rgb_image(path, &error, &non_finite);

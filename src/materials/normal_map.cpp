@@ -18,7 +18,7 @@ const ImageTexture* read_normal_map(const MaterialContext& ctx, const PluginPara
   std::string file = params.get_string("normalmap");
   std::filesystem::path path(resolve_scene_file(ctx.search_dir, file));
   if (!std::filesystem::is_regular_file(path))
-    ctx.params.fail("normalmap", fmt::format("image file \"{}\" not found", path.string()));
+    ctx.params.fail_missing_file("normalmap", fmt::format("image file \"{}\" not found", path.string()));
   // Reuse the imagemap texture with the settings pbrt-v4 reads normal maps with.
   ParameterList image(p->loc);
   auto add = [&](const char* name, const std::string& value) {

@@ -1,10 +1,20 @@
 #include "scene/param_reader.h"
 
 #include <cmath>
+#include <filesystem>
+
+#include "core/named_spectra.h"
+#include "scene/spectrum_file.h"
 
 namespace eyetrace {
 
 namespace {
+
+// Where `open` is, said from `at`: "2:31", or with its file when an Include lies between them.
+std::string place_of(const Token& open, const Token& at) {
+  if (open.file && open.file != at.file) return fmt::format("{}:{}:{}", open.file->name, open.line, open.column);
+  return fmt::format("{}:{}", open.line, open.column);
+}
 
 enum class ValueKind { Numbers, Integers, Bools, Strings, Spectrum };
 
@@ -116,7 +126,7 @@ class ValueReader {
       case NumberStatus::Ok: break;
       case NumberStatus::NotANumber: {
         std::string hint;
-        if (open) hint = fmt::format(" (is the ']' for the '[' at {}:{} missing?)", open->line, open->column);
+        if (open) hint = fmt::format(" (is the ']' for the '[' at {} missing?)", place_of(*open, t));
         fail(t, fmt::format("expected {}, got {}{}", expected(), t.describe(), hint));
       }
       case NumberStatus::NotFinite: fail(t, fmt::format("{} is not a finite number", t.describe()));
@@ -152,7 +162,25 @@ Param declare(const Tokenizer& tok, const Token& decl) {
 
 }  // namespace
 
-Param read_parameter(Tokenizer& tok, const Token& decl) {
+// A spectrum named by a file ("spds/Au.eta.spd"): anything with a '.' or '/' that is not one
+// of the named spectra. Its pairs replace the name. A file that is not there stays a name, its
+// resolved path, for the plugin that reads it to report (scene/spectrum_param.h): the directive
+// itself is not an error, so `eyetrace check` still checks the rest of it.
+void read_spectrum_file_of(Param& p, const std::string& search_dir) {
+  if (p.strings.size() != 1 || find_named_spectrum(p.strings[0])) return;
+  const std::string& name = p.strings[0];
+  if (name.find('.') == std::string::npos && name.find('/') == std::string::npos) return;
+  const std::string path = spectrum_file_path(search_dir, name);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    p.strings[0] = path;
+    return;
+  }
+  p.numbers = read_spectrum_file(search_dir, name, p.loc, p.name);
+  p.strings.clear();
+}
+
+Param read_parameter(Tokenizer& tok, const Token& decl, const std::string& search_dir) {
   Param p = declare(tok, decl);
   ValueReader reader(tok, p, *find_type(p.type));
   Token v = tok.next();
@@ -164,8 +192,8 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
         if (t.kind == TokenKind::End)
           fail(tok.loc(v), "parameter \"{} {}\": '[' has no matching ']' before the end of the file", p.type, p.name);
         if (t.kind == TokenKind::OpenBracket)
-          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {}:{} missing?)", p.type,
-               p.name, v.line, v.column);
+          fail(tok.loc(t), "parameter \"{} {}\": unexpected '[' (is the ']' for the '[' at {} missing?)", p.type,
+               p.name, place_of(v, t));
         reader.add(t, &v);
       }
       break;
@@ -174,14 +202,15 @@ Param read_parameter(Tokenizer& tok, const Token& decl) {
     case TokenKind::End: fail(tok.loc(v), "parameter \"{} {}\" has no value: end of file", p.type, p.name);
   }
   reader.check_counts();
+  if (p.canonical_type() == "spectrum") read_spectrum_file_of(p, search_dir);
   return p;
 }
 
-ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc) {
+ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc, const std::string& search_dir) {
   ParameterList list(directive_loc);
   while (tok.peek().kind == TokenKind::String) {
     Token decl = tok.next();
-    list.add(read_parameter(tok, decl));
+    list.add(read_parameter(tok, decl, search_dir));
   }
   return list;
 }

@@ -7,10 +7,12 @@
 
 namespace eyetrace {
 
-// Reads the value(s) following the declaration token `decl` ("type name").
-Param read_parameter(Tokenizer& tok, const Token& decl);
+// Reads the value(s) following the declaration token `decl` ("type name"). A "spectrum" given
+// as a file name (not a named spectrum) is read here, as pbrt-v4 does, relative to
+// `search_dir` (scene/spectrum_file.h), and kept as its (wavelength, value) pairs.
+Param read_parameter(Tokenizer& tok, const Token& decl, const std::string& search_dir = "");
 
 // Reads parameters while the next token is a quoted string; stops before anything else.
-ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc);
+ParameterList read_parameter_list(Tokenizer& tok, const SourceLoc& directive_loc, const std::string& search_dir = "");
 
 }  // namespace eyetrace

@@ -290,6 +290,9 @@ bool PluginParams::has(const std::string& name) const {
 }
 
 void PluginParams::fail(const std::string& name, const std::string& message) const { list_.fail(name, message); }
+void PluginParams::fail_missing_file(const std::string& name, const std::string& message) const {
+  list_.fail_missing_file(name, message);
+}
 
 void PluginParams::warn_param(const std::string& name, const std::string& message) const {
   const Param* p = list_.find(name);

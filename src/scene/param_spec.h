@@ -114,6 +114,7 @@ class PluginParams {
   const SourceLoc& loc() const { return list_.loc(); }
   bool has(const std::string& name) const;
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;
+  [[noreturn]] void fail_missing_file(const std::string& name, const std::string& message) const;
   void warn_param(const std::string& name, const std::string& message) const;
 
   // Values; an absent parameter gives the table's default. Asking for an undeclared name,

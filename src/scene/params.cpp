@@ -31,6 +31,11 @@ void ParameterList::fail(const std::string& name, const std::string& message) co
   throw_parameter_error(p ? p->loc : loc_, name, fmt::format("parameter \"{}\": {}", name, message));
 }
 
+void ParameterList::fail_missing_file(const std::string& name, const std::string& message) const {
+  const Param* p = find(name);
+  throw_missing_file(p ? p->loc : loc_, name, fmt::format("parameter \"{}\": {}", name, message));
+}
+
 // Values are parsed as doubles but used as floats: one beyond the float range would become
 // infinite (a point light at infinity, an infinite radiance) without a word.
 static void check_numbers(const Param& p) {

@@ -62,6 +62,8 @@ class ParameterList {
 
   // Errors at a parameter's location (or the directive's if the parameter is absent).
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;
+  // The same for a file the parameter names that does not exist (DiagnosticKind::MissingFile).
+  [[noreturn]] void fail_missing_file(const std::string& name, const std::string& message) const;
   void mark_all_used() const;
 
  private:

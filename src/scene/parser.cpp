@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/gzip.h"
 #include "scene/param_reader.h"
 #include "scene/scene_parser.h"
 
@@ -53,38 +54,40 @@ SceneParser::SceneParser(fs::path search_dir) {
 // ---------------------------------------------------------------------------------------
 // Files and the directive loop
 
-void SceneParser::parse_file(const fs::path& path, const SourceLoc* included_from) {
+// The whole text of a scene file, inflated when it is gzip-compressed (pbrt-v4 scenes ship
+// their large geometry as .pbrt.gz); errors name the file, and the Include that named it.
+std::string SceneParser::read_scene_text(const fs::path& path, const SourceLoc* included_from) {
+  std::string error;
+  std::optional<std::string> text = read_whole_file(path, &error);
+  if (text && is_gzip(*text)) {
+    text = gunzip(*text, &error);
+    if (!text) error = fmt::format("gzip-compressed file: {}", error);
+  }
+  if (text) return std::move(*text);
+  std::string message = fmt::format("cannot read scene file \"{}\": {}", path.string(), error);
+  std::error_code exists_ec;
+  if (!fs::exists(path, exists_ec)) throw_missing_file(included_from ? *included_from : SourceLoc{}, "", message);
+  if (included_from) throw_error(*included_from, message);
+  throw_error(message);
+}
+
+TokenFile SceneParser::token_file(const fs::path& path) {
   std::error_code ec;
   fs::path canonical = fs::weakly_canonical(path, ec);
   if (ec) canonical = fs::absolute(path);
-  for (size_t i = 0; i < files_.size(); ++i) {
-    if (files_[i].canonical != canonical.string()) continue;
-    std::string chain;
-    for (size_t j = i; j < files_.size(); ++j) chain += fs::path(files_[j].canonical).filename().string() + " -> ";
-    fail(*included_from, "recursive Include of \"{}\" ({}{})", path.string(), chain, canonical.filename().string());
-  }
-  if (files_.size() >= kMaxIncludeDepth)
-    fail(*included_from, "Include nesting is deeper than {} files", kMaxIncludeDepth);
-  std::string error;
-  std::optional<std::string> text = read_whole_file(path, &error);
-  if (!text) {
-    std::string message = fmt::format("cannot read scene file \"{}\": {}", path.string(), error);
-    if (included_from) throw_error(*included_from, message);
-    throw_error(message);
-  }
-  Tokenizer tok(std::move(*text), path.string());
-  files_.push_back(OpenFile{canonical.string(), path.parent_path()});
+  return TokenFile{path.string(), canonical.string(), path.parent_path().string()};
+}
+
+void SceneParser::parse_file(const fs::path& path) {
+  Tokenizer tok(read_scene_text(path, nullptr), token_file(path));
   run(tok);
-  files_.pop_back();
 }
 
 void SceneParser::parse_text(std::string text, const std::string& filename) {
   std::error_code ec;
   fs::path as_file = fs::weakly_canonical(fs::path(desc_.search_dir) / filename, ec);
-  Tokenizer tok(std::move(text), filename);
-  files_.push_back(OpenFile{as_file.string(), desc_.search_dir});
+  Tokenizer tok(std::move(text), TokenFile{filename, as_file.string(), desc_.search_dir});
   run(tok);
-  files_.pop_back();
 }
 
 // A directive that fails is recorded and the parse goes on at the next directive keyword, so
@@ -92,6 +95,7 @@ void SceneParser::parse_text(std::string text, const std::string& filename) {
 void SceneParser::run(Tokenizer& tok) {
   for (;;) {
     try {
+      tok.release_finished();  // no token is held between directives
       Token t = tok.next();
       if (t.kind == TokenKind::End) return;
       SourceLoc loc = tok.loc(t);
@@ -143,9 +147,24 @@ void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const 
 }
 
 SceneDescription SceneParser::finish(const std::string& top_file) {
+  check_end(top_file);
+  errors_.throw_if_any();
+  return std::move(desc_);
+}
+
+ParsedScene SceneParser::finish_collecting(const std::string& top_file) {
+  check_end(top_file);
+  ParsedScene r;
+  r.errors = errors_.kept();
+  r.buildable = !cut_short_ && in_world_;
+  r.desc = std::move(desc_);
+  return r;
+}
+
+void SceneParser::check_end(const std::string& top_file) {
   // A text cut short by an error has not really ended: its open blocks and missing WorldBegin
   // follow from that error and are not reported again.
-  if (cut_short_) errors_.throw_if_any();
+  if (cut_short_) return;
   if (!blocks_.empty()) {
     const OpenBlock& b = blocks_.back();
     const char* closer = b.directive == "ObjectBegin"      ? "ObjectEnd"
@@ -156,17 +175,15 @@ SceneDescription SceneParser::finish(const std::string& top_file) {
   }
   if (!in_world_)
     errors_.add(Diagnostic{SourceLoc{top_file, 0, 0}, "", Severity::Error, "the scene ends before WorldBegin"});
-  errors_.throw_if_any();
-  return std::move(desc_);
 }
 
-fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const {
+fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& loc, const char* directive,
+                                      const fs::path& dir) const {
   fs::path p(name);
   std::vector<fs::path> candidates;
   if (p.is_absolute()) {
     candidates.push_back(p);
   } else {
-    fs::path dir = files_.empty() ? fs::path() : files_.back().dir;
     candidates.push_back((dir / p).lexically_normal());
     fs::path in_search = (fs::path(desc_.search_dir) / p).lexically_normal();
     std::error_code ec;
@@ -178,12 +195,24 @@ fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& 
     if (fs::exists(c, ec)) return c;
     looked += (looked.empty() ? "" : ", ") + fmt::format("\"{}\"", c.string());
   }
-  fail(loc, "{} \"{}\": file not found (looked for {})", directive, name, looked);
+  throw_missing_file(loc, "", fmt::format("{} \"{}\": file not found (looked for {})", directive, name, looked));
 }
 
+// As pbrt-v4, the included file's tokens are spliced in where the Include stands: a directive
+// begun in it may end after it, and one begun before it may take its parameters from it.
 void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
   std::string name = read_name(tok, directive, "file name");
-  parse_file(resolve_include(name, loc, directive), &loc);
+  fs::path path = resolve_include(name, loc, directive, tok.current_file().dir);
+  TokenFile file = token_file(path);
+  const std::vector<const TokenFile*> open = tok.open_files();
+  for (size_t i = 0; i < open.size(); ++i) {
+    if (open[i]->canonical != file.canonical) continue;
+    std::string chain;
+    for (size_t j = i; j < open.size(); ++j) chain += fs::path(open[j]->canonical).filename().string() + " -> ";
+    fail(loc, "recursive Include of \"{}\" ({}{})", path.string(), chain, fs::path(file.canonical).filename().string());
+  }
+  if (open.size() >= kMaxIncludeDepth) fail(loc, "Include nesting is deeper than {} files", kMaxIncludeDepth);
+  tok.include(read_scene_text(path, &loc), std::move(file));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -218,7 +247,7 @@ std::vector<float> SceneParser::read_numbers(Tokenizer& tok, const char* directi
 SceneEntity SceneParser::read_entity(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
   SceneEntity e;
   e.name = read_name(tok, directive, "type name");
-  e.params = read_parameter_list(tok, loc);
+  e.params = read_parameter_list(tok, loc, desc_.search_dir);
   e.loc = loc;
   return e;
 }
@@ -242,8 +271,20 @@ SceneDescription parse_scene_file(const std::string& path) {
   std::error_code ec;
   fs::path abs = fs::absolute(path, ec);
   SceneParser parser(abs.parent_path().lexically_normal());
-  parser.parse_file(path, nullptr);
+  parser.parse_file(path);
   return parser.finish(path);
+}
+
+ParsedScene parse_scene_file_collecting(const std::string& path) {
+  std::error_code ec;
+  fs::path abs = fs::absolute(path, ec);
+  SceneParser parser(abs.parent_path().lexically_normal());
+  try {
+    parser.parse_file(path);
+  } catch (const SceneError& e) {  // the top file itself cannot be read
+    return ParsedScene{SceneDescription{}, e.diagnostics(), false};
+  }
+  return parser.finish_collecting(path);
 }
 
 SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir) {

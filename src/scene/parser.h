@@ -11,6 +11,16 @@ namespace eyetrace {
 // Reads a scene file (and everything it Includes/Imports).
 SceneDescription parse_scene_file(const std::string& path);
 
+// For `eyetrace check`: what parsed, and every error instead of a thrown SceneError. Directives
+// that failed are left out of `desc`; `buildable` is false when the rest cannot be built on
+// (the file cannot be read, an error cut the text short, or it has no WorldBegin).
+struct ParsedScene {
+  SceneDescription desc;
+  std::vector<Diagnostic> errors;
+  bool buildable = true;
+};
+ParsedScene parse_scene_file_collecting(const std::string& path);
+
 // Parses scene text held in memory; `filename` is used in messages, `search_dir` resolves
 // Include/Import and relative paths.
 SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir);

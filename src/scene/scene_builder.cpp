@@ -29,11 +29,14 @@ std::vector<ParamSpec> film_base_params() {
       param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
       param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
       param::real("exposuretime", 1).above(0).with_unit("s"),
+      param::real("scale", 1)
+          .above(0)
+          .describe("multiplies the image (pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it)"),
       param::boolean("savefp16", true).describe("ignored"),
-      param::real("maxcomponentvalue").describe("ignored"),
+      param::real("maxcomponentvalue").describe("ignored, with a warning"),
       param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
-      param::string("sensor", "cie1931").describe("ignored"),
-      param::real("whitebalance", 0).describe("ignored"),
+      param::string("sensor", "cie1931").describe("other values are ignored, with a warning"),
+      param::real("whitebalance", 0).describe("other values are ignored, with a warning"),
   };
 }
 
@@ -42,8 +45,9 @@ std::vector<ParamSpec> film_base_params() {
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
-      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16`, `maxcomponentvalue`, `diagonal`, "
-      "`sensor` and `whitebalance` are accepted and ignored.",
+      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16` and `diagonal` are accepted and "
+      "ignored; `maxcomponentvalue`, a `sensor` other than `cie1931` and a `whitebalance` other than 0, which would "
+      "change the image in pbrt-v4, are ignored with a warning.",
       film_base_params()};
   return spec;
 }
@@ -80,6 +84,16 @@ bool has_extension(const std::string& path, const std::string& ext) {
   return e == ext;
 }
 
+// What pbrt-v4's film would do to the image that eyetrace does not: said, so that
+// `eyetrace check` lists it.
+void warn_ignored_film_params(const PluginParams& p) {
+  if (p.has("maxcomponentvalue")) p.warn_param("maxcomponentvalue", "clamping sample values is not supported; ignored");
+  if (p.get_string("sensor") != "cie1931")
+    p.warn_param("sensor", fmt::format("sensor \"{}\" is not supported; the image is CIE 1931 XYZ to linear sRGB",
+                                       p.get_string("sensor")));
+  if (p.get_float("whitebalance") != 0.f) p.warn_param("whitebalance", "white balancing is not supported; ignored");
+}
+
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
@@ -110,7 +124,8 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
-  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  warn_ignored_film_params(p);
+  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");
     f.buckets.lambda_min = p.get_float("lambdamin");
@@ -132,7 +147,8 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
 
 class Builder {
  public:
-  Builder(const SceneDescription& desc, RenderSetup& setup) : desc_(desc), setup_(setup) {}
+  Builder(const SceneDescription& desc, RenderSetup& setup, bool keep_going)
+      : desc_(desc), setup_(setup), keep_going_(keep_going) {}
 
   // Every texture, shape, instance and light is tried and its errors collected; textures
   // first, and a failed texture stops the build there, since the materials naming it would
@@ -140,8 +156,10 @@ class Builder {
   void build_world() {
     setup_.textures = std::make_unique<TextureStore>();
     setup_.scene = std::make_unique<Scene>();
-    for (const TextureEntity& t : desc_.textures) attempt([&] { build_texture(t); });
-    errors_.throw_if_any();
+    for (const TextureEntity& t : desc_.textures)
+      if (!attempt([&] { build_texture(t); }) && keep_going_) add_stand_in(t);
+    if (!keep_going_) errors_.throw_if_any();
+    if (keep_going_) check_every_material();
     for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
     std::set<std::string> used;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
@@ -169,12 +187,25 @@ class Builder {
 
  private:
   template <typename F>
-  void attempt(F&& f) {
+  bool attempt(F&& f) {
     try {
       f();
+      return true;
     } catch (const SceneError& e) {
       errors_.add_all(e.diagnostics());
+      return false;
     }
+  }
+
+  // A texture that failed (its error is recorded) as a constant, so that the materials naming
+  // it are checked for their own errors rather than repeating this one.
+  void add_stand_in(const TextureEntity& t) {
+    attempt([&] {
+      if (t.value_type == "float")
+        setup_.textures->add_float(t.texture_name, std::make_unique<ConstantFloatTexture>(0.5f), t.loc);
+      else
+        setup_.textures->add_spectrum(t.texture_name, std::make_unique<ConstantSpectrumTexture>(RGB(0.5f)), t.loc);
+    });
   }
 
   void add_light(const TransformedEntity& l) {
@@ -213,7 +244,10 @@ class Builder {
     auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
     MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir};
-    auto m = reg_.materials.at(e->name, e->loc)(ctx);
+    // pbrt-v4 reads `Material ""` and "none" (deprecated) as "interface": no surface, only the
+    // boundary of a medium.
+    const std::string& name = e->name.empty() || e->name == "none" ? std::string("interface") : e->name;
+    auto m = reg_.materials.at(name, e->loc)(ctx);
     const Material* raw = m ? setup_.scene->own(std::move(m)) : nullptr;
     materials_[key] = raw;
     return raw;
@@ -243,14 +277,31 @@ class Builder {
     return prims;
   }
 
+  // A render makes a material when a shape first uses it; a check makes them all, as pbrt-v4
+  // does, so that one no shape uses (or whose shapes are in a missing file) is checked too.
+  void check_every_material() {
+    for (size_t i = 1; i < desc_.materials.size(); ++i)  // 0: the implicit default
+      attempt([&] { material(MaterialRef{int(i), ""}, desc_.materials[i].loc); });
+    for (const auto& [name, e] : desc_.named_materials) attempt([&] { material(MaterialRef{-1, name}, e.loc); });
+  }
+
+  // With keep_going the material is made first on its own, so that its errors are reported
+  // even when the shape's own (a missing mesh) stop the shape.
+  void check_material_first(const ShapeEntity& s) {
+    if (keep_going_) attempt([&] { material(s.material, s.loc); });
+  }
+
   void add_shape(const ShapeEntity& s) {
+    check_material_first(s);
     for (auto& prim : make_primitives(s, true)) setup_.scene->add_primitive(std::move(prim));
   }
 
   void build_instance(const InstanceDefinition& def) {
     std::vector<Primitive> prims;
-    for (const ShapeEntity& s : def.shapes)
+    for (const ShapeEntity& s : def.shapes) {
+      check_material_first(s);
       for (auto& prim : make_primitives(s, false)) prims.push_back(std::move(prim));
+    }
     setup_.scene->define_instance(def.name, std::move(prims));
   }
 
@@ -274,6 +325,7 @@ class Builder {
 
   const SceneDescription& desc_;
   RenderSetup& setup_;
+  const bool keep_going_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
@@ -342,7 +394,11 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
       return false;
     }
   };
-  FilmSettings f = read_film(desc.film, o);
+  FilmSettings f;
+  if (!attempt([&] { f = read_film(desc.film, o); })) {
+    if (!o.keep_going) errors.throw_if_any();
+    f.bounds = crop_to_pixels(f.resolution, Vec4(0.f, 1.f, 0.f, 1.f));
+  }
   check_memory(f, o);
   setup.output_filename = f.filename;
   attempt([&] { setup.camera = make_camera(desc, o, f.resolution); });
@@ -358,11 +414,16 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets);
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
-  if (attempt([&] { Builder(desc, setup).build_world(); }))
+  const SceneEntity& in = desc.integrator;
+  if (attempt([&] { Builder(desc, setup, o.keep_going).build_world(); }))
     attempt([&] {
-      const SceneEntity& in = desc.integrator;
       IntegratorContext ictx{in.params, *setup.scene};
       setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
+    });
+  else if (o.keep_going)  // no scene to make it for: its name and parameters are still checked
+    attempt([&] {
+      reg.integrators.at(in.name, in.loc);
+      PluginParams(in.params, *reg.integrators.find(in.name)->spec, in.name);
     });
   errors.throw_if_any();
   setup.description = fmt::format("{}\n{}\n{}\n{}", setup.camera->to_string(), setup.sampler->to_string(),

@@ -25,6 +25,10 @@ struct RenderOverrides {
   std::optional<Vec4> crop;           // --crop
   uint64_t max_memory_bytes = 0;      // refuse scenes predicted to need more (0: no limit)
   std::string output;                 // --output, replacing the Film's filename ("" when not given)
+  // `eyetrace check`: build as far as possible to find every error. A film that fails is
+  // replaced by the default one and a texture that fails by a constant stand-in, so that the
+  // shapes and materials after them are still built and checked; the errors are thrown at the end.
+  bool keep_going = false;
 };
 
 struct RenderSetup {

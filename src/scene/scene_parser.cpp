@@ -122,6 +122,9 @@ void SceneParser::note_option(const SourceLoc& loc, const char* directive) {
 }
 
 void SceneParser::apply(const SourceLoc& loc, const char* directive, const Transform& t, bool replace) {
+  if (replace) state_.singular_at.reset();
+  // Still singular after anything but a replacement (a product's rank cannot grow).
+  if (state_.singular_at) return;
   for (int i = 0; i < 2; ++i) {
     if (!state_.active[i]) continue;
     Transform r = replace ? t : state_.ctm[i] * t;
@@ -138,6 +141,10 @@ void SceneParser::apply(const SourceLoc& loc, const char* directive, const Trans
 }
 
 Transform SceneParser::current_transform(const SourceLoc& loc, const char* directive) const {
+  if (state_.singular_at)
+    fail(loc,
+         "{}: the current transform is singular (made so at {}); only shapes may stand under it (they are dropped)",
+         directive, state_.singular_at->to_string());
   if (!(state_.ctm[0] == state_.ctm[1]))
     warn(loc, fmt::format("{}: motion blur is not supported; the start-time transform is used", directive));
   return state_.ctm[0];
@@ -183,7 +190,7 @@ void SceneParser::transform_end(Tokenizer&, const SourceLoc& loc) { pop_block(lo
 void SceneParser::attribute(Tokenizer& tok, const SourceLoc& loc) {
   SourceLoc target_loc;
   std::string target = read_name(tok, "Attribute", "target", &target_loc);
-  ParameterList params = read_parameter_list(tok, loc);
+  ParameterList params = read_parameter_list(tok, loc, desc_.search_dir);
   std::vector<Param>* list = target == "shape"      ? &state_.shape_attributes
                              : target == "light"    ? &state_.light_attributes
                              : target == "material" ? &state_.material_attributes
@@ -247,7 +254,12 @@ void SceneParser::matrix_directive(Tokenizer& tok, const SourceLoc& loc, const c
   try {
     t = Transform(glm::make_mat4(v.data()));
   } catch (const std::domain_error&) {
-    fail(loc, "{}: the matrix is singular or not finite", directive);
+    // Exporters write an all-zero row for an object scaled to nothing. What it maps is flat (a
+    // plane, a line, a point) and has no normal: pbrt-v4 aborts on the NaN normal when a ray
+    // hits it. Here the shapes under it are dropped, with a warning at each (shape()).
+    if (!replace && state_.singular_at) return;
+    state_.singular_at = loc;
+    return;
   }
   apply(loc, directive, t, replace);
 }
@@ -263,6 +275,7 @@ void SceneParser::coord_sys_transform(Tokenizer& tok, const SourceLoc& loc) {
     fail(loc, "CoordSysTransform: no coordinate system named \"{}\"{}", name,
          hint_suffix(name, keys_of(coordinate_systems_)));
   state_.ctm = it->second;  // both times, as pbrt-v4 does
+  state_.singular_at.reset();
 }
 
 void SceneParser::reverse_orientation(Tokenizer&, const SourceLoc& loc) {
@@ -331,7 +344,7 @@ void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
   Token decl = tok.next();
   if (decl.kind != TokenKind::String)
     fail(tok.loc(decl), "Option: expected a quoted \"type name\", got {}", decl.describe());
-  Param p = read_parameter(tok, decl);
+  Param p = read_parameter(tok, decl, desc_.search_dir);
   SceneEntity e{p.name, ParameterList(loc), loc};
   e.params.add(std::move(p));
   desc_.options.push_back(std::move(e));
@@ -341,6 +354,7 @@ void SceneParser::world_begin(Tokenizer&, const SourceLoc& loc) {
   require_options(loc, "WorldBegin");
   in_world_ = true;
   state_.ctm = {Transform(), Transform()};
+  state_.singular_at.reset();
   state_.active = {true, true};
   coordinate_systems_["world"] = state_.ctm;
 }
@@ -388,7 +402,7 @@ void SceneParser::material(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::make_named_material(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "MakeNamedMaterial");
   std::string name = read_name(tok, "MakeNamedMaterial", "material name");
-  ParameterList params = with_attributes(read_parameter_list(tok, loc), state_.material_attributes);
+  ParameterList params = with_attributes(read_parameter_list(tok, loc, desc_.search_dir), state_.material_attributes);
   if (auto it = named_material_locs_.find(name); it != named_material_locs_.end())
     fail(loc, "MakeNamedMaterial: material \"{}\" is already defined at {}", name, it->second.to_string());
   if (!params.has("type"))
@@ -414,7 +428,7 @@ void SceneParser::texture(Tokenizer& tok, const SourceLoc& loc) {
   t.texture_name = read_name(tok, "Texture", "texture name");
   t.value_type = read_name(tok, "Texture", "value type", &type_loc);
   t.name = read_name(tok, "Texture", "texture class");
-  t.params = with_attributes(read_parameter_list(tok, loc), state_.texture_attributes);
+  t.params = with_attributes(read_parameter_list(tok, loc, desc_.search_dir), state_.texture_attributes);
   t.loc = loc;
   if (t.value_type != "float" && t.value_type != "spectrum")
     fail(type_loc, "Texture \"{}\": value type \"{}\" must be \"float\" or \"spectrum\"{}", t.texture_name,
@@ -432,6 +446,12 @@ void SceneParser::shape(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "Shape");
   ShapeEntity s;
   static_cast<SceneEntity&>(s) = read_entity(tok, loc, "Shape");
+  if (state_.singular_at) {
+    warn(loc, fmt::format("Shape \"{}\" dropped: the transform made singular at {} maps it to something flat, "
+                          "without a normal",
+                          s.name, state_.singular_at->to_string()));
+    return;
+  }
   s.params = with_attributes(std::move(s.params), state_.shape_attributes);
   s.world_from_object = current_transform(loc, "Shape");
   s.reverse_orientation = state_.reverse_orientation;
@@ -477,12 +497,18 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
   if (!desc_.instances.count(name))
     fail(loc, "ObjectInstance: no object named \"{}\" has been defined with ObjectBegin{}", name,
          hint_suffix(name, keys_of(desc_.instances)));
+  if (state_.singular_at) {
+    warn(loc, fmt::format("ObjectInstance \"{}\" dropped: the transform made singular at {} maps it to something "
+                          "flat, without a normal",
+                          name, state_.singular_at->to_string()));
+    return;
+  }
   desc_.instance_uses.push_back(InstanceUse{name, loc, current_transform(loc, "ObjectInstance")});
 }
 
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "MakeNamedMedium", "medium name");
-  read_parameter_list(tok, loc);
+  read_parameter_list(tok, loc, desc_.search_dir);
   warn(loc, fmt::format("participating media are not supported; MakeNamedMedium \"{}\" ignored", name));
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/parser.h"
 #include "scene/scene_description.h"
 #include "scene/tokenizer.h"
 
@@ -27,6 +28,9 @@ struct GraphicsState {
   std::array<bool, 2> active{true, true};
   bool reverse_orientation = false;
   MaterialRef material{0, ""};  // index 0 is the implicit default material
+  // Where a Transform or ConcatTransform made the CTM singular (ctm then keeps its value from
+  // before): the shapes under it are dropped with a warning, anything else there is an error.
+  std::optional<SourceLoc> singular_at;
   int area_light = -1;
   std::vector<Param> shape_attributes, light_attributes, material_attributes, texture_attributes;
 };
@@ -36,11 +40,6 @@ struct OpenBlock {
   std::string directive;
   SourceLoc loc;
   GraphicsState saved;
-};
-
-struct OpenFile {
-  std::string canonical;  // for recursion checks
-  fs::path dir;           // Include paths resolve here first
 };
 
 inline std::string hint_suffix(const std::string& word, const std::vector<std::string>& candidates) {
@@ -58,15 +57,17 @@ std::vector<std::string> keys_of(const Map& m) {
 class SceneParser {
  public:
   explicit SceneParser(fs::path search_dir);
-  void parse_file(const fs::path& path, const SourceLoc* included_from);
+  void parse_file(const fs::path& path);
   void parse_text(std::string text, const std::string& filename);
   SceneDescription finish(const std::string& top_file);
+  ParsedScene finish_collecting(const std::string& top_file);
 
  private:
   using Handler = void (SceneParser::*)(Tokenizer&, const SourceLoc&);
   static const std::map<std::string, Handler, std::less<>>& handlers();
 
   void run(Tokenizer& tok);
+  void check_end(const std::string& top_file);
   bool skip_to_directive(Tokenizer& tok);
   [[noreturn]] void unknown_directive(const Token& t, const SourceLoc& loc) const;
 
@@ -84,7 +85,10 @@ class SceneParser {
   Transform current_transform(const SourceLoc& loc, const char* directive) const;
   void push_block(const SourceLoc& loc, const char* directive);
   void pop_block(const SourceLoc& loc, const char* directive, const char* opener);
-  fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive) const;
+  fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive,
+                           const fs::path& dir) const;
+  static std::string read_scene_text(const fs::path& path, const SourceLoc* included_from);
+  static TokenFile token_file(const fs::path& path);
 
   // Directives.
   void include(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Include"); }
@@ -135,7 +139,6 @@ class SceneParser {
   SceneDescription desc_;
   GraphicsState state_;
   std::vector<OpenBlock> blocks_;
-  std::vector<OpenFile> files_;
   std::map<std::string, TransformPair> coordinate_systems_;
   std::map<std::string, SourceLoc> options_seen_;
   std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;

@@ -13,9 +13,11 @@ struct Pairs {
   std::vector<float> lambda, value;
 };
 
+// Spectrum files were read by the parser (scene/spectrum_file.h); one that was not there is
+// left as its path, and reported here, where a plugin reads it.
 [[noreturn]] void unknown_name(const Param& p, const std::string& name) {
   if (name.find('.') != std::string::npos || name.find('/') != std::string::npos)
-    fail(p.loc, "parameter \"{}\": spectrum files are not supported: {}", p.name, name);
+    throw_missing_file(p.loc, p.name, fmt::format("parameter \"{}\": spectrum file \"{}\" not found", p.name, name));
   std::vector<std::string> names = named_spectrum_names();
   std::string list, hint = closest_match(name, names);
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace eyetrace {
 
@@ -70,15 +71,45 @@ std::string Token::describe() const {
   return "end of file";
 }
 
-Tokenizer::Tokenizer(std::string text, std::string filename) : text_(std::move(text)), filename_(std::move(filename)) {
-  auto byte = [&](size_t i) { return i < text_.size() ? (unsigned char)text_[i] : 0u; };
+// One file's text and the reading position in it.
+struct Tokenizer::Source {
+  std::string text;
+  TokenFile file;
+  size_t pos = 0;
+  size_t line_start = 0;
+  int line = 1;
+  int column_of(size_t p) const { return int(p - line_start) + 1; }
+};
+
+Tokenizer::Tokenizer(std::string text, std::string filename)
+    : Tokenizer(std::move(text), TokenFile{std::move(filename), "", ""}) {}
+
+Tokenizer::Tokenizer(std::string text, TokenFile file) { include(std::move(text), std::move(file)); }
+
+Tokenizer::~Tokenizer() = default;
+
+void Tokenizer::include(std::string text, TokenFile file) {
+  if (peeked_) throw std::logic_error("Tokenizer::include with a token peeked");
+  auto s = std::make_unique<Source>(Source{std::move(text), std::move(file)});
+  auto byte = [&](size_t i) { return i < s->text.size() ? (unsigned char)s->text[i] : 0u; };
   if ((byte(0) == 0xfe && byte(1) == 0xff) || (byte(0) == 0xff && byte(1) == 0xfe))
-    throw_error(SourceLoc{filename_, 1, 1}, "file is UTF-16 encoded; save it as UTF-8 or ASCII");
-  if (byte(0) == 0xef && byte(1) == 0xbb && byte(2) == 0xbf) pos_ = line_start_ = 3;  // UTF-8 BOM
+    throw_error(SourceLoc{s->file.name, 1, 1}, "file is UTF-16 encoded; save it as UTF-8 or ASCII");
+  if (byte(0) == 0xef && byte(1) == 0xbb && byte(2) == 0xbf) s->pos = s->line_start = 3;  // UTF-8 BOM
+  open_.push_back(std::move(s));
 }
 
-void Tokenizer::fail_at(size_t pos, const std::string& message) const {
-  throw_error(SourceLoc{filename_, line_, column_of(pos)}, message);
+void Tokenizer::release_finished() { finished_.clear(); }
+
+const TokenFile& Tokenizer::current_file() const { return open_.back()->file; }
+
+std::vector<const TokenFile*> Tokenizer::open_files() const {
+  std::vector<const TokenFile*> files;
+  for (const auto& s : open_) files.push_back(&s->file);
+  return files;
+}
+
+void Tokenizer::fail_at(const Source& s, size_t pos, const std::string& message) const {
+  throw_error(SourceLoc{s.file.name, s.line, s.column_of(pos)}, message);
 }
 
 const Token& Tokenizer::peek() {
@@ -93,66 +124,82 @@ Token Tokenizer::next() {
   return t;
 }
 
+// An included file that has ended gives way to the file that included it; only the end of the
+// outermost text is the end.
 Token Tokenizer::scan() {
-  const size_t n = text_.size();
-  while (pos_ < n) {
-    char c = text_[pos_];
+  for (;;) {
+    Token t = scan_in(*open_.back());
+    if (t.kind != TokenKind::End || open_.size() == 1) return t;
+    finished_.push_back(std::move(open_.back()));
+    open_.pop_back();
+  }
+}
+
+Token Tokenizer::scan_in(Source& s) {
+  const std::string& text = s.text;
+  const size_t n = text.size();
+  size_t& pos = s.pos;
+  while (pos < n) {
+    char c = text[pos];
     if (c == '\n') {
-      ++pos_;
-      ++line_;
-      line_start_ = pos_;
+      ++pos;
+      ++s.line;
+      s.line_start = pos;
       continue;
     }
     if (is_space(c)) {
-      ++pos_;
+      ++pos;
       continue;
     }
     if (c == '#') {
-      while (pos_ < n && text_[pos_] != '\n') ++pos_;
+      while (pos < n && text[pos] != '\n') ++pos;
       continue;
     }
-    int column = column_of(pos_);
-    if (c == '"') return scan_string(line_, column);
+    int column = s.column_of(pos);
+    if (c == '"') return scan_string(s, s.line, column);
     if (c == '[' || c == ']') {
-      ++pos_;
+      ++pos;
       TokenKind kind = c == '[' ? TokenKind::OpenBracket : TokenKind::CloseBracket;
-      return Token{kind, std::string_view(text_).substr(pos_ - 1, 1), line_, column};
+      return Token{kind, std::string_view(text).substr(pos - 1, 1), s.line, column, false, &s.file};
     }
-    size_t start = pos_;
-    while (pos_ < n && !ends_word(text_[pos_])) ++pos_;
-    return Token{TokenKind::Word, std::string_view(text_).substr(start, pos_ - start), line_, column};
+    size_t start = pos;
+    while (pos < n && !ends_word(text[pos])) ++pos;
+    return Token{TokenKind::Word, std::string_view(text).substr(start, pos - start), s.line, column, false, &s.file};
   }
-  return Token{TokenKind::End, {}, line_, column_of(n)};
+  return Token{TokenKind::End, {}, s.line, s.column_of(n), false, &s.file};
 }
 
-Token Tokenizer::scan_string(int line, int column) {
-  const size_t n = text_.size();
-  const size_t start = ++pos_;
+Token Tokenizer::scan_string(Source& s, int line, int column) {
+  const std::string& text = s.text;
+  const size_t n = text.size();
+  size_t& pos = s.pos;
+  const size_t start = ++pos;
   auto unterminated = [&](const char* why) {
-    std::string_view so_far = std::string_view(text_).substr(start, pos_ - start);
-    throw_error(SourceLoc{filename_, line, column},
+    std::string_view so_far = std::string_view(text).substr(start, pos - start);
+    throw_error(SourceLoc{s.file.name, line, column},
                 fmt::format("unterminated string \"{}\": {}", excerpt(so_far), why));
   };
   bool escapes = false;
   while (true) {
-    if (pos_ >= n) unterminated("end of file before the closing quote");
-    char c = text_[pos_];
+    if (pos >= n) unterminated("end of file before the closing quote");
+    char c = text[pos];
     if (c == '"') break;
     if (c == '\n') unterminated("end of line before the closing quote");
     if (c == '\\') {
-      if (pos_ + 1 >= n) unterminated("end of file before the closing quote");
-      char e = text_[pos_ + 1];
+      if (pos + 1 >= n) unterminated("end of file before the closing quote");
+      char e = text[pos + 1];
       if (!is_known_escape(e))
-        fail_at(pos_, e == '\n' ? std::string("unterminated string: backslash at the end of a line")
-                                : fmt::format("unknown escape sequence \"\\{}\" in string", e));
+        fail_at(s, pos,
+                e == '\n' ? std::string("unterminated string: backslash at the end of a line")
+                          : fmt::format("unknown escape sequence \"\\{}\" in string", e));
       escapes = true;
-      pos_ += 2;
+      pos += 2;
       continue;
     }
-    ++pos_;
+    ++pos;
   }
-  Token t{TokenKind::String, std::string_view(text_).substr(start, pos_ - start), line, column, escapes};
-  ++pos_;  // closing quote
+  Token t{TokenKind::String, std::string_view(text).substr(start, pos - start), line, column, escapes, &s.file};
+  ++pos;  // closing quote
   return t;
 }
 

@@ -21,7 +21,7 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
     params.fail("filename", fmt::format("\"{}\": compressed PLY is not supported, gunzip it", path));
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    params.fail("filename", fmt::format("cannot open \"{}\": no such file", path));
+    params.fail_missing_file("filename", fmt::format("cannot open \"{}\": no such file", path));
   MeshData mesh;
   try {
     mesh = read_ply_file(path);

@@ -132,7 +132,8 @@ ImageLookup open_image(const TextureContext& ctx) {
   l.ts = static_cast<TextureSystem*>(ctx.textures.texture_system());
   OIIO::ustring upath(path);
   OIIO::ImageSpec spec;
-  if (!std::filesystem::is_regular_file(path)) p.fail("filename", fmt::format("image file \"{}\" not found", path));
+  if (!std::filesystem::is_regular_file(path))
+    p.fail_missing_file("filename", fmt::format("image file \"{}\" not found", path));
   if (!l.ts->get_imagespec(upath, 0, spec)) {
     std::string why = l.ts->geterror();
     p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));

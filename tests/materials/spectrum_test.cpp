@@ -160,17 +160,15 @@ TEST(SpectrumParam, EveryNamedSpectrumConverts) {
   for (const auto& name : named_spectrum_names()) {
     RGB c = spectrum_param_to_rgb(spectrum_param({}, {name}));
     EXPECT_TRUE(is_finite(c)) << name;
-    EXPECT_GT(max_component(c), 0.f) << name;
+    // MgO is a dielectric: pbrt-v4's k table for it is 0 above 364 nm (1e-6 below).
+    if (name == "metal-MgO-k")
+      EXPECT_EQ(max_component(c), 0.f) << name;
+    else
+      EXPECT_GT(max_component(c), 0.f) << name;
   }
   for (const char* name : {"metal-Ag-eta", "metal-Ag-k", "metal-Al-eta", "metal-Al-k", "metal-Au-eta", "metal-Au-k",
                            "metal-Cu-eta", "metal-Cu-k", "glass-BK7", "stdillum-D65"})
     EXPECT_NE(find_named_spectrum(name), nullptr) << name;
-}
-
-TEST(SpectrumParam, SpectrumFilesAreRejectedWithLocation) {
-  std::string e = error_of(spectrum_param({}, {"spds/copper.spd"}));
-  EXPECT_NE(e.find("scene.pbrt:3:7"), std::string::npos) << e;
-  EXPECT_NE(e.find("spectrum files are not supported: spds/copper.spd"), std::string::npos) << e;
 }
 
 TEST(SpectrumParam, UnknownNamesListKnownOnes) {

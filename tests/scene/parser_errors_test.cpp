@@ -215,9 +215,10 @@ TEST(ParserErrors, TransformsMustStayFiniteAndInvertible) {
       {"LookAt along up",
        "LookAt 0 0 0  0 2 0  0 1 0\n",
        {"test.pbrt:1:1: error: LookAt: up vector and viewing direction are parallel"}},
-      {"singular matrix",
-       "Transform [ 1 0 0 0  0 1 0 0  0 0 0 0  0 0 0 1 ]\n",
-       {"test.pbrt:1:1: error: Transform: the matrix is singular or not finite"}},
+      {"light under a singular matrix (shapes are dropped, parser_test.cpp)",
+       "WorldBegin\nTransform [ 1 0 0 0  0 1 0 0  0 0 0 0  0 0 0 1 ]\nLightSource \"point\"\n",
+       {"test.pbrt:3:1: error: LightSource: the current transform is singular (made so at test.pbrt:2:1); only "
+        "shapes may stand under it (they are dropped)"}},
       {"product overflows",
        "Scale 1e10 1 1\nScale 1e10 1 1\n",
        {"test.pbrt:2:1: error: Scale makes the current transform overflow: it scales lengths by up to 1e+20"}},

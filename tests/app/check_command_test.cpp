@@ -1,0 +1,173 @@
+// `eyetrace check`: every error and warning of a scene, with the place written in the scene
+// text, missing files marked as such, and the exit status that tells the three outcomes apart
+// (0 nothing to report, 1 errors, 3 warnings only).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "../support/eyetrace_process.h"
+#include "../support/temp_files.h"
+
+namespace eyetrace {
+namespace {
+
+using test::run_eyetrace;
+using test::RunResult;
+using test::TempDir;
+
+std::string write(const TempDir& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir.file(name)) << text;
+  return dir.file(name);
+}
+
+bool has_line(const std::string& output, const std::string& line) {
+  return ("\n" + output).find("\n" + line + "\n") != std::string::npos;
+}
+
+TEST(CheckCommand, CleanSceneExitsZero) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "ok.pbrt", "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, scene + ": 0 errors (0 missing files), 0 warnings: ok\n");
+}
+
+TEST(CheckCommand, WarningsOnlyExitThree) {
+  TempDir dir("eyetrace-check");
+  const std::string scene =
+      write(dir, "w.pbrt", "WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_TRUE(has_line(r.output, scene + ":2:1: warning: participating media are not supported; MakeNamedMedium "
+                                         "\"fog\" ignored"))
+      << r.output;
+}
+
+// Errors of every stage in one run, in the order of the text: a parameter the Film does not
+// know, a missing Include (the parse goes on), a texture and a material eyetrace does not
+// have, a missing PLY mesh, and an unused parameter of a material that names the failed
+// texture (checked because the texture gets a stand-in), with the warning in between.
+TEST(CheckCommand, ListsEveryErrorAndWarningWithItsPlace) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "s.pbrt",
+                                  "Film \"rgb\" \"float bogus\" 2\n"
+                                  "Include \"missing.pbrt\"\n"
+                                  "WorldBegin\n"
+                                  "Texture \"t\" \"spectrum\" \"nosuchtexture\"\n"
+                                  "Material \"nosuchmaterial\"\n"
+                                  "Shape \"sphere\"\n"
+                                  "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                                  "Shape \"plymesh\" \"string filename\" \"geo/a.ply\"\n"
+                                  "Material \"diffuse\" \"texture reflectance\" \"t\" \"float bumpiness\" 1\n"
+                                  "Shape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  const std::vector<std::string> expected = {
+      scene + ":1:12: error: Film \"rgb\": unused parameter \"float bogus\"",
+      scene + ":2:1: error: Include \"missing.pbrt\": file not found",
+      scene + ":4:1: error: unsupported spectrum texture \"nosuchtexture\"",
+      scene + ":5:1: error: unsupported material \"nosuchmaterial\"",
+      scene + ":7:1: warning: participating media are not supported",
+      scene + ":8:17: error: parameter \"filename\": cannot open",
+      scene + ":9:46: error: Material \"diffuse\": unused parameter \"float bumpiness\"",
+      scene + ": 6 errors (2 missing files), 1 warning: it does not render",
+  };
+  size_t at = 0;
+  for (const std::string& e : expected) {
+    size_t found = r.output.find(e, at);
+    ASSERT_NE(found, std::string::npos) << "missing or out of order: " << e << "\n" << r.output;
+    at = found + e.size();
+  }
+}
+
+// More than the 20 errors a render lists: check lists them all.
+TEST(CheckCommand, ListsMoreThanTwentyErrors) {
+  TempDir dir("eyetrace-check");
+  std::string text = "WorldBegin\n";
+  for (int i = 0; i < 30; ++i) text += "Shape \"nosuchshape" + std::to_string(i) + "\"\n";
+  const std::string scene = write(dir, "many.pbrt", text);
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":31:1: error: unsupported shape \"nosuchshape29\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": 30 errors (0 missing files), 0 warnings"), std::string::npos) << r.output;
+}
+
+TEST(CheckCommand, JsonMarksMissingFiles) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "m.pbrt",
+                                  "WorldBegin\nShape \"plymesh\" \"string filename\" \"absent.ply\"\n"
+                                  "Shape \"nosuchshape\"\n");
+  const RunResult r = run_eyetrace("check --json " + scene, false);
+  EXPECT_EQ(r.status, 1) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  ASSERT_EQ(j["diagnostics"].size(), 2u) << r.output;
+  EXPECT_EQ(j["diagnostics"][0]["line"], 2);
+  EXPECT_EQ(j["diagnostics"][0]["missing_file"], true);
+  EXPECT_EQ(j["diagnostics"][0]["parameter"], "filename");
+  EXPECT_EQ(j["diagnostics"][1]["line"], 3);
+  EXPECT_EQ(j["diagnostics"][1]["missing_file"], false);
+}
+
+// Film parameters pbrt-v4 would change the image with, and eyetrace ignores, are warnings.
+TEST(CheckCommand, IgnoredFilmParametersAreWarnings) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "film.pbrt",
+                                  "Film \"rgb\" \"string sensor\" \"nikon_d850\" \"float whitebalance\" 5000\n"
+                                  "  \"float maxcomponentvalue\" 20 \"bool savefp16\" false\n"
+                                  "WorldBegin\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find(scene + ":1:12: warning: parameter \"sensor\": sensor \"nikon_d850\" is not supported"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(scene + ":1:41: warning: parameter \"whitebalance\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:3: warning: parameter \"maxcomponentvalue\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": 0 errors (0 missing files), 3 warnings"), std::string::npos) << r.output;
+}
+
+// A shape whose mesh is missing still has its material checked.
+TEST(CheckCommand, MaterialOfAShapeWithAMissingMeshIsChecked) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "mat.pbrt",
+                                  "WorldBegin\nMaterial \"nosuchmaterial\"\n"
+                                  "Shape \"plymesh\" \"string filename\" \"absent.ply\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:1: error: unsupported material \"nosuchmaterial\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(": 2 errors (1 missing file), 0 warnings"), std::string::npos) << r.output;
+}
+
+// Every material is made, as pbrt-v4 does, even one no shape uses (here its shapes would be
+// in a file that is missing); a missing spectrum file does not hide the material's type.
+TEST(CheckCommand, EveryMaterialIsChecked) {
+  TempDir dir("eyetrace-check");
+  const std::string scene =
+      write(dir, "all.pbrt",
+            "WorldBegin\nMaterial \"nosuchmaterial\" \"spectrum eta\" \"spds/none.spd\"\n"
+            "MakeNamedMaterial \"m\" \"string type\" \"conductor\" \"spectrum k\" \"spds/k.spd\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:1: error: unsupported material \"nosuchmaterial\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(scene + ":3:49: error: parameter \"k\": spectrum file \"" + dir.file("spds/k.spd") +
+                          "\" not found"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(": 2 errors (1 missing file), 0 warnings"), std::string::npos) << r.output;
+}
+
+// An unterminated string stops the parse: what follows cannot be read, nothing is built.
+TEST(CheckCommand, UnterminatedStringStopsIt) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "u.pbrt", "WorldBegin\nShape \"sphere\nShape \"nosuchshape\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find(scene + ":2:7: error: unterminated string"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("nosuchshape\": "), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace eyetrace

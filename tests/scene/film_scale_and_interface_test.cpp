@@ -1,0 +1,62 @@
+// Two things pbrt-v4-scenes write that today's pbrt-v4 refuses or deprecates: Film
+// "float scale" multiplies the image (as earlier pbrt-v4 did), and `Material ""` is the
+// interface material (no surface: rays pass through). Both are checked against the same
+// render without them (the interface material: with "interface" by name), with the same seed,
+// so the samples are the same ones.
+#include <gtest/gtest.h>
+
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
+
+namespace eyetrace {
+namespace {
+
+Image render(const std::string& film_extra, const std::string& world_extra) {
+  const std::string text =
+      "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
+      "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8 " +
+      film_extra +
+      "\nSampler \"independent\" \"integer pixelsamples\" 4\nWorldBegin\n"
+      "LightSource \"infinite\" \"rgb L\" [0.7 0.5 0.3]\n"
+      "AttributeBegin\nTranslate 0.3 0 0\nMaterial \"diffuse\" \"rgb reflectance\" [0.5 0.6 0.7]\n"
+      "Shape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n" +
+      world_extra;
+  RenderSetup s = build_render_setup(parse_scene_string(text, "t.pbrt", "."), {});
+  RenderCounters c;
+  RenderOptions o;
+  o.threads = 1;
+  s.integrator->render(*s.camera, *s.sampler, *s.film, o, c);
+  return s.film->image();
+}
+
+TEST(FilmScale, MultipliesTheImage) {
+  const Image plain = render("", "");
+  const Image scaled = render("\"float scale\" 2.5", "");
+  ASSERT_EQ(plain.pixels.size(), scaled.pixels.size());
+  double sum = 0;
+  for (size_t i = 0; i < plain.pixels.size(); ++i) {
+    EXPECT_NEAR(scaled.pixels[i], 2.5f * plain.pixels[i], 1e-5f * std::abs(plain.pixels[i]) + 1e-7f) << i;
+    sum += plain.pixels[i];
+  }
+  EXPECT_GT(sum, 0.0);
+}
+
+// A sphere around the lit one, made of the empty material, renders as one made of
+// "interface" (pbrt-v4 reads "" and "none" as "interface"), and not as the default diffuse
+// material would.
+TEST(InterfaceMaterial, EmptyNameIsTheInterfaceMaterial) {
+  const Image plain = render("", "Material \"interface\"\nShape \"sphere\" \"float radius\" 1.2\n");
+  const Image diffuse = render("", "Material \"diffuse\"\nShape \"sphere\" \"float radius\" 1.2\n");
+  double differs = 0;
+  for (size_t i = 0; i < plain.pixels.size(); ++i) differs += std::abs(plain.pixels[i] - diffuse.pixels[i]);
+  EXPECT_GT(differs, 0.1);
+  for (const char* name : {"\"\"", "\"none\""}) {
+    const Image with = render("", std::string("Material ") + name + "\nShape \"sphere\" \"float radius\" 1.2\n");
+    ASSERT_EQ(plain.pixels.size(), with.pixels.size());
+    for (size_t i = 0; i < plain.pixels.size(); ++i)
+      EXPECT_NEAR(with.pixels[i], plain.pixels[i], 1e-5f * std::abs(plain.pixels[i]) + 1e-7f) << name << " " << i;
+  }
+}
+
+}  // namespace
+}  // namespace eyetrace
