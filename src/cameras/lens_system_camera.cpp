@@ -308,6 +308,11 @@ CameraFactory create_named_eye_camera(std::string model) {
 }
 
 std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx) {
+  if (ctx.params.has("diffraction"))
+    ctx.params.fail("diffraction",
+                    "the realistic camera has no wave PSF of its lens (only the eye models' are "
+                    "precomputed); diffraction is a parameter of the eye cameras (Camera \"navarro\", "
+                    "\"eye\", ...)");
   optics::Prescription p = realistic_prescription_from_params(ctx.params, ctx.search_dir);
   LensSystemCamera::Settings s = realistic_view_settings(ctx.params, ctx.resolution);
   return make_camera(ctx, p, s, "lensfile");

@@ -18,7 +18,7 @@
 // pupil's projection, the disc of a perfect eye defocused by 1/z - 1/F dioptres.
 //
 // Grid and interpolation: field nodes every kFieldStep_deg from the axis to the camera's
-// farthest pixel; wavelength nodes every ~25 nm over the visible range for a dispersive eye,
+// farthest pixel; wavelength nodes every 0.25 D of chromatic refraction over 400-830 nm for a dispersive eye,
 // one node for a monochromatic one. Between nodes the node is chosen at random with the
 // linear-interpolation weights (the sampled PSF is the interpolated mixture). Each node's PSF
 // is cropped to the centred square holding kKeptEnergy of its energy and stored as a CDF over
