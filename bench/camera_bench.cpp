@@ -206,8 +206,8 @@ void BM_DiffractionSampleWavePsf(benchmark::State& state) {
   size_t i = 0;
   for (auto _ : state) {
     const double* v = &numbers[i];
-    benchmark::DoNotOptimize(table.sample(6.0 * v[5], 400.0 + 300.0 * v[6], v));
-    i = (i + 7) & ((1 << 16) - 8);
+    benchmark::DoNotOptimize(table.sample(6.0 * v[6], 400.0 + 300.0 * v[7], v));
+    i = (i + 8) & ((1 << 16) - 9);
   }
   state.SetItemsProcessed(state.iterations());
 }

@@ -2,7 +2,7 @@
 // PSF at its retina point and wavelength (wave_psf_table.h says why and what it approximates).
 //
 // Random numbers: the renderer gives a camera sample six dimensions (pixel 2, lens 2, time,
-// wavelength) and restarts the path's stream after them, so the PSF's five numbers are hashed
+// wavelength) and restarts the path's stream after them, so the PSF's six numbers are hashed
 // from those six values. They are then a deterministic function of the sampler's dimensions
 // (same seed, same image at any thread count), independent of the pupil point in practice,
 // though not stratified.
@@ -30,11 +30,12 @@ uint64_t pack(float a, float b) {
   return uint64_t(std::bit_cast<uint32_t>(a)) | uint64_t(std::bit_cast<uint32_t>(b)) << 32;
 }
 
-void diffraction_uniforms(const CameraSample& cs, double u[5]) {
+void diffraction_uniforms(const CameraSample& cs, double u[WavePsfTable::kUniforms]) {
   uint64_t h = mix64(pack(cs.p_film.x, cs.p_film.y) + 0x9e3779b97f4a7c15ull);
   h = mix64(h ^ pack(cs.p_lens.x, cs.p_lens.y));
   h = mix64(h ^ pack(cs.wavelength_u, cs.time));
-  for (int i = 0; i < 5; ++i) u[i] = double(mix64(h + uint64_t(i + 1) * 0x9e3779b97f4a7c15ull) >> 11) * 0x1p-53;
+  for (int i = 0; i < WavePsfTable::kUniforms; ++i)
+    u[i] = double(mix64(h + uint64_t(i + 1) * 0x9e3779b97f4a7c15ull) >> 11) * 0x1p-53;
 }
 
 // Refractions beyond this (D, myopic) focus the eye at a finite distance.
@@ -74,7 +75,7 @@ void LensSystemCamera::build_psf_table(double corner_arc) {
 // pupil point at the point F along that direction from the entrance-pupil centre.
 glm::dvec3 LensSystemCamera::diffracted_direction(const CameraSample& cs, const PendingRay& pending,
                                                   const optics::TraceResult& r, double lambda_nm) const {
-  double u[5];
+  double u[WavePsfTable::kUniforms];
   diffraction_uniforms(cs, u);
   const WavePsfTable::Sample s = psf_table_->sample(pending.arc, lambda_nm, u);
   if (!s.ok) return r.ray.direction;  // beyond the table: the geometric ray

@@ -63,6 +63,32 @@ int crop_half_width(const optics::PsfImage& psf, double fraction) {
   return h;
 }
 
+// Vose's alias method: cell i is kept with probability keep / 65536, else its alias is taken,
+// so that cell j is chosen with probability weights[j] / sum (to the 16-bit rounding of keep,
+// 1.5e-5 of a cell's share). False when the weights sum to 0 or there are more than 65536.
+template <typename Cell>
+bool build_alias_table(const std::vector<double>& weights, Cell* cells) {
+  const size_t n = weights.size();
+  double sum = 0.0;
+  for (double w : weights) sum += w;
+  if (!(sum > 0.0) || n > 65536) return false;
+  std::vector<double> scaled(n);
+  std::vector<uint32_t> small, large;
+  for (size_t i = 0; i < n; ++i) {
+    scaled[i] = weights[i] * double(n) / sum;
+    (scaled[i] < 1.0 ? small : large).push_back(uint32_t(i));
+  }
+  for (size_t i = 0; i < n; ++i) cells[i] = {65535, uint16_t(i)};
+  while (!small.empty() && !large.empty()) {
+    const uint32_t s = small.back(), l = large.back();
+    small.pop_back();
+    cells[s] = {uint16_t(std::lround(scaled[s] * 65536.0 - 0.5)), uint16_t(l)};
+    scaled[l] -= 1.0 - scaled[s];
+    if (scaled[l] < 1.0) large.pop_back(), small.push_back(l);
+  }
+  return true;  // what is left has probability 1 up to rounding: kept
+}
+
 }  // namespace
 
 WavePsfTable::WavePsfTable(const optics::Prescription& prescription, const optics::Prescription& aiming,
@@ -123,30 +149,47 @@ void WavePsfTable::build_node(const optics::Prescription& p, int field, int wave
   node->origin = -h;
   node->sample_x_rad = psf.sample_x_rad;
   node->sample_y_rad = psf.sample_y_rad;
-  node->cdf.resize(size_t(node->size) * size_t(node->size));
-  double sum = 0.0;
-  for (int y = 0; y < node->size; ++y)
-    for (int x = 0; x < node->size; ++x) {
-      sum += std::max(psf.at(c - h + x, c - h + y), 0.0);
-      node->cdf[size_t(y) * size_t(node->size) + size_t(x)] = float(sum);
-    }
-  if (!(sum > 0.0)) return;
-  for (float& v : node->cdf) v = float(v / sum);
-  node->cdf.back() = 1.f;
+  // Blocks of kBlock x kBlock samples over the crop (padded with zeros), their sums, and the
+  // alias tables of both levels.
+  const int nb = node->blocks_across = (node->size + kBlock - 1) / kBlock;
+  const size_t per_block = size_t(kBlock) * kBlock;
+  std::vector<double> block_sums(size_t(nb) * nb, 0.0), weights(per_block);
+  node->blocks.resize(block_sums.size());
+  node->cells.resize(block_sums.size() * per_block);
+  for (int b = 0; b < nb * nb; ++b) {
+    for (int j = 0; j < kBlock; ++j)
+      for (int i = 0; i < kBlock; ++i) {
+        const int x = (b % nb) * kBlock + i, y = (b / nb) * kBlock + j;
+        const double w = x < node->size && y < node->size ? std::max(psf.at(c - h + x, c - h + y), 0.0) : 0.0;
+        weights[size_t(j) * kBlock + size_t(i)] = w;
+        block_sums[size_t(b)] += w;
+      }
+    if (!build_alias_table(weights, &node->cells[size_t(b) * per_block]))
+      for (size_t i = 0; i < per_block; ++i)
+        node->cells[size_t(b) * per_block + i] = {65535, uint16_t(i)};  // never picked
+  }
+  if (!build_alias_table(block_sums, node->blocks.data())) return;
   node->ok = true;
 }
 
-// A sample of the node's PSF by its CDF, then uniform within the sample's cell: (sagittal,
-// tangential) angle, radians. The cell's width (lambda / 4D at the automatic FFT size) widens
-// the PSF by its variance, 1/12 of a cell squared per axis.
-glm::dvec2 WavePsfTable::sample_node(const Node& n, const double u[3]) const {
-  const auto it = std::upper_bound(n.cdf.begin(), n.cdf.end(), float(u[0]));
-  const size_t k = std::min(size_t(it - n.cdf.begin()), n.cdf.size() - 1);
-  const int iy = int(k / size_t(n.size)), ix = int(k % size_t(n.size));
+// A sample of the node's PSF by its alias table, then uniform within the sample's cell:
+// (sagittal, tangential) angle, radians. The cell's width (lambda / 4D at the automatic FFT
+// size) widens the PSF by its variance, 1/12 of a cell squared per axis.
+glm::dvec2 WavePsfTable::sample_node(const Node& n, const double u[kUniforms]) const {
+  auto pick = [](const Node::Cell* table, size_t count, double v) {
+    const double x = v * double(count);
+    const size_t k = std::min(size_t(x), count - 1);
+    return (x - double(k)) * 65536.0 >= table[k].keep + 0.5 ? size_t(table[k].alias) : k;
+  };
+  const size_t per_block = size_t(kBlock) * kBlock;
+  const size_t b = pick(n.blocks.data(), n.blocks.size(), u[0]);
+  const size_t k = pick(&n.cells[b * per_block], per_block, u[5]);
+  const int ix = int(b % size_t(n.blocks_across)) * kBlock + int(k % kBlock);
+  const int iy = int(b / size_t(n.blocks_across)) * kBlock + int(k / kBlock);
   return {(n.origin + ix + u[1] - 0.5) * n.sample_x_rad, (n.origin + iy + u[2] - 0.5) * n.sample_y_rad};
 }
 
-WavePsfTable::Sample WavePsfTable::sample(double arc_mm, double lambda_nm, const double u[5]) const {
+WavePsfTable::Sample WavePsfTable::sample(double arc_mm, double lambda_nm, const double u[kUniforms]) const {
   Sample s;
   size_t j = 0;
   if (lambdas_.size() > 1) {
@@ -175,7 +218,7 @@ WavePsfTable::Sample WavePsfTable::sample(double arc_mm, double lambda_nm, const
 
 std::string WavePsfTable::describe() const {
   size_t floats = 0;
-  for (const Node& n : nodes_) floats += n.cdf.size();
+  for (const Node& n : nodes_) floats += n.cells.size() + n.blocks.size();
   return fmt::format(
       "wave PSF on {} fields (every {} deg) x {} wavelengths, {:.1f} MB{}", field_nodes_, kFieldStep_deg,
       lambdas_.size(), floats * 4e-6,

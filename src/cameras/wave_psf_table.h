@@ -21,8 +21,9 @@
 // farthest pixel; wavelength nodes every 0.25 D of chromatic refraction over 400-830 nm for a dispersive eye,
 // one node for a monochromatic one. Between nodes the node is chosen at random with the
 // linear-interpolation weights (the sampled PSF is the interpolated mixture). Each node's PSF
-// is cropped to the centred square holding kKeptEnergy of its energy and stored as a CDF over
-// its samples; a ray picks a sample by the CDF and a uniform point within it.
+// is cropped to the centred square holding kKeptEnergy of its energy and stored as an alias
+// table over its samples (Walker 1977, Vose 1991); a ray picks a sample by the table and a
+// uniform point within it.
 #pragma once
 
 #include <cstdint>
@@ -39,6 +40,10 @@ namespace eyetrace {
 
 class WavePsfTable {
  public:
+  static constexpr double kFieldStep_deg = 2.5;
+  static constexpr double kKeptEnergy = 0.999;
+  static constexpr int kUniforms = 6;
+  static constexpr int kBlock = 16;
   struct Options {
     double max_field_deg = 30.0;  // farthest chief-ray field angle needed
     bool dispersive = false;      // wavelength nodes over the visible range, else one at the prescription's
@@ -57,8 +62,8 @@ class WavePsfTable {
                const RetinaSurface& retina, double z_plane, double max_arc_mm, const Options& options);
 
   // The chief field angle at retina arc a and wavelength lambda_nm, and an offset drawn from the
-  // PSF there with the uniform numbers u[0..4].
-  Sample sample(double arc_mm, double lambda_nm, const double u[5]) const;
+  // PSF there with the uniform numbers u.
+  Sample sample(double arc_mm, double lambda_nm, const double u[kUniforms]) const;
 
   // Entrance-pupil position (mm from the corneal vertex) and the focus distance (mm, 0 = infinity).
   double entrance_pupil_z_mm() const { return entrance_pupil_z_mm_; }
@@ -70,19 +75,27 @@ class WavePsfTable {
   double geometric_beyond_deg() const { return geometric_beyond_deg_; }
   std::string describe() const;
 
-  static constexpr double kFieldStep_deg = 2.5;
-  static constexpr double kKeptEnergy = 0.999;
-
  private:
   struct Node {
     bool ok = false;
     int size = 0;  // cropped samples across
     double sample_x_rad = 0.0, sample_y_rad = 0.0;
-    int origin = 0;          // offset of the crop's first sample from the PSF centre (negative)
-    std::vector<float> cdf;  // row-major (y, x), normalised to end at 1
+    int origin = 0;  // offset of the crop's first sample from the PSF centre (negative)
+    // Two levels of Walker's alias tables (a pick is one lookup, no search): over blocks of
+    // kBlock x kBlock samples, then over the samples of the chosen block. Entry i is kept with
+    // probability keep / 65536, else its alias is taken. A flat table over the whole crop (up to
+    // 256 x 256 samples, 256 kB) left each ray a cache miss (half the camera's time); most rays
+    // land in the few central blocks, whose 1 kB tables stay in the cache.
+    struct Cell {
+      uint16_t keep;
+      uint16_t alias;
+    };
+    int blocks_across = 0;
+    std::vector<Cell> blocks;  // blocks_across^2, row-major
+    std::vector<Cell> cells;   // kBlock^2 per block, block after block, row-major within
   };
   void build_node(const optics::Prescription& prescription, int field, int wavelength, Node* node) const;
-  glm::dvec2 sample_node(const Node& n, const double u[3]) const;
+  glm::dvec2 sample_node(const Node& n, const double u[kUniforms]) const;
 
   std::vector<double> lambdas_;
   std::vector<FieldAngleTable> angles_;  // per wavelength node: retina arc -> chief field angle
