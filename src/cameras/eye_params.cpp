@@ -79,10 +79,11 @@ PluginSpec make_eye_spec(bool with_model) {
                         "scene path by spectral MIS (docs/spectral.md)."),
           param::boolean("diffraction", false)
               .describe("Diffraction in the image: each ray's outgoing direction is drawn from the eye's wave "
-                        "point-spread function (FFT of the pupil function, precomputed every 2.5° of field and, for a "
-                        "dispersive eye, every 25 nm) instead of the traced direction, so a point source images as "
-                        "the optics' PSF (docs/wavefront.md, \"Diffraction in renders\"). A dispersive eye then keeps "
-                        "each sample's hero wavelength only (no spectral MIS)."),
+                        "point-spread function (the optics' FFT PSF, precomputed every 2.5° of field and, for a "
+                        "dispersive eye, every 0.25 D of chromatic defocus from 400 nm) instead of the traced "
+                        "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
+                        "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
+                        "(no spectral MIS). Eye cameras only."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
