@@ -27,6 +27,7 @@
 #include "optics/chromatic.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
+#include "optics/paraxial.h"
 #include "optics/psf.h"
 #include "optics/wavefront.h"
 #include "render/film.h"
@@ -41,24 +42,36 @@ constexpr double kDistance_m = 100.0;
 constexpr int kSeeds = 4;
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-optics::Prescription navarro(double lambda_nm) {
+optics::Prescription navarro(double lambda_nm, double accommodation_D = 0.0) {
   optics::EyeOptions o;
   o.model = "navarro";
+  o.accommodation_D = accommodation_D;
   o.pupil_diameter_mm = kPupil_mm;
   o.wavelength_nm = lambda_nm;
   return optics::make_eye(o);
 }
 
-// The optics' PSF of the source (field in the camera's x-z plane; by symmetry the optics' y-z).
-optics::Psf truth_psf(double lambda_nm, double field_deg) {
-  const optics::Prescription p = navarro(lambda_nm);
+// One measurement: the eye (wavelength, accommodation) and the source (field; distance from the
+// corneal vertex, where the camera sits).
+struct Case {
+  double lambda_nm = 550.0;
+  double field_deg = 0.0;
+  double accommodation_D = 0.0;
+  double distance_m = kDistance_m;
+};
+
+// The optics' PSF of the source (field in the camera's x-z plane; by symmetry the optics' y-z),
+// at the source's distance from the entrance pupil.
+optics::Psf truth_psf(const Case& c) {
+  const double lambda_nm = c.lambda_nm, field_deg = c.field_deg;
+  const optics::Prescription p = navarro(lambda_nm, c.accommodation_D);
   optics::WavefrontOptions o;
   o.field_deg = field_deg;
-  o.object_distance_m = kDistance_m;
+  o.object_distance_m = c.distance_m - 1e-3 * optics::paraxial_analysis(p).entrance_pupil.position_mm;
   o.clip_at_stop = true;
   o.grid = 128;
   o.zernike_order = 2;
-  const optics::RetinalScale scale = optics::retinal_scale(p, field_deg, kDistance_m, lambda_nm);
+  const optics::RetinalScale scale = optics::retinal_scale(p, field_deg, o.object_distance_m, lambda_nm);
   optics::Psf psf = optics::compute_psf(optics::trace_wavefront(p, o), scale);
   EXPECT_TRUE(psf.warning.empty()) << psf.warning;
   return psf;
@@ -108,8 +121,9 @@ double chief_arc_um(const optics::Prescription& p, double field_deg) {
   return 1e3 * std::abs(optics::trace_chief_ray(p, field_deg).image_coordinate_mm);
 }
 
-View make_view(double lambda_nm, double field_deg, double ee50_um, double ee80_um) {
-  const optics::Prescription p = navarro(lambda_nm);
+View make_view(const Case& c, double ee50_um, double ee80_um) {
+  const double field_deg = c.field_deg;
+  const optics::Prescription p = navarro(c.lambda_nm, c.accommodation_D);
   View v;
   v.pixel_um = ee50_um / 5.0;
   v.half_pixels = int(std::ceil(6.0 * ee80_um / v.pixel_um));
@@ -125,15 +139,16 @@ View make_view(double lambda_nm, double field_deg, double ee50_um, double ee80_u
   const int cx = v.resolution / 2 + int(std::round(v.centre_arc_um / v.pixel_um)), cy = v.resolution / 2;
   v.x0 = cx - v.half_pixels, v.x1 = cx + v.half_pixels, v.y0 = cy - v.half_pixels, v.y1 = cy + v.half_pixels;
   const double um_per_rad = chief_arc_um(p, field_deg + 0.05) - chief_arc_um(p, field_deg);
-  v.disk_m = kDistance_m * (ee50_um / 5.0) / (um_per_rad / (0.05 * kDegree));
+  v.disk_m = c.distance_m * (ee50_um / 5.0) / (um_per_rad / (0.05 * kDegree));
   return v;
 }
 
-std::string scene(const View& v, double lambda_nm, double field_deg, int spp, int seed) {
+std::string scene(const View& v, const Case& c, int spp, int seed) {
+  const double lambda_nm = c.lambda_nm, field_deg = c.field_deg;
   auto fraction = [&](int pixel) { return std::clamp((pixel + 0.5) / v.resolution, 0.0, 1.0); };
-  const double x = kDistance_m * std::sin(field_deg * kDegree), z = kDistance_m * std::cos(field_deg * kDegree);
+  const double x = c.distance_m * std::sin(field_deg * kDegree), z = c.distance_m * std::cos(field_deg * kDegree);
   return fmt::format(R"(LookAt 0 0 0  0 0 1  0 1 0
-Camera "navarro" "float pupildiameter" {} "float wavelength" {} "bool diffraction" true
+Camera "navarro" "float pupildiameter" {} "float wavelength" {} "float accommodation" {} "bool diffraction" true
        "float fov" {:.9g} "string mapping" "retina"
 Film "rgb" "integer xresolution" {} "integer yresolution" {}
      "float cropwindow" [{:.9g} {:.9g} {:.9g} {:.9g}]
@@ -148,7 +163,7 @@ Rotate {:.9g} 0 1 0
 Shape "disk" "float radius" {:.9g}
 AttributeEnd
 )",
-                     kPupil_mm, lambda_nm, v.fov_deg, v.resolution, v.resolution, fraction(v.x0 - 1),
+                     kPupil_mm, lambda_nm, c.accommodation_D, v.fov_deg, v.resolution, v.resolution, fraction(v.x0 - 1),
                      fraction(v.x1 - 1), fraction(v.y0 - 1), fraction(v.y1 - 1), spp, seed, x, z, field_deg, v.disk_m);
 }
 
@@ -209,10 +224,11 @@ std::vector<double> image_radii(const Image& g, double pixel_um, double sag_scal
   return radii;
 }
 
-void check(double lambda_nm, double field_deg) {
-  const optics::Psf psf = truth_psf(lambda_nm, field_deg);
+void check(const Case& c) {
+  const double lambda_nm = c.lambda_nm, field_deg = c.field_deg;
+  const optics::Psf psf = truth_psf(c);
   const double ee50 = psf.ee50_um, ee80 = psf.ee80_um;
-  const View v = make_view(lambda_nm, field_deg, ee50, ee80);
+  const View v = make_view(c, ee50, ee80);
   const double half_um = v.half_pixels * v.pixel_um;
   const double t50 = truth_radius(psf, half_um, 0.5), t80 = truth_radius(psf, half_um, 0.8);
   // Sagittal scale of mapping "retina" at the window's centre (Navarro's retina: radius 12 mm).
@@ -221,7 +237,7 @@ void check(double lambda_nm, double field_deg) {
   std::vector<double> r50, r80;
   Image sum;
   for (int seed = 1; seed <= kSeeds; ++seed) {
-    const Image g = render(scene(v, lambda_nm, field_deg, 256, seed));
+    const Image g = render(scene(v, c, 256, seed));
     const std::vector<double> r = image_radii(g, v.pixel_um, sag, {0.5, 0.8});
     r50.push_back(r[0]), r80.push_back(r[1]);
     if (sum.value.empty())
@@ -237,10 +253,11 @@ void check(double lambda_nm, double field_deg) {
   };
   const std::vector<double> r = image_radii(sum, v.pixel_um, sag, {0.5, 0.8});
   std::printf(
-      "%g nm, %g deg: render EE50 %.3f um (se %.3f), EE80 %.3f (se %.3f); optics in the window %.3f, %.3f "
+      "%g nm, %g deg, %g D at %g m: render EE50 %.3f um (se %.3f), EE80 %.3f (se %.3f); optics in the window %.3f, "
+      "%.3f "
       "(whole PSF %.3f, %.3f; window +-%.1f um, pixel %.3f um, %d px)\n",
-      lambda_nm, field_deg, r[0], spread(r50), r[1], spread(r80), t50, t80, ee50, ee80, half_um, v.pixel_um,
-      2 * v.half_pixels);
+      lambda_nm, field_deg, c.accommodation_D, c.distance_m, r[0], spread(r50), r[1], spread(r80), t50, t80, ee50, ee80,
+      half_um, v.pixel_um, 2 * v.half_pixels);
   EXPECT_NEAR(r[0], t50, 0.1 * t50) << lambda_nm << " nm, " << field_deg << " deg";
   EXPECT_NEAR(r[1], t80, 0.1 * t80) << lambda_nm << " nm, " << field_deg << " deg";
   EXPECT_LT(spread(r50), 0.03 * t50) << "too noisy to tell";
@@ -248,11 +265,23 @@ void check(double lambda_nm, double field_deg) {
 }
 
 TEST(DiffractionRender, PointSourceEncircledEnergyMatchesTheFftPsfOnAxis) {
-  for (double lambda : {450.0, 550.0, 650.0}) check(lambda, 0.0);
+  for (double lambda : {450.0, 550.0, 650.0}) check({lambda, 0.0});
 }
 
 TEST(DiffractionRender, PointSourceEncircledEnergyMatchesTheFftPsfAt20Degrees) {
-  for (double lambda : {450.0, 550.0, 650.0}) check(lambda, 20.0);
+  for (double lambda : {450.0, 550.0, 650.0}) check({lambda, 20.0});
+}
+
+// An eye accommodated by 2 D (Navarro's parameter) is focused at its far point at the reference
+// wavelength, about 0.5 m: the camera computes its PSFs there and aims every ray at that
+// distance from its own pupil point (wave_psf_table.h), so a source there must image as the PSF
+// of that object distance.
+TEST(DiffractionRender, AccommodatedEyeImagesASourceAtItsFocusAsThePsf) {
+  const optics::Prescription reference = navarro(589.3, 2.0);
+  const double far_point_m = -1.0 / optics::paraxial_analysis(reference).refraction_D;
+  ASSERT_GT(far_point_m, 0.3);
+  ASSERT_LT(far_point_m, 1.0);
+  check({550.0, 0.0, 2.0, far_point_m});
 }
 
 }  // namespace
