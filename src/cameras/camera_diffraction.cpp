@@ -63,7 +63,7 @@ void LensSystemCamera::build_psf_table(double corner_arc) {
     psf_table_ = std::make_shared<const WavePsfTable>(prescription_, aiming_prescription(prescription_), retina_,
                                                       z_plane_, pupil_.max_arc_mm(), o);
   } catch (const optics::OpticsError& e) {
-    throw optics::OpticsError("diffraction", e.what());
+    throw optics::OpticsError("diffraction", e.message());
   }
 }
 

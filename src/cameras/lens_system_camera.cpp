@@ -7,6 +7,7 @@
 #include "cameras/chief_ray.h"
 #include "cameras/eye_params.h"
 #include "cameras/perspective_camera.h"
+#include "core/error.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace {
@@ -285,7 +286,15 @@ namespace {
 std::unique_ptr<Camera> make_camera(const CameraContext& ctx, const optics::Prescription& p,
                                     const LensSystemCamera::Settings& s, const char* system_param) {
   try {
-    return std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+    auto camera = std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+    const WavePsfTable* table = camera->psf_table();
+    if (table && table->geometric_nodes() > 0)
+      warn(ctx.params.loc(),
+           fmt::format("diffraction: {} of the {} wave PSFs (field x wavelength) are aberration-dominated or lose "
+                       "their chief ray; rays there keep their traced direction (geometric blur){}",
+                       table->geometric_nodes(), table->nodes(),
+                       table->geometric_nodes() == table->nodes() ? ": diffraction changes nothing here" : ""));
+    return camera;
   } catch (const FieldError& e) {
     ctx.params.fail("fov", e.what());
   } catch (const optics::OpticsError& e) {

@@ -30,9 +30,10 @@ constexpr double kLambdaLo_nm = 400.0, kLambdaHi_nm = 830.0, kLambdaScan_nm = 5.
 constexpr double kNodeRefraction_D = 0.25;
 // The pupil grid starts at the wave report's default and is refined, as the report does
 // (optics/wave_optics_report.cpp), until neighbouring pupil samples differ by at most pi/2 of
-// phase, up to kMaxGrid; a node still coarser than that would wrap its PSF and is left
-// geometric.
-constexpr int kStartGrid = 64, kMaxGrid = 256;
+// phase, up to kMaxGrid. A node that needs more has a PSF wider than about 32 lambda / D in
+// radius, some 60 times the Airy pattern's 50 % radius: its blur is the aberrations', which the
+// traced rays render, so it is left geometric (this also bounds a node to a 512 x 512 FFT).
+constexpr int kStartGrid = 64, kMaxGrid = 128;
 constexpr double kMaxPhaseStep_rad = 0.5 * std::numbers::pi;
 
 optics::PsfImage node_psf(const optics::Prescription& p, optics::WavefrontOptions o) {
@@ -119,14 +120,7 @@ WavePsfTable::WavePsfTable(const optics::Prescription& prescription, const optic
   tbb::parallel_for(size_t(0), nodes_.size(), [&](size_t k) {
     build_node(prescription, int(k % size_t(field_nodes_)), int(k / size_t(field_nodes_)), &nodes_[k]);
   });
-  geometric_beyond_deg_ = -1.0;
-  for (size_t k = 0; k < nodes_.size(); ++k)
-    if (!nodes_[k].ok) {
-      const double field = double(k % size_t(field_nodes_)) * kFieldStep_deg;
-      if (geometric_beyond_deg_ < 0.0 || field < geometric_beyond_deg_) geometric_beyond_deg_ = field;
-    }
-  if (geometric_beyond_deg_ == 0.0)
-    throw optics::OpticsError("diffraction: the wave PSF on the axis cannot be computed for this eye");
+  for (const Node& n : nodes_) geometric_nodes_ += !n.ok;
 }
 
 void WavePsfTable::build_node(const optics::Prescription& p, int field, int wavelength, Node* node) const {
@@ -143,7 +137,7 @@ void WavePsfTable::build_node(const optics::Prescription& p, int field, int wave
   } catch (const optics::OpticsError&) {
     return;  // node->ok stays false: rays there keep their geometric direction
   }
-  if (psf.max_phase_step_rad > std::numbers::pi) return;  // even at kMaxGrid: the PSF would wrap
+  if (psf.max_phase_step_rad > kMaxPhaseStep_rad) return;  // aberration-dominated: geometric
   const int h = crop_half_width(psf, kKeptEnergy), c = psf.fft_size / 2;
   node->size = 2 * h + 1;
   node->origin = -h;
@@ -219,10 +213,8 @@ WavePsfTable::Sample WavePsfTable::sample(double arc_mm, double lambda_nm, const
 std::string WavePsfTable::describe() const {
   size_t floats = 0;
   for (const Node& n : nodes_) floats += n.cells.size() + n.blocks.size();
-  return fmt::format(
-      "wave PSF on {} fields (every {} deg) x {} wavelengths, {:.1f} MB{}", field_nodes_, kFieldStep_deg,
-      lambdas_.size(), floats * 4e-6,
-      geometric_beyond_deg_ >= 0.0 ? fmt::format(", geometric beyond {} deg", geometric_beyond_deg_) : std::string());
+  return fmt::format("wave PSF on {} fields (every {} deg) x {} wavelengths, {:.1f} MB, {} of {} nodes geometric",
+                     field_nodes_, kFieldStep_deg, lambdas_.size(), floats * 4e-6, geometric_nodes_, nodes_.size());
 }
 
 }  // namespace eyetrace

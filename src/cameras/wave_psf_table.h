@@ -57,7 +57,8 @@ class WavePsfTable {
 
   WavePsfTable() = default;
   // Computes every node (in parallel). aiming: the camera's chief-ray prescription (apertures
-  // opened, chief_ray.h). Throws optics::OpticsError when no node can be computed.
+  // opened, chief_ray.h). Throws optics::OpticsError when the eye's paraxial data cannot be
+  // had; nodes that cannot be computed are left geometric (geometric_nodes).
   WavePsfTable(const optics::Prescription& prescription, const optics::Prescription& aiming,
                const RetinaSurface& retina, double z_plane, double max_arc_mm, const Options& options);
 
@@ -70,9 +71,10 @@ class WavePsfTable {
   double focus_distance_mm() const { return focus_distance_mm_; }
   int field_nodes() const { return field_nodes_; }
   int wavelength_nodes() const { return int(lambdas_.size()); }
-  // Field nodes whose PSF could not be computed (chief ray lost, too few rays): rays there keep
-  // their geometric direction. From the first such field outwards.
-  double geometric_beyond_deg() const { return geometric_beyond_deg_; }
+  // Nodes left geometric (rays there keep their traced direction): the chief ray or too many
+  // rays lost, or the wavefront too steep for a 128 pupil grid (aberration-dominated).
+  int geometric_nodes() const { return geometric_nodes_; }
+  int nodes() const { return int(nodes_.size()); }
   std::string describe() const;
 
  private:
@@ -103,7 +105,7 @@ class WavePsfTable {
   int field_nodes_ = 0;
   double entrance_pupil_z_mm_ = 0.0;
   double focus_distance_mm_ = 0.0;
-  double geometric_beyond_deg_ = 0.0;
+  int geometric_nodes_ = 0;
 };
 
 }  // namespace eyetrace

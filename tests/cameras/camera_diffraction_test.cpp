@@ -107,6 +107,28 @@ TEST(CameraDiffraction, DispersiveEyeKeepsTheHeroWavelengthOnly) {
   EXPECT_GT(cam->psf_table()->wavelength_nodes(), 5);
 }
 
+// A 5 mm iris (5.7 mm entrance pupil) at 555 nm: every PSF of the table is wider than a 128
+// pupil grid can hold (phase steps above pi/2), i.e. aberration-dominated, so every node is left
+// geometric and the rays are the traced ones, bit for bit.
+TEST(CameraDiffraction, AberrationDominatedNodesKeepTheTracedRays) {
+  const std::string params = "\"float pupildiameter\" 5 \"float wavelength\" 555 \"float fov\" 30";
+  const auto geometric = eye(params), diffracting = eye(params + " \"bool diffraction\" true");
+  ASSERT_TRUE(diffracting->diffraction());
+  EXPECT_EQ(diffracting->psf_table()->geometric_nodes(), diffracting->psf_table()->nodes());
+  CameraSample cs;
+  cs.p_film = Vec2(40.2f, 21.9f);
+  cs.p_lens = Vec2(0.7f, 0.2f);
+  const auto a = geometric->generate_ray(cs), b = diffracting->generate_ray(cs);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->ray.d, b->ray.d);
+  EXPECT_EQ(a->weight[0], b->weight[0]);
+  // At 2 mm none is.
+  EXPECT_EQ(eye("\"float pupildiameter\" 2 \"float wavelength\" 555 \"float fov\" 30 \"bool diffraction\" true")
+                ->psf_table()
+                ->geometric_nodes(),
+            0);
+}
+
 void expect_error_naming_diffraction(const std::string& camera, const std::string& params) {
   SceneEntity e =
       parse_directive_text("Camera \"" + camera + "\" " + params + " \"bool diffraction\" true", "Camera", "test");
