@@ -272,6 +272,12 @@ TEST(DiffractionRender, PointSourceEncircledEnergyMatchesTheFftPsfAt20Degrees) {
   for (double lambda : {450.0, 550.0, 650.0}) check({lambda, 20.0});
 }
 
+// Between two field nodes of the camera's table (17.5 and 20 degrees) the camera samples their
+// mixture: measured against the PSF of the field between, at 550 and 450 nm.
+TEST(DiffractionRender, PointSourceBetweenFieldNodes) {
+  for (double lambda : {550.0, 450.0}) check({lambda, 18.75});
+}
+
 // An eye accommodated by 2 D (Navarro's parameter) is focused at its far point at the reference
 // wavelength, about 0.5 m: the camera computes its PSFs there and aims every ray at that
 // distance from its own pupil point (wave_psf_table.h), so a source there must image as the PSF
