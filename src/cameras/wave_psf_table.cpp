@@ -22,10 +22,10 @@ namespace {
 // samples (core/sampled_spectrum.h), a node wherever the eye's chromatic refraction has changed
 // by kNodeRefraction_D since the last one (scanned every 5 nm): the PSF changes with
 // wavelength mostly through that defocus, fastest in the blue. 0.25 D is 0.05 waves RMS over
-// a 2 mm pupil at 550 nm. Navarro: 13 nodes. Below 400 nm the relaxed Navarro eye is more
+// a 2 mm pupil at 550 nm. Navarro: 11 nodes. Below 400 nm the relaxed Navarro eye is more
 // than 2 D myopic, its blur geometric, and its wave PSFs would need pupil grids (and FFTs)
-// several times larger: rays there keep their traced direction. Above the last node the PSF
-// of the last is used.
+// several times larger: rays there keep their traced direction. The last node is at 830 nm,
+// the top of the sampled range.
 constexpr double kLambdaLo_nm = 400.0, kLambdaHi_nm = 830.0, kLambdaScan_nm = 5.0;
 constexpr double kNodeRefraction_D = 0.25;
 // The pupil grid starts at the wave report's default and is refined, as the report does
