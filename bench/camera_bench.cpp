@@ -10,6 +10,7 @@
 #include "cameras/lens_system_camera.h"
 #include "cameras/perspective_camera.h"
 #include "filters/box_filter.h"
+#include "optics/airy_kernel.h"
 #include "optics/sequential_trace.h"
 #include "scene/parser.h"
 
@@ -168,6 +169,77 @@ BENCHMARK(BM_Gullstrand);
 
 void BM_LeGrand(benchmark::State& state) { run(state, *eye("legrand", "\"float pupildiameter\" 5 \"float fov\" 60")); }
 BENCHMARK(BM_LeGrand);
+
+// Diffraction (Camera "bool diffraction", cameras/wave_psf_table.h) at a 2 mm pupil, where it
+// matters, against the same eye without it: the ratio is the camera-side cost of drawing each
+// ray's direction from the wave PSF. Dispersive (hero wavelength only, as a render with
+// diffraction does) and monochromatic at 555 nm.
+const char* const k2mm = "\"float pupildiameter\" 2 \"float fov\" 60";
+void BM_Navarro2mmBatched(benchmark::State& state) { run_batched(state, *eye("navarro", k2mm)); }
+BENCHMARK(BM_Navarro2mmBatched);
+
+void BM_Navarro2mmBatchedDiffraction(benchmark::State& state) {
+  run_batched(state, *eye("navarro", std::string(k2mm) + " \"bool diffraction\" true"));
+}
+BENCHMARK(BM_Navarro2mmBatchedDiffraction);
+
+void BM_Navarro2mm555Batched(benchmark::State& state) {
+  run_batched(state, *eye("navarro", std::string(k2mm) + " \"float wavelength\" 555"));
+}
+BENCHMARK(BM_Navarro2mm555Batched);
+
+void BM_Navarro2mm555BatchedDiffraction(benchmark::State& state) {
+  run_batched(state, *eye("navarro", std::string(k2mm) + " \"float wavelength\" 555 \"bool diffraction\" true"));
+}
+BENCHMARK(BM_Navarro2mm555BatchedDiffraction);
+
+// The per-ray work of the two methods compared in docs/wavefront.md ("Diffraction in
+// renders"), alone: (b) a direction from the wave-PSF table (the camera's), (a) an Airy offset
+// (optics/airy_kernel.h: inverted radial CDF, a random azimuth) to add to the traced direction.
+void BM_DiffractionSampleWavePsf(benchmark::State& state) {
+  auto cam = eye("navarro", std::string(k2mm) + " \"bool diffraction\" true");
+  const WavePsfTable& table = *dynamic_cast<const LensSystemCamera&>(*cam).psf_table();
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> numbers(1 << 16);
+  for (double& x : numbers) x = u(rng);
+  size_t i = 0;
+  for (auto _ : state) {
+    const double* v = &numbers[i];
+    benchmark::DoNotOptimize(table.sample(6.0 * v[6], 400.0 + 300.0 * v[7], v));
+    i = (i + 8) & ((1 << 16) - 9);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_DiffractionSampleWavePsf);
+
+void BM_DiffractionSampleAiry(benchmark::State& state) {
+  const optics::AiryKernel airy;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> numbers(1 << 16);
+  for (double& x : numbers) x = u(rng);
+  size_t i = 0;
+  for (auto _ : state) {
+    const double v = airy.sample_radius(numbers[i]) * (400.0 + 300.0 * numbers[i + 2]) * 1e-6 / (3.14159 * 2.27);
+    const double phi = 6.283185307 * numbers[i + 1];
+    benchmark::DoNotOptimize(glm::dvec2(v * std::cos(phi), v * std::sin(phi)));
+    i = (i + 3) & ((1 << 16) - 4);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_DiffractionSampleAiry);
+
+void BM_Navarro2mmDiffractionConstruction(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(eye("navarro", std::string(k2mm) + " \"bool diffraction\" true"));
+}
+BENCHMARK(BM_Navarro2mmDiffractionConstruction)->Unit(benchmark::kMillisecond);
+
+void BM_Navarro2mm555DiffractionConstruction(benchmark::State& state) {
+  for (auto _ : state)
+    benchmark::DoNotOptimize(eye("navarro", std::string(k2mm) + " \"float wavelength\" 555 \"bool diffraction\" true"));
+}
+BENCHMARK(BM_Navarro2mm555DiffractionConstruction)->Unit(benchmark::kMillisecond);
 
 void BM_NavarroConstruction(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));

@@ -1,5 +1,7 @@
 #include "cameras/chief_ray.h"
 
+#include "optics/optics_error.h"
+
 #include <cmath>
 
 namespace eyetrace {
@@ -96,6 +98,16 @@ std::optional<double> aim_chief_ray(const optics::CompiledSystem& system, const 
     ((*gm > 0.0) == a_positive ? a : b) = mid;
   }
   return 0.5 * (a + b);
+}
+
+optics::Prescription aiming_prescription(const optics::Prescription& p) {
+  try {
+    optics::Prescription opened = with_extended_apertures(p);
+    optics::validate(opened);
+    return opened;
+  } catch (const optics::OpticsError&) {
+    return p;
+  }
 }
 
 }  // namespace eyetrace

@@ -19,6 +19,8 @@ namespace eyetrace {
 // goes on past the field where the published (partly arbitrary) semi-diameters start to
 // vignette the chief ray; real rays are still traced with the real apertures.
 optics::Prescription with_extended_apertures(const optics::Prescription& p);
+// with_extended_apertures, or p itself when the opened system does not validate.
+optics::Prescription aiming_prescription(const optics::Prescription& p);
 
 // A ray from `from` through the sampling-plane point (q, y, z_plane), traced in reverse from the
 // surface just in front of the image to `last` (0 = out into object space).

@@ -77,6 +77,13 @@ PluginSpec make_eye_spec(bool with_model) {
                         "sample's hero wavelength is traced through each medium's dispersion law (`eyetrace optics` "
                         "lists them; Gullstrand's and Kooijman's are assumed), and the other wavelengths share its "
                         "scene path by spectral MIS (docs/spectral.md)."),
+          param::boolean("diffraction", false)
+              .describe("Diffraction in the image: each ray's outgoing direction is drawn from the eye's wave "
+                        "point-spread function (the optics' FFT PSF, precomputed every 2.5° of field and, for a "
+                        "dispersive eye, every 0.25 D of chromatic defocus from 400 nm) instead of the traced "
+                        "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
+                        "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
+                        "(no spectral MIS). Eye cameras only."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
@@ -175,6 +182,7 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
   parse_field_mapping(params.get_string("mapping"), &s.mapping);  // the table admits only known names
   s.scene_units_per_mm = 1e-3 / params.get_double("sceneunit");
   s.dispersive = !params.has("wavelength");
+  s.diffraction = params.get_bool("diffraction");
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include "cameras/chief_ray.h"
 #include "cameras/eye_params.h"
 #include "cameras/perspective_camera.h"
+#include "core/error.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace {
@@ -28,17 +29,6 @@ double largest_semi_diameter(const optics::Prescription& p) {
   for (const optics::Surface& s : p.surfaces)
     if (s.limited()) r = std::fmax(r, s.semi_diameter_mm);
   return r > 0.0 ? r : 10.0;
-}
-
-// Falls back to the real apertures if the opened ones do not validate.
-optics::Prescription aiming_prescription(const optics::Prescription& p) {
-  try {
-    optics::Prescription opened = with_extended_apertures(p);
-    optics::validate(opened);
-    return opened;
-  } catch (const optics::OpticsError&) {
-    return p;
-  }
 }
 
 RetinaSurface retina_of(const optics::Prescription& p, const optics::CompiledSystem& system) {
@@ -117,6 +107,7 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   pupil_ = PupilSampler(system_, retina_, z_plane_, std::fmin(corner_arc, max_arc), angles_, po);
   retina_points_ = RetinaPointTable(retina_, pupil_.max_arc_mm());
   compute_normalisation();
+  if (settings_.diffraction) build_psf_table(std::fmin(corner_arc, pupil_.max_arc_mm()));
 }
 
 // The mean weight at the image centre is C times the integral of cos(theta_retina)
@@ -179,13 +170,14 @@ bool LensSystemCamera::start_ray(const CameraSample& cs, PendingRay* pending) co
   // Meridian frame: retina point (p.x, 0, p.y), plane point (q.x, q.y, z_plane).
   const glm::dvec3 d(q.x - p.x, q.y, z_plane_ - p.y);
   pending->d_local = d;
+  pending->meridian = m;
   pending->ray = {{p.x * m.x, p.x * m.y, p.y}, {d.x * m.x - d.y * m.y, d.x * m.y + d.y * m.x, d.z}};
   return true;
 }
 
 // The part after the trace: the weight and the conversion to a world-space ray.
-std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending, const optics::TraceResult& r,
-                                                      float time) const {
+std::optional<CameraRay> LensSystemCamera::finish_ray(const CameraSample& cs, const PendingRay& pending,
+                                                      const optics::TraceResult& r, double lambda_nm) const {
   if (!r.ok()) return std::nullopt;
   // weight = C cos(theta_retina) cos(theta_plane) / d^2 / density, density = 1 / area.
   const glm::dvec3& d_local = pending.d_local;
@@ -197,10 +189,11 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const PendingRay& pending,
   const double weight = normalisation_ * pending.area * cos_retina * cos_plane * (inv_d * inv_d);
 
   const double k = settings_.scene_units_per_mm;
+  const glm::dvec3 dir = psf_table_ ? diffracted_direction(cs, pending, r, lambda_nm) : r.ray.direction;
   const Vec3 o(float(-r.ray.origin.x * k), float(r.ray.origin.y * k), float(-r.ray.origin.z * k));
-  const Vec3 d(float(-r.ray.direction.x), float(r.ray.direction.y), float(-r.ray.direction.z));
+  const Vec3 d(float(-dir.x), float(dir.y), float(-dir.z));
   const float w = static_cast<float>(weight);
-  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, time},
+  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, cs.time},
                    SampledSpectrum(w), w};
 }
 
@@ -212,13 +205,16 @@ optics::Ray LensSystemCamera::back_in(const optics::TraceResult& left) {
 // As generate_rays for one sample (the batch trace equals the scalar one bit for bit), without
 // the batch's arrays: tools and tests call it ray by ray.
 std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, SampledWavelengths& lambda) const {
-  if (dispersive_ && !cs.filter) lambda.terminate_secondary();
+  // Without the pixel's filter, or with diffraction (each wavelength's density of the ray would
+  // be a convolution of its PSF over the pixels), the hero wavelength goes alone: the plain
+  // estimator that spectral MIS only makes less noisy.
+  if (dispersive_ && (!cs.filter || psf_table_)) lambda.terminate_secondary();
   PendingRay pending;
   if (!start_ray(cs, &pending)) return std::nullopt;
   const int first = system_.image_index() - 1;
   const optics::TraceResult hero = dispersive_ ? system_.trace_range(pending.ray, first, 0, double(lambda[0]))
                                                : system_.trace_range(pending.ray, first, 0);
-  std::optional<CameraRay> ray = finish_ray(pending, hero, cs.time);
+  std::optional<CameraRay> ray = finish_ray(cs, pending, hero, double(lambda[0]));
   if (!ray || !dispersive_ || lambda.secondary_terminated()) return ray;
   optics::TraceResult forward[kSpectrumSamples - 1];
   for (int k = 1; k < kSpectrumSamples; ++k)
@@ -247,7 +243,7 @@ void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelen
     size_t live = 0;
     for (size_t j = 0; j < n; ++j) {
       rays[base + j].reset();
-      if (dispersive_ && !samples[base + j].filter) lambdas[base + j].terminate_secondary();
+      if (dispersive_ && (!samples[base + j].filter || psf_table_)) lambdas[base + j].terminate_secondary();
       if (!start_ray(samples[base + j], &pending[live])) continue;
       traced[live] = pending[live].ray;
       lambda_nm[live] = double(lambdas[base + j][0]);
@@ -256,7 +252,7 @@ void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelen
     system_.trace_range_batch(traced, dispersive_ ? lambda_nm : nullptr, results, live, system_.image_index() - 1, 0);
     size_t mis = 0;
     for (size_t j = 0; j < live; ++j) {
-      rays[index[j]] = finish_ray(pending[j], results[j], samples[index[j]].time);
+      rays[index[j]] = finish_ray(samples[index[j]], pending[j], results[j], lambda_nm[j]);
       if (!dispersive_ || !rays[index[j]] || lambdas[index[j]].secondary_terminated()) continue;
       for (int k = 1; k <= kSecondary; ++k) {
         forward[mis] = back_in(results[j]);
@@ -280,10 +276,11 @@ std::string LensSystemCamera::to_string() const {
           ? fmt::format("film {:.4g} mm (shorter half-axis)", settings_.film_half_mm)
           : fmt::format("fov {} deg, mapping {}", settings_.fov_deg, eyetrace::to_string(settings_.mapping));
   return fmt::format(
-      "{} camera: {}{}, stop {:.4g} mm, {}, retina {}, {}", settings_.name, prescription_.name,
+      "{} camera: {}{}, stop {:.4g} mm, {}, retina {}, {}{}", settings_.name, prescription_.name,
       prescription_.variant.empty() ? "" : " [" + prescription_.variant + "]", prescription_.stop_diameter_mm(), field,
       retina_.curvature == 0.0 ? std::string("flat") : fmt::format("radius {:.4g} mm", 1.0 / retina_.curvature),
-      dispersive_ ? std::string("dispersive") : fmt::format("monochromatic {:.4g} nm", prescription_.wavelength_nm));
+      dispersive_ ? std::string("dispersive") : fmt::format("monochromatic {:.4g} nm", prescription_.wavelength_nm),
+      psf_table_ ? ", diffraction: " + psf_table_->describe() : std::string());
 }
 
 }  // namespace eyetrace
@@ -296,10 +293,20 @@ namespace {
 std::unique_ptr<Camera> make_camera(const CameraContext& ctx, const optics::Prescription& p,
                                     const LensSystemCamera::Settings& s, const char* system_param) {
   try {
-    return std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+    auto camera = std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+    const WavePsfTable* table = camera->psf_table();
+    if (table && table->geometric_nodes() > 0)
+      warn(ctx.params.loc(),
+           fmt::format("diffraction: {} of the {} wave PSFs (field x wavelength) are aberration-dominated or lose "
+                       "their chief ray; rays there keep their traced direction (geometric blur){}",
+                       table->geometric_nodes(), table->nodes(),
+                       table->geometric_nodes() == table->nodes() ? ": diffraction changes nothing here" : ""));
+    return camera;
   } catch (const FieldError& e) {
     ctx.params.fail("fov", e.what());
   } catch (const optics::OpticsError& e) {
+    // An error naming an option (diffraction) belongs to that parameter.
+    if (!e.option().empty()) ctx.params.fail(e.option(), e.message());
     ctx.params.fail(system_param, e.what());
   }
 }
@@ -317,6 +324,11 @@ CameraFactory create_named_eye_camera(std::string model) {
 }
 
 std::unique_ptr<Camera> create_realistic_camera(const CameraContext& ctx) {
+  if (ctx.params.has("diffraction"))
+    ctx.params.fail("diffraction",
+                    "the realistic camera has no wave PSF of its lens (only the eye models' are "
+                    "precomputed); diffraction is a parameter of the eye cameras (Camera \"navarro\", "
+                    "\"eye\", ...)");
   optics::Prescription p = realistic_prescription_from_params(ctx.params, ctx.search_dir);
   LensSystemCamera::Settings s = realistic_view_settings(ctx.params, ctx.resolution);
   return make_camera(ctx, p, s, "lensfile");

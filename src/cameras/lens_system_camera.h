@@ -22,6 +22,7 @@
 #include "cameras/pupil_sampler.h"
 #include "cameras/retina_mapping.h"
 #include "cameras/retina_surface.h"
+#include "cameras/wave_psf_table.h"
 #include "core/camera.h"
 #include "optics/prescription.h"
 #include "optics/sequential_trace.h"
@@ -41,6 +42,10 @@ class LensSystemCamera : public Camera {
     // are terminated: each wavelength leaves the eye its own way). Off, or for a system
     // without dispersion, every ray is traced at the prescription's wavelength.
     bool dispersive = false;
+    // Draw each ray's outgoing direction from the eye's wave PSF (wave_psf_table.h) instead of
+    // keeping the traced one. A dispersive eye then keeps each sample's hero wavelength only
+    // (no spectral MIS, no splats): see generate_ray.
+    bool diffraction = false;
     PupilSampler::Options pupil;
   };
   // Throws optics::OpticsError when the system cannot be used (invalid, or no ray passes at the
@@ -53,7 +58,9 @@ class LensSystemCamera : public Camera {
                      size_t count) const override;
   using Camera::generate_ray;
   using Camera::generate_rays;
-  bool splats() const override { return dispersive_; }
+  // Spectral MIS needs each wavelength's density of the ray, which diffraction makes a
+  // convolution over the pixels (see generate_ray): the diffracting eye does not splat.
+  bool splats() const override { return dispersive_ && !diffraction(); }
   std::string to_string() const override;
 
   // --- For tests and tools ---------------------------------------------------------------
@@ -72,6 +79,8 @@ class LensSystemCamera : public Camera {
   const FieldAngleTable& field_angles() const { return angles_; }
   const Settings& settings() const { return settings_; }
   bool dispersive() const { return dispersive_; }
+  bool diffraction() const { return psf_table_ != nullptr; }
+  const WavePsfTable* psf_table() const { return psf_table_.get(); }
   // Upper bound of every weight generate_ray returns, and the constant that makes the mean
   // weight at the image centre 1 (1 / integral of cos dw over the passing directions there).
   double max_weight() const { return max_weight_; }
@@ -85,6 +94,7 @@ class LensSystemCamera : public Camera {
     double area = 0.0;   // sampled area of the plane (1 / density)
     double arc = 0.0;    // retina arc of the point
     double screen_radius = 0.0;
+    glm::dvec2 meridian{1.0, 0.0};  // unit lateral direction of the retina point (system frame)
   };
   // One wavelength's share of a ray under spectral MIS (spectral_mis.cpp).
   struct WavelengthTerms {
@@ -95,7 +105,12 @@ class LensSystemCamera : public Camera {
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
   static optics::Ray back_in(const optics::TraceResult& left);
-  std::optional<CameraRay> finish_ray(const PendingRay& pending, const optics::TraceResult& r, float time) const;
+  std::optional<CameraRay> finish_ray(const CameraSample& cs, const PendingRay& pending, const optics::TraceResult& r,
+                                      double lambda_nm) const;
+  // The direction a diffracting eye gives the ray that left the eye as r (system frame).
+  glm::dvec3 diffracted_direction(const CameraSample& cs, const PendingRay& pending, const optics::TraceResult& r,
+                                  double lambda_nm) const;
+  void build_psf_table(double corner_arc);
   // Spectral MIS: the ray that left the eye at the hero wavelength, traced back in at each
   // secondary wavelength (forward[k - 1] for wavelength k), weighs every wavelength.
   void weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
@@ -127,6 +142,7 @@ class LensSystemCamera : public Camera {
   double normalisation_ = 1.0;
   double max_weight_ = 0.0;
   bool dispersive_ = false;
+  std::shared_ptr<const WavePsfTable> psf_table_;  // diffraction on
 };
 
 // A field-of-view/mapping combination the system cannot serve (message names why).

@@ -72,6 +72,11 @@ const PluginSpec& perspective_camera_spec() {
 }
 
 static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const std::string& name) {
+  // Before the table's check, which would call it an unused parameter.
+  if (ctx.params.has("diffraction"))
+    ctx.params.fail("diffraction", "Camera \"" + name +
+                                       "\" has no pupil to diffract at (an ideal pinhole or thin lens); diffraction is "
+                                       "a parameter of the eye cameras (Camera \"navarro\", \"eye\", ...)");
   const PluginParams p(ctx.params, perspective_camera_spec(), name);
   PerspectiveCamera::Settings s;
   s.fov_deg = p.get_float("fov");
