@@ -332,9 +332,24 @@ std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group)
     error = std::current_exception();
   }
   const int first_failed = group.min(error ? group.rank() : INT_MAX);
-  if (first_failed == INT_MAX) return job;
-  if (group.rank() == first_failed) std::rethrow_exception(error);
-  return nullptr;
+  if (first_failed != INT_MAX) {
+    if (group.rank() == first_failed) std::rethrow_exception(error);
+    return nullptr;
+  }
+  // Every rank must render the same image: the fingerprint covers the scene, every file it
+  // reads and the options that change the image (a rank started with other arguments, or on a
+  // machine whose copy of a file differs, would otherwise add other pixels to the same film).
+  const uint64_t lead = group.broadcast(job->fingerprint);
+  const int odd = group.min(job->fingerprint != lead ? group.rank() : INT_MAX);
+  if (odd != INT_MAX) {
+    if (group.rank() == odd)
+      throw_error(fmt::format(
+          "rank {} sees another scene or other options than rank 0 (scene fingerprint {:016x} against {:016x}): "
+          "every rank must be started with the same arguments and read the same files",
+          odd, job->fingerprint, lead));
+    return nullptr;
+  }
+  return job;
 }
 
 // The job's counters, summed over ranks, and each rank's times (rank 0 gets them; collective).

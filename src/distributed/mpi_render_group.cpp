@@ -91,6 +91,11 @@ uint64_t MpiRenderGroup::sum(uint64_t v) {
   return out;
 }
 
+uint64_t MpiRenderGroup::broadcast(uint64_t v) {
+  check(MPI_Bcast(&v, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  return v;
+}
+
 std::vector<double> MpiRenderGroup::gather(double v) {
   std::vector<double> all(rank_ == 0 ? size_t(size_) : 0);
   check(MPI_Gather(&v, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD), "MPI_Gather");

@@ -19,6 +19,7 @@ class MpiRenderGroup : public RenderGroup {
   int min(int v) override;
   double max(double v) override;
   uint64_t sum(uint64_t v) override;
+  uint64_t broadcast(uint64_t v) override;
   std::vector<double> gather(double v) override;
   void share(Film& film, TileProgress& tiles) override;
   void abort_job() override;

@@ -15,6 +15,7 @@
 #include "optics/encircled_energy.h"
 #include "optics/fft.h"
 #include "optics/optics_error.h"
+#include "optics/psf_image.h"
 
 namespace eyetrace::optics {
 
@@ -235,6 +236,19 @@ double PsfEvaluator::at(glm::dvec2 a) const {
         1.0, kTwoPi * off_grid_opd_waves_[s] - k_x_ * a.x * off_grid_points_[s].x - k_y_ * a.y * off_grid_points_[s].y);
   const double m = static_cast<double>(phasor_.size() + off_grid_points_.size());
   return std::norm(sum) / (m * m);
+}
+
+PsfImage psf_image(const WavefrontResult& w) {
+  if (w.grid < 8 || w.pupil_points.empty() || w.pupil_points.size() != w.opd_waves.size())
+    throw OpticsError("psf: the wavefront has no samples on a grid");
+  PsfImage out;
+  out.fft_size = automatic_fft_size(w.grid);
+  out.sample_x_rad = w.wavelength_nm * 1e-6 / (out.fft_size * (2.0 * w.pupil_radius_mm / w.grid));
+  out.sample_y_rad = out.sample_x_rad / std::cos(w.field_deg * std::numbers::pi / 180.0);
+  const std::vector<double> phase = phase_grid(w);
+  out.max_phase_step_rad = max_phase_step(phase, w.grid);
+  out.intensity = fft_intensity(phase, w.grid, out.fft_size, static_cast<int>(w.pupil_points.size()));
+  return out;
 }
 
 Psf compute_psf(const WavefrontResult& w, const RetinalScale& scale, const PsfOptions& o) {

@@ -1,7 +1,8 @@
 // The PSF's intensity samples alone: compute_psf (psf.h) without the Strehl ratio, centroid,
 // encircled energy and retinal scale, which cost about three quarters of its time. For tables of
 // many PSFs (the diffracting camera, cameras/wave_psf_table.h). Same pupil function, FFT size
-// (automatic), sample spacing and units as compute_psf; tested equal to it.
+// (automatic), sample spacing and units as compute_psf; tested equal to it. Defined in psf.cpp,
+// beside compute_psf's steps that it shares.
 #pragma once
 
 #include <vector>

@@ -40,6 +40,8 @@ class RenderGroup {
   virtual int min(int v) { return v; }
   virtual double max(double v) { return v; }
   virtual uint64_t sum(uint64_t v) { return v; }
+  // Rank 0's value, on every rank.
+  virtual uint64_t broadcast(uint64_t v) { return v; }
   // Rank 0 receives every rank's value, in rank order (the other ranks: an empty vector).
   virtual std::vector<double> gather(double v) { return {v}; }
   // Every rank's film accumulators and tile (and, adaptive, pixel) counts for the tiles it owns

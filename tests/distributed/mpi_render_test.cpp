@@ -5,7 +5,6 @@
 // within seconds, never a hang, and --resume from the last checkpoint must finish the image.
 // A build without MPI must refuse to run as one of several ranks.
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -53,22 +52,16 @@ bool same_pixels(const std::string& a, const std::string& b) {
 
 // mpirun -n RANKS eyetrace ARGS, output to `log`, without waiting. Root may run it only when told
 // to (the CI machine runs as root); --oversubscribe allows more ranks than cores.
-pid_t spawn_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
+void allow_root() {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  std::vector<std::string> words = {"mpirun", "--oversubscribe", "-n", std::to_string(ranks), test::eyetrace_binary()};
+}
+
+pid_t spawn_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
+  allow_root();
+  std::vector<std::string> words = {"--oversubscribe", "-n", std::to_string(ranks), test::eyetrace_binary()};
   words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = -1;
-  const int rc = posix_spawnp(&pid, "mpirun", &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0 ? pid : -1;
+  return test::spawn_logged("mpirun", words, log);
 }
 
 int run_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
@@ -106,6 +99,26 @@ TEST(MpiRender, OneTwoAndThreeRanksGiveTheSingleProcessBytes) {
   EXPECT_TRUE(same_pixels(blocks, ref));
 }
 
+// Ranks started with other arguments (mpirun's MPMD form: another seed on rank 1) would add
+// other pixels to one film: refused before rendering, naming the rank; nothing is written.
+TEST(MpiRender, RanksWithOtherOptionsAreRefused) {
+  TempDir dir("eyetrace_mpi");
+  const std::string out = dir.file("out.exr"), log = dir.file("mpi.log");
+  std::vector<std::string> words = {"--oversubscribe", "-n", "1", test::eyetrace_binary()};
+  for (const std::string& a : render_args(out)) words.push_back(a);
+  words.insert(words.end(), {":", "-n", "1", test::eyetrace_binary()});
+  std::vector<std::string> other = render_args(out);
+  other[9] = "8";  // --seed
+  words.insert(words.end(), other.begin(), other.end());
+  allow_root();
+  const pid_t pid = test::spawn_logged("mpirun", words, log);
+  ASSERT_GT(pid, 0);
+  EXPECT_NE(test::wait_exit(pid), 0) << read_text(log);
+  EXPECT_NE(read_text(log).find("rank 1 sees another scene or other options than rank 0"), std::string::npos)
+      << read_text(log);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(MpiRender, AdaptiveRenderIsTheSameOverRanks) {
   TempDir dir("eyetrace_mpi");
   const std::vector<std::string> adaptive = {"--adaptive", "--target-error", "0.1", "--min-spp", "8"};
@@ -123,7 +136,7 @@ TEST(MpiRender, AdaptiveRenderIsTheSameOverRanks) {
 TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
   TempDir dir("eyetrace_mpi");
   const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr"), log = dir.file("mpi.log");
-  const std::vector<std::string> args = render_args(out, "512");
+  const std::vector<std::string> args = render_args(out, "4096");
   const pid_t pid = spawn_mpirun(2, with(args, {"--checkpoint", "0", "--pass-samples", "8"}), log);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(test::wait_for_file(out + ".state", pid)) << read_text(log);
@@ -132,7 +145,7 @@ TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
   ASSERT_TRUE(fs::exists(out + ".state")) << read_text(log);
   EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "1") << read_text(log);
   ASSERT_EQ(run_mpirun(3, with(args, {"--resume"}), dir.file("resume.log")), 0) << read_text(dir.file("resume.log"));
-  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "512", "2"), dir.file("ref.log")), 0);
+  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "4096", "2"), dir.file("ref.log")), 0);
   EXPECT_TRUE(same_pixels(out, ref));
   EXPECT_FALSE(fs::exists(out + ".state"));
 }
@@ -140,7 +153,7 @@ TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
 TEST(MpiRender, AKilledRankEndsTheJobWithinSecondsAndResumeFinishesIt) {
   TempDir dir("eyetrace_mpi");
   const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr"), log = dir.file("mpi.log");
-  const std::vector<std::string> args = render_args(out, "512");
+  const std::vector<std::string> args = render_args(out, "4096");
   const pid_t pid = spawn_mpirun(2, with(args, {"--checkpoint", "0", "--pass-samples", "8"}), log);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(test::wait_for_file(out + ".state", pid)) << read_text(log);
@@ -169,7 +182,7 @@ TEST(MpiRender, AKilledRankEndsTheJobWithinSecondsAndResumeFinishesIt) {
   EXPECT_NE(read_text(log).find("exited on signal 9"), std::string::npos) << read_text(log);
   // The last checkpoint is whole (written through a rename) and finishes the image.
   ASSERT_EQ(run_mpirun(2, with(args, {"--resume"}), dir.file("resume.log")), 0) << read_text(dir.file("resume.log"));
-  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "512", "2"), dir.file("ref.log")), 0);
+  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "4096", "2"), dir.file("ref.log")), 0);
   EXPECT_TRUE(same_pixels(out, ref));
 }
 

@@ -57,10 +57,10 @@ inline RunResult run_eyetrace(const std::string& args, bool with_stderr = true) 
   return r;
 }
 
-// Starts eyetrace with `args` (no shell), stdout and stderr to the file `log`, without waiting.
-// Returns the child's pid, or -1.
-inline pid_t spawn_eyetrace(const std::vector<std::string>& args, const std::string& log) {
-  std::vector<char*> argv{const_cast<char*>(eyetrace_binary().c_str())};
+// Starts `program` (a path, or a name looked up in PATH) with `args` (no shell), stdout and
+// stderr to the file `log`, without waiting. Returns the child's pid, or -1.
+inline pid_t spawn_logged(const std::string& program, const std::vector<std::string>& args, const std::string& log) {
+  std::vector<char*> argv{const_cast<char*>(program.c_str())};
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
@@ -68,9 +68,14 @@ inline pid_t spawn_eyetrace(const std::vector<std::string>& args, const std::str
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, eyetrace_binary().c_str(), &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   return rc == 0 ? pid : -1;
+}
+
+// Starts eyetrace with `args` as spawn_logged does.
+inline pid_t spawn_eyetrace(const std::vector<std::string>& args, const std::string& log) {
+  return spawn_logged(eyetrace_binary(), args, log);
 }
 
 // The child's exit status, or 1000 + the signal when one killed it: unlike the shell's 128 + n,
