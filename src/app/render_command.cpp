@@ -491,10 +491,10 @@ int run_render(const RenderArgs& a) {
   auto last_checkpoint = std::chrono::steady_clock::now();
   if (a.checkpoint >= 0)
     ro.on_pass = [&](const TileProgress&) {
-      // Rank 0's clock decides for all (a collective), then the films are made whole.
+      // Rank 0's clock decides for all (a collective), then rank 0's film is made whole.
       const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
       if (!g.any(lead && since >= a.checkpoint)) return;
-      g.share(*setup.film, tiles);
+      g.collect(*setup.film, tiles);
       if (lead && !tiles.complete(spp))
         save(job->output, a, setup, tiles, job->fingerprint, Snapshot{}, job->irradiance);
       last_checkpoint = std::chrono::steady_clock::now();
@@ -509,7 +509,8 @@ int run_render(const RenderArgs& a) {
   const double seconds = progress.elapsed_seconds(), render_seconds = seconds - setup_seconds;
   const Totals t = totals(g, counters, render_seconds, process_cpu_seconds() - cpu_before);
   const int signal = int(g.max(interrupt.signal_number()));
-  const bool complete = tiles.complete(spp);
+  // Rank 0's film and progress are whole (RenderGroup::collect); the others' are their own.
+  const bool complete = g.broadcast(tiles.complete(spp) ? 1 : 0) != 0;
   if (!lead) return complete ? 0 : 128 + signal;
   write_result(a, *job, complete);
   const nlohmann::json spread = spp_distribution(tiles, setup.film->bounds());

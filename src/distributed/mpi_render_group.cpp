@@ -17,29 +17,32 @@ void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
 }
 
-// The values one tile contributes to share(): its count, then per pixel (row-major) the film's
-// accumulators and, adaptive, the pixel's count and target. Counts are small integers, exact
-// in a double.
-void pack_tile(size_t t, const std::vector<double>& acc, size_t per, const TileProgress& tp, const PixelBounds& b,
-               std::vector<double>& out) {
+// The values one tile contributes to share() and collect(): its count, then per pixel
+// (row-major) the film's accumulators and, adaptive, the pixel's count and target. Counts are
+// small integers, exact in a double.
+void pack_tile(size_t t, const Film& film, const TileProgress& tp, std::vector<double>& out) {
+  const PixelBounds& b = film.bounds();
+  const size_t per = film.accumulators_per_pixel();
   out.push_back(tp.done[t]);
   const PixelBounds tb = tp.tile_bounds(t, b);
   for (int y = tb.lo.y; y < tb.hi.y; ++y)
     for (int x = tb.lo.x; x < tb.hi.x; ++x) {
       const size_t i = size_t(y - b.lo.y) * size_t(b.width()) + size_t(x - b.lo.x);
-      out.insert(out.end(), acc.begin() + std::ptrdiff_t(i * per), acc.begin() + std::ptrdiff_t((i + 1) * per));
+      out.resize(out.size() + per);
+      film.copy_accumulators(i, out.data() + out.size() - per);
       if (tp.adaptive()) out.insert(out.end(), {double(tp.pixel_done[i]), double(tp.pixel_target[i])});
     }
 }
 
-const double* unpack_tile(size_t t, const double* in, std::vector<double>& acc, size_t per, TileProgress& tp,
-                          const PixelBounds& b) {
+const double* unpack_tile(size_t t, const double* in, Film& film, TileProgress& tp) {
+  const PixelBounds& b = film.bounds();
+  const size_t per = film.accumulators_per_pixel();
   tp.done[t] = int(*in++);
   const PixelBounds tb = tp.tile_bounds(t, b);
   for (int y = tb.lo.y; y < tb.hi.y; ++y)
     for (int x = tb.lo.x; x < tb.hi.x; ++x) {
       const size_t i = size_t(y - b.lo.y) * size_t(b.width()) + size_t(x - b.lo.x);
-      std::copy(in, in + per, acc.begin() + std::ptrdiff_t(i * per));
+      film.set_accumulators(i, in);
       in += per;
       if (tp.adaptive()) {
         tp.pixel_done[i] = int(in[0]);
@@ -48,6 +51,19 @@ const double* unpack_tile(size_t t, const double* in, std::vector<double>& acc, 
       }
     }
   return in;
+}
+
+// Displacements of per-rank blocks of `counts`; throws when the total does not fit MPI's ints.
+std::vector<int> offsets_of(const std::vector<int>& counts) {
+  std::vector<int> offsets(counts.size());
+  size_t total = 0;
+  for (size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = int(total);
+    total += size_t(counts[r]);
+  }
+  // MPI counts are ints: a film beyond 2^31 doubles (16 GiB of accumulators) would need chunking.
+  if (total > size_t(INT32_MAX)) throw std::runtime_error("MPI: the film is too large to gather in one message");
+  return offsets;
 }
 
 }  // namespace
@@ -102,37 +118,55 @@ std::vector<double> MpiRenderGroup::gather(double v) {
   return all;
 }
 
-void MpiRenderGroup::share(Film& film, TileProgress& tp) {
-  const PixelBounds& b = film.bounds();
-  const size_t per = film.accumulators_per_pixel();
-  std::vector<double> acc = film.accumulators();
+std::vector<double> MpiRenderGroup::own_tiles(const Film& film, const TileProgress& tp) const {
   std::vector<double> mine;
   const size_t tiles = tp.done.size();
   for (size_t t = 0; t < tiles; ++t)
-    if (owns_tile(t, tiles)) pack_tile(t, acc, per, tp, b, mine);
-  // Every rank's part, in rank order (MPI counts are ints: a film beyond 2^31 doubles per rank
-  // would need chunking; that is 16 GiB of accumulators).
+    if (owns_tile(t, tiles)) pack_tile(t, film, tp, mine);
   if (mine.size() > size_t(INT32_MAX)) throw std::runtime_error("MPI: a rank's share of the film is too large");
-  int count = int(mine.size());
-  const size_t ranks = static_cast<size_t>(size_);
-  std::vector<int> counts(ranks), offsets(ranks);
-  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
-  size_t total = 0;
+  return mine;
+}
+
+void MpiRenderGroup::unpack_others(const std::vector<double>& all, const std::vector<int>& offsets, Film& film,
+                                   TileProgress& tp) const {
+  const size_t tiles = tp.done.size();
   for (int r = 0; r < size_; ++r) {
-    offsets[size_t(r)] = int(total);
-    total += size_t(counts[size_t(r)]);
+    if (r == rank_) continue;  // its own tiles are already in place
+    const double* in = all.data() + offsets[size_t(r)];
+    for (size_t t = 0; t < tiles; ++t)
+      if (tile_owner(t, tiles) == r) in = unpack_tile(t, in, film, tp);
   }
-  if (total > size_t(INT32_MAX)) throw std::runtime_error("MPI: the film is too large to share");
-  std::vector<double> all(total);
+}
+
+void MpiRenderGroup::share(Film& film, TileProgress& tp) {
+  const std::vector<double> mine = own_tiles(film, tp);
+  const int count = int(mine.size());
+  std::vector<int> counts(static_cast<size_t>(size_));
+  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
+  const std::vector<int> offsets = offsets_of(counts);
+  std::vector<double> all(size_t(offsets.back()) + size_t(counts.back()));
   check(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
                        MPI_COMM_WORLD),
         "MPI_Allgatherv");
-  for (int r = 0; r < size_; ++r) {
-    const double* in = all.data() + offsets[size_t(r)];
-    for (size_t t = 0; t < tiles; ++t)
-      if (tile_owner(t, tiles) == r) in = unpack_tile(t, in, acc, per, tp, b);
+  unpack_others(all, offsets, film, tp);
+}
+
+void MpiRenderGroup::collect(Film& film, TileProgress& tp) {
+  // Rank 0 sends nothing (its tiles are in place); the others send theirs to it alone.
+  const std::vector<double> mine = rank_ == 0 ? std::vector<double>() : own_tiles(film, tp);
+  const int count = int(mine.size());
+  std::vector<int> counts(rank_ == 0 ? static_cast<size_t>(size_) : 0);
+  check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
+  std::vector<int> offsets;
+  std::vector<double> all;
+  if (rank_ == 0) {
+    offsets = offsets_of(counts);
+    all.resize(size_t(offsets.back()) + size_t(counts.back()));
   }
-  film.restore(acc, film.nonfinite_samples());
+  check(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+                    MPI_COMM_WORLD),
+        "MPI_Gatherv");
+  if (rank_ == 0) unpack_others(all, offsets, film, tp);
 }
 
 }  // namespace eyetrace

@@ -153,27 +153,33 @@ std::map<std::string, std::string> Film::image_metadata() const {
       {"eyetrace:spectral_buckets", fmt::format("{} {} {}", buckets_.count, buckets_.lambda_min, buckets_.lambda_max)}};
 }
 
+void Film::copy_accumulators(size_t i, double* out) const {
+  const Pixel& p = pixels_[i];
+  const double own[kAccumulatorsPerPixel] = {p.sum[0],   p.sum[1],   p.sum[2],   p.weight,
+                                             p.splat[0], p.splat[1], p.splat[2], p.sum_y2};
+  std::copy(own, own + kAccumulatorsPerPixel, out);
+  const size_t n = 2 * size_t(buckets_.count);
+  std::copy(bucket_sums_.begin() + std::ptrdiff_t(i * n), bucket_sums_.begin() + std::ptrdiff_t((i + 1) * n),
+            out + kAccumulatorsPerPixel);
+}
+
+void Film::set_accumulators(size_t i, const double* a) {
+  pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}, a[7]};
+  const size_t n = 2 * size_t(buckets_.count);
+  std::copy(a + kAccumulatorsPerPixel, a + kAccumulatorsPerPixel + n, bucket_sums_.begin() + std::ptrdiff_t(i * n));
+}
+
 std::vector<double> Film::accumulators() const {
-  const size_t n = size_t(buckets_.count);
-  std::vector<double> acc;
-  acc.reserve(pixels_.size() * accumulators_per_pixel());
-  for (size_t i = 0; i < pixels_.size(); ++i) {
-    const Pixel& p = pixels_[i];
-    acc.insert(acc.end(), {p.sum[0], p.sum[1], p.sum[2], p.weight, p.splat[0], p.splat[1], p.splat[2], p.sum_y2});
-    acc.insert(acc.end(), bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n),
-               bucket_sums_.begin() + std::ptrdiff_t((i + 1) * 2 * n));
-  }
+  const size_t per = accumulators_per_pixel();
+  std::vector<double> acc(pixels_.size() * per);
+  for (size_t i = 0; i < pixels_.size(); ++i) copy_accumulators(i, &acc[i * per]);
   return acc;
 }
 
 void Film::restore(const std::vector<double>& acc, uint64_t nonfinite_samples) {
-  const size_t per = accumulators_per_pixel(), n = size_t(buckets_.count);
+  const size_t per = accumulators_per_pixel();
   if (acc.size() != pixels_.size() * per) throw std::invalid_argument("Film::restore: wrong number of accumulators");
-  for (size_t i = 0; i < pixels_.size(); ++i) {
-    const double* a = &acc[per * i];
-    pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}, a[7]};
-    std::copy(a + kAccumulatorsPerPixel, a + per, bucket_sums_.begin() + std::ptrdiff_t(i * 2 * n));
-  }
+  for (size_t i = 0; i < pixels_.size(); ++i) set_accumulators(i, &acc[per * i]);
   nonfinite_ = nonfinite_samples;
 }
 

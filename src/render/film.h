@@ -130,6 +130,10 @@ class Film {
   size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + 2 * size_t(buckets_.count); }
   // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
+  // One pixel's accumulators (index row-major over bounds()), as accumulators() lays them out:
+  // accumulators_per_pixel() values to or from `values`.
+  void copy_accumulators(size_t pixel_index, double* values) const;
+  void set_accumulators(size_t pixel_index, const double* values);
 
  private:
   struct Pixel {

@@ -6,7 +6,8 @@
 // bits whatever the number of ranks and threads. The render loop calls the collectives below at
 // the same points on every rank (once per pass), which keeps pass sizes, stopping and adaptive
 // decisions identical everywhere; share() makes every rank's film whole (each rank's own tiles go
-// to all), before a checkpoint, an adaptive decision and the final image.
+// to all) before an adaptive decision, collect() makes rank 0's whole before a checkpoint and the
+// final image.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -47,6 +48,9 @@ class RenderGroup {
   // Every rank's film accumulators and tile (and, adaptive, pixel) counts for the tiles it owns
   // go to every rank. A rank's count of non-finite samples stays its own.
   virtual void share(Film&, TileProgress&) {}
+  // The same to rank 0 alone (its film and progress become whole; the others' stay their own):
+  // enough for the final image and for checkpoints, which rank 0 writes.
+  virtual void collect(Film&, TileProgress&) {}
   // After an error on this rank while the others may wait for it in a collective: ends the
   // whole job (MPI_Abort). Nothing to do alone.
   virtual void abort_job() {}
