@@ -3,15 +3,17 @@
 #   src/core    includes only core/   (math, rays, spectra and the plugin interfaces);
 #   src/render  includes only core/ and render/ (the render loop knows no scene text);
 #   src/scene   includes only core/, scene/ and render/: no plugin folder, so adding a
-#               plugin never touches them (the plugins are registered in src/builtin_plugins.cpp).
+#               plugin never touches them (the plugins are registered in src/builtin_plugins.cpp);
+#   src/distributed includes only core/, render/ and distributed/ (MPI beside the render loop).
 # Run: cmake -DSRC=<source dir>/src -P check_layers.cmake
 cmake_policy(SET CMP0057 NEW)
 set(allowed_optics "optics")
 set(allowed_core "core")
 set(allowed_scene "core;scene;render")
 set(allowed_render "core;render")
+set(allowed_distributed "core;render;distributed")
 set(violations "")
-foreach(layer optics core scene render)
+foreach(layer optics core scene render distributed)
   file(GLOB_RECURSE files "${SRC}/${layer}/*.h" "${SRC}/${layer}/*.cpp")
   foreach(file IN LISTS files)
     file(STRINGS "${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[^\"]+\"")
@@ -34,4 +36,4 @@ if(violations)
   list(JOIN violations "\n  " text)
   message(FATAL_ERROR "layering violations:\n  ${text}")
 endif()
-message(STATUS "layering: optics, core, scene and render include only what they may")
+message(STATUS "layering: optics, core, scene, render and distributed include only what they may")
