@@ -1,6 +1,7 @@
 // `eyetrace sweep SWEEPFILE`: every job of a parameter sweep (app/sweep.h), run by up to --jobs
 // local processes, the next job going to the first free slot; finished outputs are skipped; the
-// table is written once at the end. A later MPI scheduler hands out the same jobs to ranks.
+// table is written once at the end. Under mpirun (distributed/sweep_group.h) rank 0 hands the
+// same jobs out to the other ranks, one at a time, as each finishes its last.
 #include <fmt/core.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -8,6 +9,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <thread>
@@ -17,6 +19,7 @@
 #include "app/sweep.h"
 #include "app/sweep_job.h"
 #include "app/sweep_table.h"
+#include "distributed/sweep_group.h"
 
 namespace eyetrace {
 
@@ -137,7 +140,106 @@ std::vector<JobResult> run_jobs(const Sweep& sweep, int slots, int threads, Prog
   return results;
 }
 
+// What a worker tells rank 0 with each request: "<stop> <job> <status> <seconds> <spp> <error>"
+// (tab-separated; job -1: no result yet; stop 1: this worker stops after it, having been
+// signalled itself).
+std::string encode_request(bool stop, int job, const JobResult& r) {
+  return fmt::format("{}\t{}\t{}\t{:.17g}\t{}\t{}", stop ? 1 : 0, job, int(r.status), r.render_seconds, r.spp, r.error);
+}
+
+struct DecodedRequest {
+  bool stop = false;
+  int job = -1;
+  JobResult result;
+};
+
+DecodedRequest decode_request(const std::string& text) {
+  DecodedRequest d;
+  int stop = 0, status = 0;
+  size_t used = 0;
+  if (std::sscanf(text.c_str(), "%d\t%d\t%d\t%lf\t%d\t%zn", &stop, &d.job, &status, &d.result.render_seconds,
+                  &d.result.spp, &used) < 5)
+    throw std::runtime_error("a sweep rank sent a malformed result");
+  d.stop = stop != 0;
+  d.result.status = JobStatus(status);
+  d.result.error = text.substr(used);
+  return d;
+}
+
+// Rank 0 of a sweep under mpirun: hands out the jobs not already done, one per request, to
+// whichever worker asks, and gathers their results; once signalled it hands out no more.
+std::vector<JobResult> dispatch(const Sweep& sweep, SweepGroup& group, Progress& progress) {
+  std::vector<JobResult> results(sweep.jobs.size());
+  std::vector<size_t> pending;
+  for (size_t i = 0; i < sweep.jobs.size(); ++i)
+    if (already_done(sweep.jobs[i], results[i]))
+      progress.job(sweep.jobs[i], results[i]);
+    else
+      pending.push_back(i);
+  SignalForwarding signals;  // no children here: a signal only stops the handing out
+  size_t next = 0;
+  for (int working = group.size() - 1; working > 0;) {
+    const SweepGroup::Request request = group.receive();
+    const DecodedRequest d = decode_request(request.result);
+    if (d.job >= 0 && size_t(d.job) < results.size()) {
+      results[size_t(d.job)] = d.result;
+      progress.job(sweep.jobs[size_t(d.job)], d.result);
+    }
+    if (!d.stop && g_signal == 0 && next < pending.size()) {
+      group.answer(request.worker, int(pending[next++]));
+    } else {
+      group.answer(request.worker, -1);
+      --working;
+    }
+  }
+  return results;
+}
+
+// A worker rank: runs the job rank 0 hands it, in its own process as locally, until told to stop.
+int work(const Sweep& sweep, SweepGroup& group, int threads) {
+  SignalForwarding signals;  // mpirun passes a Ctrl-C on to every rank; this one to its render
+  int job = group.ask(encode_request(false, -1, {}));
+  while (job >= 0) {
+    const pid_t pid = signals.start(0, sweep, sweep.jobs[size_t(job)], threads);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    g_children[0] = 0;
+    const JobResult r = finish_job(sweep.jobs[size_t(job)], status);
+    job = group.ask(encode_request(g_signal != 0, job, r));
+  }
+  return g_signal != 0 ? 128 + g_signal : 0;
+}
+
+int run_sweep_over_ranks(const SweepArgs& a, SweepGroup& group) {
+  Sweep sweep;
+  try {
+    if (a.jobs > 1)
+      throw std::runtime_error("under mpirun each rank runs one render at a time: give more ranks, not --jobs");
+    sweep = read_sweep(a.file);  // every input error before the first render, on every rank
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s%s\n", group.rank() > 0 ? fmt::format("rank {}: ", group.rank()).c_str() : "",
+                 e.what());
+    group.abort_job();  // the other ranks may already wait for this one
+    return 1;
+  }
+  const int threads = a.threads > 0 ? a.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  if (group.rank() > 0) return work(sweep, group, threads);
+  Progress progress{!a.quiet && isatty(STDERR_FILENO) != 0, sweep.jobs.size()};
+  if (progress.on)
+    fmt::print(stderr, "sweep {}: {} jobs over {} ranks ({} render, {} threads each)\n", a.file, sweep.jobs.size(),
+               group.size(), group.size() - 1, threads);
+  const std::vector<JobResult> results = dispatch(sweep, group, progress);
+  write_sweep_table(sweep, results);
+  size_t failed = 0;
+  for (const JobResult& r : results) failed += r.status == JobStatus::Failed;
+  if (g_signal != 0) return 128 + g_signal;
+  return failed ? 1 : 0;
+}
+
 int run_sweep(const SweepArgs& a) {
+  std::unique_ptr<SweepGroup> group = join_sweep_group();
+  if (group->size() > 1) return run_sweep_over_ranks(a, *group);
   const Sweep sweep = read_sweep(a.file);  // every input error before the first render
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = a.threads > 0 ? a.threads : std::max(1, cores / a.jobs);

@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <vector>
 
+extern char** environ;
+
 namespace eyetrace {
 
 namespace {
@@ -49,7 +51,22 @@ void write_atomically(const std::string& path, const std::string& text) {
   fs::rename(tmp, path);
 }
 
-[[noreturn]] void exec_render(const std::vector<std::string>& args, const std::string& log, pid_t parent) {
+// This process's environment without the variables an MPI launcher sets (OMPI_*, PMIX_*, PMI_*):
+// a render started by a sweep rank is one process of its own, not a rank of the sweep's job.
+// Made before fork: the child of a threaded process (MPI runs threads) may only exec.
+std::vector<std::string> environment_for_render() {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string v = *e;
+    if (v.rfind("OMPI_", 0) == 0 || v.rfind("PMIX_", 0) == 0 || v.rfind("PMI_", 0) == 0) continue;
+    env.push_back(v);
+  }
+  return env;
+}
+
+// In the child: argv and envp are made by the parent before fork (the child of a threaded
+// process may not allocate).
+[[noreturn]] void exec_render(char* const* argv, char* const* envp, const char* log, pid_t parent) {
   setpgid(0, 0);
   prctl(PR_SET_PDEATHSIG, SIGTERM);  // the sweep killed outright: its renders stop too
   if (getppid() != parent) _exit(143);
@@ -61,16 +78,13 @@ void write_atomically(const std::string& path, const std::string& text) {
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
-  int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd >= 0) {
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
     close(fd);
   }
-  std::vector<char*> argv{const_cast<char*>("eyetrace")};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  execv("/proc/self/exe", argv.data());
+  execve("/proc/self/exe", argv, envp);
   const char* msg = "error: cannot run /proc/self/exe\n";
   ssize_t ignored = write(STDERR_FILENO, msg, std::strlen(msg));
   (void)ignored;
@@ -103,10 +117,16 @@ bool already_done(const SweepJob& job, JobResult& result) {
 
 pid_t start_job(const Sweep& sweep, const SweepJob& job, int threads) {
   const std::vector<std::string> args = job.render_args(sweep.scene, partial_stats(job), threads);
+  const std::vector<std::string> env = environment_for_render();
+  std::vector<char*> argv{const_cast<char*>("eyetrace")}, envp;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  for (const std::string& e : env) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error(fmt::format("{}: cannot start a process: {}", job.name, std::strerror(errno)));
-  if (pid == 0) exec_render(args, job.log, parent);
+  if (pid == 0) exec_render(argv.data(), envp.data(), job.log.c_str(), parent);
   return pid;
 }
 

@@ -1,21 +1,35 @@
-// join_render_group() of a build without MPI.
+// join_render_group() and join_sweep_group() of a build without MPI.
 #include <cstdlib>
 #include <string>
 
 #include "core/error.h"
 #include "distributed/launch.h"
+#include "distributed/sweep_group.h"
 
 namespace eyetrace {
 
-std::unique_ptr<RenderGroup> join_render_group() {
-  // Open MPI's and MPICH's launchers tell each process how many there are.
+namespace {
+
+// Open MPI's and MPICH's launchers tell each process how many there are.
+void refuse_several_ranks(const char* what) {
   for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
     if (const char* n = std::getenv(var); n && std::atoi(n) > 1)
       throw_error(fmt::format(
-          "this eyetrace was built without MPI, but it was started as one of {} processes ({}): each would render "
-          "and write the whole image. Rebuild with MPI (libopenmpi-dev installed; CMake finds it) or run one process",
-          n, var));
+          "this eyetrace was built without MPI, but it was started as one of {} processes ({}): each would {}. "
+          "Rebuild with MPI (libopenmpi-dev installed; CMake finds it) or run one process",
+          n, var, what));
+}
+
+}  // namespace
+
+std::unique_ptr<RenderGroup> join_render_group() {
+  refuse_several_ranks("render and write the whole image");
   return std::make_unique<RenderGroup>();
+}
+
+std::unique_ptr<SweepGroup> join_sweep_group() {
+  refuse_several_ranks("run every job of the sweep");
+  return std::make_unique<SweepGroup>();
 }
 
 bool built_with_mpi() { return false; }
