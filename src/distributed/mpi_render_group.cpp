@@ -120,7 +120,11 @@ std::vector<double> MpiRenderGroup::gather(double v) {
 
 std::vector<double> MpiRenderGroup::own_tiles(const Film& film, const TileProgress& tp) const {
   std::vector<double> mine;
-  const size_t tiles = tp.done.size();
+  const size_t tiles = tp.done.size(), per = film.accumulators_per_pixel() + (tp.adaptive() ? 2 : 0);
+  size_t values = 0;
+  for (size_t t = 0; t < tiles; ++t)
+    if (owns_tile(t, tiles)) values += 1 + tp.tile_bounds(t, film.bounds()).area() * per;
+  mine.reserve(values);
   for (size_t t = 0; t < tiles; ++t)
     if (owns_tile(t, tiles)) pack_tile(t, film, tp, mine);
   if (mine.size() > size_t(INT32_MAX)) throw std::runtime_error("MPI: a rank's share of the film is too large");
