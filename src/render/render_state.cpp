@@ -30,7 +30,8 @@ class Writer {
   template <typename T>
   void put_array(const std::vector<T>& v) {
     put(uint64_t(v.size()));
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    // An empty vector's data() may be null, which memcpy must never see (even for 0 bytes).
+    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
   std::string& bytes() { return bytes_; }
 
@@ -54,7 +55,7 @@ class Reader {
     uint64_t n = get<uint64_t>();
     if (n > (bytes_.size() - pos_) / sizeof(T)) corrupt("an array is longer than the file");
     std::vector<T> v(n);
-    std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(T));  // data() of an empty vector may be null
     pos_ += n * sizeof(T);
     return v;
   }
