@@ -102,15 +102,21 @@ struct Progress {
   }
 };
 
-// Runs every job not already done, at most `slots` at a time; results in job order.
-std::vector<JobResult> run_jobs(const Sweep& sweep, int slots, int threads, Progress& progress) {
-  std::vector<JobResult> results(sweep.jobs.size());
+// The jobs not already done, in order; those that are get their results (skipped) now.
+std::vector<size_t> pending_jobs(const Sweep& sweep, std::vector<JobResult>& results, Progress& progress) {
   std::vector<size_t> pending;
   for (size_t i = 0; i < sweep.jobs.size(); ++i)
     if (already_done(sweep.jobs[i], results[i]))
       progress.job(sweep.jobs[i], results[i]);
     else
       pending.push_back(i);
+  return pending;
+}
+
+// Runs every job not already done, at most `slots` at a time; results in job order.
+std::vector<JobResult> run_jobs(const Sweep& sweep, int slots, int threads, Progress& progress) {
+  std::vector<JobResult> results(sweep.jobs.size());
+  const std::vector<size_t> pending = pending_jobs(sweep, results, progress);
   SignalForwarding signals;
   std::vector<std::pair<pid_t, size_t>> running(size_t(slots), {0, 0});  // slot -> (pid, job)
   size_t next = 0, busy = 0;
@@ -170,12 +176,7 @@ DecodedRequest decode_request(const std::string& text) {
 // whichever worker asks, and gathers their results; once signalled it hands out no more.
 std::vector<JobResult> dispatch(const Sweep& sweep, SweepGroup& group, Progress& progress) {
   std::vector<JobResult> results(sweep.jobs.size());
-  std::vector<size_t> pending;
-  for (size_t i = 0; i < sweep.jobs.size(); ++i)
-    if (already_done(sweep.jobs[i], results[i]))
-      progress.job(sweep.jobs[i], results[i]);
-    else
-      pending.push_back(i);
+  const std::vector<size_t> pending = pending_jobs(sweep, results, progress);
   SignalForwarding signals;  // no children here: a signal only stops the handing out
   size_t next = 0;
   for (int working = group.size() - 1; working > 0;) {

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/eyetrace_process.h"
+#include "../support/mpirun.h"
 #include "../support/temp_files.h"
 #include "render/image_io.h"
 
@@ -28,6 +29,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_text;
 using test::TempDir;
+#if EYETRACE_WITH_MPI
+using test::run_mpirun;
+using test::spawn_mpirun;
+#endif
 
 const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
 
@@ -49,25 +54,6 @@ bool same_pixels(const std::string& a, const std::string& b) {
 }
 
 #if EYETRACE_WITH_MPI
-
-// mpirun -n RANKS eyetrace ARGS, output to `log`, without waiting. Root may run it only when told
-// to (the CI machine runs as root); --oversubscribe allows more ranks than cores.
-void allow_root() {
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-}
-
-pid_t spawn_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
-  allow_root();
-  std::vector<std::string> words = {"--oversubscribe", "-n", std::to_string(ranks), test::eyetrace_binary()};
-  words.insert(words.end(), args.begin(), args.end());
-  return test::spawn_logged("mpirun", words, log);
-}
-
-int run_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
-  const pid_t pid = spawn_mpirun(ranks, args, log);
-  return pid > 0 ? test::wait_exit(pid) : -1;
-}
 
 // The eyetrace processes mpirun started (its children named eyetrace), from /proc.
 std::vector<pid_t> eyetrace_children(pid_t parent) {
@@ -110,7 +96,7 @@ TEST(MpiRender, RanksWithOtherOptionsAreRefused) {
   std::vector<std::string> other = render_args(out);
   other[9] = "8";  // --seed
   words.insert(words.end(), other.begin(), other.end());
-  allow_root();
+  test::allow_mpirun_as_root();
   const pid_t pid = test::spawn_logged("mpirun", words, log);
   ASSERT_GT(pid, 0);
   EXPECT_NE(test::wait_exit(pid), 0) << read_text(log);

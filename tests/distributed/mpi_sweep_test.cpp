@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/eyetrace_process.h"
+#include "../support/mpirun.h"
 #include "../support/temp_files.h"
 #include "render/image_io.h"
 
@@ -24,6 +25,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_text;
 using test::TempDir;
+#if EYETRACE_WITH_MPI
+using test::run_mpirun;
+using test::spawn_mpirun;
+#endif
 
 const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
 
@@ -57,19 +62,6 @@ bool same_pixels(const std::string& a, const std::string& b) {
 }
 
 #if EYETRACE_WITH_MPI
-
-pid_t spawn_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  std::vector<std::string> words = {"--oversubscribe", "-n", std::to_string(ranks), test::eyetrace_binary()};
-  words.insert(words.end(), args.begin(), args.end());
-  return test::spawn_logged("mpirun", words, log);
-}
-
-int run_mpirun(int ranks, const std::vector<std::string>& args, const std::string& log) {
-  const pid_t pid = spawn_mpirun(ranks, args, log);
-  return pid > 0 ? test::wait_exit(pid) : -1;
-}
 
 TEST(MpiSweep, RanksRenderTheLocalSweepsBytesAndReportAFailingJob) {
   TempDir dir("eyetrace_mpi_sweep");
