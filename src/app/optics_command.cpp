@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -54,88 +55,89 @@ struct OpticsArgs {
   std::string psf_scale = "log";       // the PSF image of --plot DIR: log | linear
 };
 
-std::vector<double> parse_fields(const std::string& text) {
-  std::vector<double> fields;
+// The number `text` spells, whole (strtod's reading, so "inf" and "nan" too); none when it is
+// empty or has anything after the number. Callers add their own range checks.
+std::optional<double> to_number(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  return v;
+}
+
+// Comma-separated numbers, each accepted by `ok`; otherwise (or when there are none) an error.
+template <typename Ok>
+std::vector<double> parse_list(const std::string& text, Ok ok, const std::string& bad, const std::string& none) {
+  std::vector<double> values;
   std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v) || std::abs(v) >= 85.0)
-      throw_error(
-          fmt::format("--fields \"{}\": expected comma-separated field angles in degrees, each within "
-                      "(-85, 85)",
-                      text));
-    fields.push_back(v);
+  for (std::string item; std::getline(in, item, ',');) {
+    const std::optional<double> v = to_number(item);
+    if (!v || !std::isfinite(*v) || !ok(*v)) throw_error(bad);
+    values.push_back(*v);
   }
-  if (fields.empty()) throw_error("--fields: give at least one field angle");
-  return fields;
+  if (values.empty()) throw_error(none);
+  return values;
+}
+
+std::vector<double> parse_fields(const std::string& text) {
+  return parse_list(
+      text, [](double v) { return std::abs(v) < 85.0; },
+      fmt::format("--fields \"{}\": expected comma-separated field angles in degrees, each within (-85, 85)", text),
+      "--fields: give at least one field angle");
 }
 
 // Comma-separated MTF frequencies in cycles per degree, each finite and >= 0.
 std::vector<double> parse_freqs(const std::string& text) {
-  std::vector<double> freqs;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v) || v < 0.0)
-      throw_error(fmt::format("--freqs \"{}\": expected comma-separated frequencies in cycles/deg, each >= 0", text));
-    freqs.push_back(v);
-  }
-  if (freqs.empty()) throw_error("--freqs: give at least one frequency");
-  return freqs;
+  return parse_list(
+      text, [](double v) { return v >= 0.0; },
+      fmt::format("--freqs \"{}\": expected comma-separated frequencies in cycles/deg, each >= 0", text),
+      "--freqs: give at least one frequency");
 }
 
 double parse_distance(const std::string& text) {
   if (text.empty() || text == "inf" || text == "infinity") return std::numeric_limits<double>::infinity();
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !(v > 0.0))
+  const std::optional<double> v = to_number(text);
+  if (!v || !(*v > 0.0))
     throw_error(fmt::format("--object-distance \"{}\": expected a positive distance in metres (or \"inf\")", text));
-  return v;
+  return *v;
 }
 
 // Two comma-separated numbers.
 std::pair<double, double> parse_pair(const char* flag, const std::string& text) {
   const size_t comma = text.find(',');
-  char* end = nullptr;
-  const std::string a = text.substr(0, comma), b = comma == std::string::npos ? "" : text.substr(comma + 1);
-  const double x = std::strtod(a.c_str(), &end);
-  const bool ok_a = !a.empty() && end == a.c_str() + a.size();
-  const double y = std::strtod(b.c_str(), &end);
-  const bool ok_b = !b.empty() && end == b.c_str() + b.size();
-  if (comma == std::string::npos || !ok_a || !ok_b || !std::isfinite(x) || !std::isfinite(y))
+  const std::optional<double> x = to_number(text.substr(0, comma)),
+                              y = comma == std::string::npos ? std::nullopt : to_number(text.substr(comma + 1));
+  if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
     throw_error(fmt::format("{} \"{}\": expected two wavelengths in nm, e.g. 400,700", flag, text));
-  return {x, y};
+  return {*x, *y};
+}
+
+// Options as they stand after `flag` was read: optics::validate's complaint, if any, naming the flag.
+template <typename Options>
+void check_flag(const char* flag, const std::string& text, const Options& o) {
+  try {
+    optics::validate(o);
+  } catch (const optics::OpticsError& e) {
+    throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
+  }
 }
 
 // The chromatic options of the three flags; each flag is checked on its own so the error names it.
 optics::ChromaticOptions parse_chromatic(const OpticsArgs& a) {
   optics::ChromaticOptions o;
-  auto check = [](const char* flag, const std::string& text, const optics::ChromaticOptions& c) {
-    try {
-      optics::validate(c);
-    } catch (const optics::OpticsError& e) {
-      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
-    }
-  };
   optics::ChromaticOptions range;
   std::tie(range.min_wavelength_nm, range.max_wavelength_nm) = parse_pair("--chromatic-range", a.chromatic_range);
   range.step_nm = std::min(range.step_nm, std::abs(range.max_wavelength_nm - range.min_wavelength_nm));
-  check("--chromatic-range", a.chromatic_range, range);
+  check_flag("--chromatic-range", a.chromatic_range, range);
   o.min_wavelength_nm = range.min_wavelength_nm, o.max_wavelength_nm = range.max_wavelength_nm;
   o.step_nm = range.step_nm;
   if (!a.chromatic_step.empty()) {
-    char* end = nullptr;
-    o.step_nm = std::strtod(a.chromatic_step.c_str(), &end);
-    if (end != a.chromatic_step.c_str() + a.chromatic_step.size())
-      throw_error(fmt::format("--chromatic-step \"{}\": expected a step in nm, e.g. 10", a.chromatic_step));
-    check("--chromatic-step", a.chromatic_step, o);
+    const std::optional<double> step = to_number(a.chromatic_step);
+    if (!step) throw_error(fmt::format("--chromatic-step \"{}\": expected a step in nm, e.g. 10", a.chromatic_step));
+    o.step_nm = *step;
+    check_flag("--chromatic-step", a.chromatic_step, o);
   }
   std::tie(o.tca_short_nm, o.tca_long_nm) = parse_pair("--tca-wavelengths", a.tca_wavelengths);
-  check("--tca-wavelengths", a.tca_wavelengths, o);
+  check_flag("--tca-wavelengths", a.tca_wavelengths, o);
   return o;
 }
 
@@ -143,35 +145,26 @@ optics::ChromaticOptions parse_chromatic(const OpticsArgs& a) {
 optics::WavefrontOptions parse_wave(const OpticsArgs& a) {
   optics::WavefrontOptions o;
   auto number = [](const char* flag, const std::string& text, const char* example) {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-      throw_error(fmt::format("{} \"{}\": expected {}", flag, text, example));
-    return v;
+    const std::optional<double> v = to_number(text);
+    if (!v || !std::isfinite(*v)) throw_error(fmt::format("{} \"{}\": expected {}", flag, text, example));
+    return *v;
   };
-  auto check = [&o](const char* flag, const std::string& text) {
-    try {
-      optics::validate(o);
-    } catch (const optics::OpticsError& e) {
-      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
-    }
-  };
+  // A whole number of samples or a radial order; anything else becomes 0, which validate refuses.
+  auto whole = [](double v) { return v == std::floor(v) && std::abs(v) < 1e6 ? static_cast<int>(v) : 0; };
   if (!a.wave_pupil.empty()) {
     o.pupil_radius_mm = 0.5 * number("--wave-pupil", a.wave_pupil, "an entrance-pupil diameter in mm, e.g. 6");
     if (!(o.pupil_radius_mm > 0.0)) throw_error(fmt::format("--wave-pupil \"{}\": must be > 0 mm", a.wave_pupil));
-    check("--wave-pupil", a.wave_pupil);
+    check_flag("--wave-pupil", a.wave_pupil, o);
   }
   if (!a.wave_wavelength.empty()) {
     o.wavelength_nm = number("--wave-wavelength", a.wave_wavelength, "a wavelength in nm, e.g. 555");
     if (o.wavelength_nm == 0.0) throw_error("--wave-wavelength \"0\": give a wavelength in nm");
-    check("--wave-wavelength", a.wave_wavelength);
+    check_flag("--wave-wavelength", a.wave_wavelength, o);
   }
-  const double grid = number("--wave-grid", a.wave_grid, "a number of samples across the pupil, e.g. 64");
-  o.grid = grid == std::floor(grid) && std::abs(grid) < 1e6 ? static_cast<int>(grid) : 0;
-  check("--wave-grid", a.wave_grid);
-  const double order = number("--zernike-order", a.zernike_order, "a radial order, e.g. 6");
-  o.zernike_order = order == std::floor(order) && std::abs(order) < 1e6 ? static_cast<int>(order) : 0;
-  check("--zernike-order", a.zernike_order);
+  o.grid = whole(number("--wave-grid", a.wave_grid, "a number of samples across the pupil, e.g. 64"));
+  check_flag("--wave-grid", a.wave_grid, o);
+  o.zernike_order = whole(number("--zernike-order", a.zernike_order, "a radial order, e.g. 6"));
+  check_flag("--zernike-order", a.zernike_order, o);
   return o;
 }
 
@@ -187,29 +180,20 @@ std::function<double(double)> blackbody(double kelvin) {
 // The polychromatic options of their flags, each checked on its own so the error names it.
 optics::PolychromaticOptions parse_polychromatic(const OpticsArgs& a) {
   optics::PolychromaticOptions o;
-  auto check = [&o](const char* flag, const std::string& text) {
-    try {
-      optics::validate(o);
-    } catch (const optics::OpticsError& e) {
-      throw_error(fmt::format("{} \"{}\": {}", flag, text, e.what()));
-    }
-  };
   std::tie(o.min_wavelength_nm, o.max_wavelength_nm) = parse_pair("--poly-range", a.poly_range);
   o.step_nm = std::min(o.step_nm, std::abs(o.max_wavelength_nm - o.min_wavelength_nm));
-  check("--poly-range", a.poly_range);
-  char* end = nullptr;
-  o.step_nm = std::strtod(a.poly_step.c_str(), &end);
-  if (a.poly_step.empty() || end != a.poly_step.c_str() + a.poly_step.size())
-    throw_error(fmt::format("--poly-step \"{}\": expected a step in nm, e.g. 10", a.poly_step));
-  check("--poly-step", a.poly_step);
+  check_flag("--poly-range", a.poly_range, o);
+  const std::optional<double> step = to_number(a.poly_step);
+  if (!step) throw_error(fmt::format("--poly-step \"{}\": expected a step in nm, e.g. 10", a.poly_step));
+  o.step_nm = *step;
+  check_flag("--poly-step", a.poly_step, o);
   if (a.poly_source.rfind("blackbody:", 0) == 0) {
-    const std::string t = a.poly_source.substr(10);
-    const double kelvin = std::strtod(t.c_str(), &end);
-    if (t.empty() || end != t.c_str() + t.size() || !(kelvin >= 500.0 && kelvin <= 1e5))
+    const std::optional<double> kelvin = to_number(a.poly_source.substr(10));
+    if (!kelvin || !(*kelvin >= 500.0 && *kelvin <= 1e5))
       throw_error(
           fmt::format("--poly-source \"{}\": expected blackbody:KELVIN with 500 <= KELVIN <= 100000", a.poly_source));
-    o.source = blackbody(kelvin);
-    o.source_name = fmt::format("blackbody {:g} K", kelvin);
+    o.source = blackbody(*kelvin);
+    o.source_name = fmt::format("blackbody {:g} K", *kelvin);
   } else if (a.poly_source != "equal") {
     throw_error(
         fmt::format("--poly-source \"{}\": expected \"equal\" (equal energy) or blackbody:KELVIN", a.poly_source));
