@@ -13,10 +13,6 @@ namespace eyetrace {
 
 namespace {
 
-void check(int code, const char* what) {
-  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
-}
-
 // The values one tile contributes to share() and collect(): its count, then per pixel
 // (row-major) the film's accumulators and, adaptive, the pixel's count and target. Counts are
 // small integers, exact in a double.
@@ -68,53 +64,38 @@ std::vector<int> offsets_of(const std::vector<int>& counts) {
 
 }  // namespace
 
-MpiRenderGroup::MpiRenderGroup() {
-  int provided = 0;
-  check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
-}
-
-MpiRenderGroup::~MpiRenderGroup() { MPI_Finalize(); }
-
-void MpiRenderGroup::abort_job() {
-  if (size_ == 1) return;
-  std::fprintf(stderr, "eyetrace: rank %d of %d stops the job after an error\n", rank_, size_);
-  MPI_Abort(MPI_COMM_WORLD, 1);
-}
-
 bool MpiRenderGroup::any(bool v) {
   int in = v ? 1 : 0, out = 0;
-  check(MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
+  mpi_check(MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
   return out != 0;
 }
 
 int MpiRenderGroup::min(int v) {
   int out = 0;
-  check(MPI_Allreduce(&v, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
   return out;
 }
 
 double MpiRenderGroup::max(double v) {
   double out = 0;
-  check(MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
   return out;
 }
 
 uint64_t MpiRenderGroup::sum(uint64_t v) {
   uint64_t out = 0;
-  check(MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
   return out;
 }
 
 uint64_t MpiRenderGroup::broadcast(uint64_t v) {
-  check(MPI_Bcast(&v, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  mpi_check(MPI_Bcast(&v, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
   return v;
 }
 
 std::vector<double> MpiRenderGroup::gather(double v) {
-  std::vector<double> all(rank_ == 0 ? size_t(size_) : 0);
-  check(MPI_Gather(&v, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD), "MPI_Gather");
+  std::vector<double> all(rank() == 0 ? size_t(size()) : 0);
+  mpi_check(MPI_Gather(&v, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD), "MPI_Gather");
   return all;
 }
 
@@ -134,8 +115,8 @@ std::vector<double> MpiRenderGroup::own_tiles(const Film& film, const TileProgre
 void MpiRenderGroup::unpack_others(const std::vector<double>& all, const std::vector<int>& offsets, Film& film,
                                    TileProgress& tp) const {
   const size_t tiles = tp.done.size();
-  for (int r = 0; r < size_; ++r) {
-    if (r == rank_) continue;  // its own tiles are already in place
+  for (int r = 0; r < size(); ++r) {
+    if (r == rank()) continue;  // its own tiles are already in place
     const double* in = all.data() + offsets[size_t(r)];
     for (size_t t = 0; t < tiles; ++t)
       if (tile_owner(t, tiles) == r) in = unpack_tile(t, in, film, tp);
@@ -145,32 +126,32 @@ void MpiRenderGroup::unpack_others(const std::vector<double>& all, const std::ve
 void MpiRenderGroup::share(Film& film, TileProgress& tp) {
   const std::vector<double> mine = own_tiles(film, tp);
   const int count = int(mine.size());
-  std::vector<int> counts(static_cast<size_t>(size_));
-  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
+  std::vector<int> counts(static_cast<size_t>(size()));
+  mpi_check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
   const std::vector<int> offsets = offsets_of(counts);
   std::vector<double> all(size_t(offsets.back()) + size_t(counts.back()));
-  check(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                       MPI_COMM_WORLD),
-        "MPI_Allgatherv");
+  mpi_check(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                           MPI_COMM_WORLD),
+            "MPI_Allgatherv");
   unpack_others(all, offsets, film, tp);
 }
 
 void MpiRenderGroup::collect(Film& film, TileProgress& tp) {
   // Rank 0 sends nothing (its tiles are in place); the others send theirs to it alone.
-  const std::vector<double> mine = rank_ == 0 ? std::vector<double>() : own_tiles(film, tp);
+  const std::vector<double> mine = rank() == 0 ? std::vector<double>() : own_tiles(film, tp);
   const int count = int(mine.size());
-  std::vector<int> counts(rank_ == 0 ? static_cast<size_t>(size_) : 0);
-  check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
+  std::vector<int> counts(rank() == 0 ? static_cast<size_t>(size()) : 0);
+  mpi_check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
   std::vector<int> offsets;
   std::vector<double> all;
-  if (rank_ == 0) {
+  if (rank() == 0) {
     offsets = offsets_of(counts);
     all.resize(size_t(offsets.back()) + size_t(counts.back()));
   }
-  check(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-                    MPI_COMM_WORLD),
-        "MPI_Gatherv");
-  if (rank_ == 0) unpack_others(all, offsets, film, tp);
+  mpi_check(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+                        MPI_COMM_WORLD),
+            "MPI_Gatherv");
+  if (rank() == 0) unpack_others(all, offsets, film, tp);
 }
 
 }  // namespace eyetrace

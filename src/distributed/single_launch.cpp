@@ -10,14 +10,12 @@ namespace eyetrace {
 
 namespace {
 
-// Open MPI's and MPICH's launchers tell each process how many there are.
 void refuse_several_ranks(const char* what) {
-  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-    if (const char* n = std::getenv(var); n && std::atoi(n) > 1)
-      throw_error(fmt::format(
-          "this eyetrace was built without MPI, but it was started as one of {} processes ({}): each would {}. "
-          "Rebuild with MPI (libopenmpi-dev installed; CMake finds it) or run one process",
-          n, var, what));
+  if (const int n = launched_processes(); n > 1)
+    throw_error(
+        fmt::format("this eyetrace was built without MPI, but it was started as one of {} processes: each would {}. "
+                    "Rebuild with MPI (libopenmpi-dev installed; CMake finds it) or run one process",
+                    n, what));
 }
 
 }  // namespace
@@ -31,7 +29,5 @@ std::unique_ptr<SweepGroup> join_sweep_group() {
   refuse_several_ranks("run every job of the sweep");
   return std::make_unique<SweepGroup>();
 }
-
-bool built_with_mpi() { return false; }
 
 }  // namespace eyetrace
