@@ -239,9 +239,7 @@ std::optional<AdaptiveOptions> adaptive_options(const RenderArgs& a, const Sampl
 
 // How the samples spread over the pixels: for --stats and the summary line.
 nlohmann::json spp_distribution(const TileProgress& tiles, const PixelBounds& b) {
-  std::vector<int> n = tiles.adaptive() ? tiles.pixel_done : std::vector<int>();
-  if (n.empty())
-    for (size_t t = 0; t < tiles.done.size(); ++t) n.insert(n.end(), tiles.tile_bounds(t, b).area(), tiles.done[t]);
+  std::vector<int> n = tiles.pixel_counts(b);
   std::sort(n.begin(), n.end());
   double sum = 0;
   std::map<int, size_t> histogram;
@@ -268,15 +266,7 @@ void write_spp_image(const std::string& path, const TileProgress& tiles, const P
   img.height = b.height();
   img.channels = 1;
   img.channel_names = {"spp"};
-  img.pixels.resize(b.area());
-  for (size_t t = 0; t < tiles.done.size(); ++t) {
-    const PixelBounds tb = tiles.tile_bounds(t, b);
-    for (int y = tb.lo.y; y < tb.hi.y; ++y)
-      for (int x = tb.lo.x; x < tb.hi.x; ++x) {
-        const size_t i = size_t(y - b.lo.y) * size_t(b.width()) + size_t(x - b.lo.x);
-        img.pixels[i] = float(tiles.adaptive() ? tiles.pixel_done[i] : tiles.done[t]);
-      }
-  }
+  for (int n : tiles.pixel_counts(b)) img.pixels.push_back(float(n));
   write_image(path, img, {{"eyetrace:channel", "samples per pixel"}});
 }
 

@@ -47,6 +47,18 @@ struct TileProgress {
   // Every pixel has all the samples it will get: `spp` each, or, adaptive, its target with no
   // pass planned beyond it.
   bool complete(int spp) const { return adaptive() ? pixel_done == pixel_target : min_done() >= spp; }
+  // The samples each pixel holds, row-major over the bounds.
+  std::vector<int> pixel_counts(const PixelBounds& b) const {
+    if (adaptive()) return pixel_done;
+    std::vector<int> n(b.area());
+    for (size_t t = 0; t < done.size(); ++t) {
+      const PixelBounds tb = tile_bounds(t, b);
+      for (int y = tb.lo.y; y < tb.hi.y; ++y)
+        for (int x = tb.lo.x; x < tb.hi.x; ++x)
+          n[size_t(y - b.lo.y) * size_t(b.width()) + size_t(x - b.lo.x)] = done[t];
+    }
+    return n;
+  }
   // Camera samples the film holds in all.
   uint64_t samples(const PixelBounds& b) const {
     uint64_t n = 0;
