@@ -7,6 +7,7 @@
 #include "cameras/chief_ray.h"
 #include "cameras/eye_params.h"
 #include "cameras/perspective_camera.h"
+#include "cameras/symmetric_stand_in.h"
 #include "core/error.h"
 #include "optics/optics_error.h"
 
@@ -59,25 +60,28 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
                                    IVec2 resolution, const Settings& settings)
     : prescription_(prescription),
       system_(prescription),
-      aiming_system_(aiming_prescription(prescription)),
+      aiming_system_(aiming_prescription(prescription.rotationally_symmetric() ? prescription
+                                                                               : symmetric_equivalent(prescription))),
       world_from_camera_(world_from_camera),
       resolution_(resolution),
       settings_(settings),
       dispersive_(settings.dispersive && system_.dispersive()) {
-  // The pupil sampler and the retina mapping rotate one traced meridian to every azimuth; a
-  // biconic or placed surface breaks that symmetry (issue 16 part 2 brings such eyes here).
-  if (!prescription.rotationally_symmetric())
-    throw optics::OpticsError(
-        fmt::format("the camera does not yet render a system that is not rotationally symmetric ('{}' has a "
-                    "biconic, decentred or tilted surface); `eyetrace optics` analyses it",
-                    prescription.name));
+  // The tables below rotate one traced meridian to every azimuth. A system that is not
+  // rotationally symmetric gets them from its symmetric stand-ins (symmetric_stand_in.h).
+  const bool symmetric = prescription.rotationally_symmetric();
+  if (!symmetric && settings.diffraction)
+    throw optics::OpticsError("diffraction",
+                              "the wave PSF table is traced along one meridian and needs a rotationally symmetric "
+                              "eye; this one has a biconic, decentred or tilted surface");
+  const optics::CompiledSystem equivalent(symmetric ? prescription : symmetric_equivalent(prescription));
+  const optics::CompiledSystem envelope(symmetric ? prescription : pupil_envelope(prescription));
   const Vec4 w = default_screen_window(resolution);
   screen_window_ = glm::dvec4(w);
   screen_scale_ = {(screen_window_[1] - screen_window_[0]) / resolution.x,
                    (screen_window_[3] - screen_window_[2]) / resolution.y};
   inv_screen_scale_ = 1.0 / screen_scale_;
   const double corner = std::sqrt(double(w[1]) * w[1] + double(w[3]) * w[3]);  // screen radius of a corner
-  retina_ = retina_of(prescription_, system_);
+  retina_ = retina_of(prescription_, equivalent);
   z_plane_ = system_.vertex_z(system_.image_index() - 1);
   if (retina_.vertex_z_mm - z_plane_ < kMinPlaneGap_mm)
     throw optics::OpticsError(
@@ -104,24 +108,26 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   PupilSampler::Options po = settings_.pupil;
   po.scan_half_width_mm = 1.5 * largest_semi_diameter(prescription_);
   if (dispersive_) po.relative_margin = std::fmax(po.relative_margin, kDispersiveMargin);
-  pupil_ = PupilSampler(system_, retina_, z_plane_, std::fmin(corner_arc, max_arc), angles_, po);
+  pupil_ = PupilSampler(envelope, retina_, z_plane_, std::fmin(corner_arc, max_arc), angles_, po);
   retina_points_ = RetinaPointTable(retina_, pupil_.max_arc_mm());
-  compute_normalisation();
+  compute_normalisation(equivalent);
   if (settings_.diffraction) build_psf_table(std::fmin(corner_arc, pupil_.max_arc_mm()));
 }
 
 // The mean weight at the image centre is C times the integral of cos(theta_retina)
 // cos(theta_plane) / d^2 over the passing disc of radius R on the plane at distance L, which is
 // pi R^2 / (R^2 + L^2): the solid angle integral of cos(theta) over the passing cone.
-void LensSystemCamera::compute_normalisation() {
+// `system` is the camera's system or, when that is not rotationally symmetric, its symmetric
+// equivalent: an eye exposes as the same eye without its astigmatism and decentrations.
+void LensSystemCamera::compute_normalisation(const optics::CompiledSystem& system) {
   const glm::dvec3 vertex(0.0, 0.0, retina_.vertex_z_mm);
-  if (!trace_towards_plane(system_, vertex, 0.0, 0.0, z_plane_).ok())
+  if (!trace_towards_plane(system, vertex, 0.0, 0.0, z_plane_).ok())
     throw optics::OpticsError("no ray from the centre of the retina passes the system along the axis");
   double lo = 0.0, hi = 1.0;
-  while (trace_towards_plane(system_, vertex, hi, 0.0, z_plane_).ok() && hi < 1e6) lo = hi, hi *= 2.0;
+  while (trace_towards_plane(system, vertex, hi, 0.0, z_plane_).ok() && hi < 1e6) lo = hi, hi *= 2.0;
   for (int i = 0; i < 100 && hi - lo > 1e-14 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (trace_towards_plane(system_, vertex, mid, 0.0, z_plane_).ok() ? lo : hi) = mid;
+    (trace_towards_plane(system, vertex, mid, 0.0, z_plane_).ok() ? lo : hi) = mid;
   }
   const double radius = 0.5 * (lo + hi), length = retina_.vertex_z_mm - z_plane_;
   normalisation_ = (radius * radius + length * length) / (kPiDouble * radius * radius);

@@ -122,7 +122,7 @@ class LensSystemCamera : public Camera {
                    IVec2* offset) const;
   static double area_jacobian(double screen_radius, double height, double slope);
   glm::dvec2 screen(Vec2 p_film) const;
-  void compute_normalisation();
+  void compute_normalisation(const optics::CompiledSystem& system);
 
   optics::Prescription prescription_;
   optics::CompiledSystem system_;

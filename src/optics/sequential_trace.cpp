@@ -203,16 +203,58 @@ const char* to_string(TraceBatchIsa isa) { return isa == TraceBatchIsa::Avx2 ? "
 
 void CompiledSystem::trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results,
                                        std::size_t count, int first, int last) const {
-  if (general_) {  // one ray at a time (placed_surface.h)
-    for (std::size_t j = 0; j < count; ++j)
-      results[j] = lambda_nm ? trace_range(rays[j], first, last, lambda_nm[j]) : trace_range(rays[j], first, last);
-    return;
-  }
   for (std::size_t base = 0; base < count; base += kTraceBatchSize)
     trace_block(rays + base, lambda_nm ? lambda_nm + base : nullptr, results + base,
                 std::min(kTraceBatchSize, count - base), first, last);
 }
 
+namespace {
+
+// Lanes of a block through surfaces first..last (all of them placed, traced one ray at a time
+// by step_placed), as trace_one does it: the same index bookkeeping, so a lane's bits are those
+// of the one-ray trace. Lanes not Ok stay as they are.
+template <bool Forward, bool PerRayWavelength>
+void placed_segment(const std::vector<trace_detail::Interface>& interfaces, const MediumLaw* laws,
+                    const std::vector<trace_detail::PlacedSurface>& placed, int first, int last, std::size_t n,
+                    kernel::Block& B) {
+  constexpr int step_dir = Forward ? 1 : -1;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (B.status[j] != kernel::kOk) continue;
+    glm::dvec3 o(B.ox[j], B.oy[j], B.oz[j]), d(B.dx[j], B.dy[j], B.dz[j]);
+    double lambda = 0.0, index = 0.0;
+    std::array<double, 4> w{};
+    if constexpr (PerRayWavelength) {
+      lambda = B.lambda[j];
+      w = dispersion::herzberger_weights(lambda);
+      const trace_detail::Interface& f = interfaces[static_cast<std::size_t>(first)];
+      index = kernel::side_index(Forward ? f.before : f.after, laws, lambda, w);
+    }
+    for (int i = first;; i += step_dir) {
+      const trace_detail::Interface& f = interfaces[static_cast<std::size_t>(i)];
+      kernel::Eta<double> eta;
+      const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws, lambda, w, index, eta);
+      const bool bends = refracts && eta.refracts;
+      const trace_detail::PlacedStep m = trace_detail::step_placed(placed[static_cast<std::size_t>(i)], f.sd2, f.role,
+                                                                   o, d, bends, bends ? eta.eta : 1.0);
+      if (m.status != TraceStatus::Ok) {
+        B.status[j] = kernel::code(m.status);
+        B.surface[j] = i;
+        break;
+      }
+      o = m.p, d = m.d;
+      if (i == last) break;
+    }
+    B.ox[j] = o.x, B.oy[j] = o.y, B.oz[j] = o.z;
+    B.dx[j] = d.x, B.dy[j] = d.y, B.dz[j] = d.z;
+  }
+}
+
+}  // namespace
+
+// A block of rays. A system with placed surfaces is cut into runs of kernel surfaces, traced
+// by the SIMD kernel, and runs of placed ones, traced lane by lane; between runs a lane
+// carries its point and unnormalised direction, and the index of its medium is evaluated
+// afresh from the same law, so every lane ends with the bits of trace_range.
 void CompiledSystem::trace_block(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t n,
                                  int first, int last) const {
   kernel::Block B;
@@ -229,8 +271,24 @@ void CompiledSystem::trace_block(const Ray* rays, const double* lambda_nm, Trace
     B.status[j] = kernel::code(TraceStatus::Missed), B.surface[j] = -1.0;
     B.lambda[j] = wavelength_nm_;
   }
-  block_tracer().load(std::memory_order_relaxed)(
-      {interfaces_.data(), laws_.data(), first, last, lambda_nm != nullptr, herzberger_}, B);
+  const bool per_ray = lambda_nm != nullptr, forward = first <= last;
+  const int step_dir = forward ? 1 : -1;
+  for (int i = first;;) {
+    const bool general = placed_[static_cast<std::size_t>(i)].general;
+    int j = i;
+    while (j != last && placed_[static_cast<std::size_t>(j + step_dir)].general == general) j += step_dir;
+    if (!general)
+      block_tracer().load(std::memory_order_relaxed)(
+          {interfaces_.data(), laws_.data(), i, j, forward, per_ray, herzberger_}, B);
+    else if (forward)
+      per_ray ? placed_segment<true, true>(interfaces_, laws_.data(), placed_, i, j, n, B)
+              : placed_segment<true, false>(interfaces_, laws_.data(), placed_, i, j, n, B);
+    else
+      per_ray ? placed_segment<false, true>(interfaces_, laws_.data(), placed_, i, j, n, B)
+              : placed_segment<false, false>(interfaces_, laws_.data(), placed_, i, j, n, B);
+    if (j == last) break;
+    i = j + step_dir;
+  }
   for (std::size_t j = 0; j < n; ++j) {
     const glm::dvec3 o(B.ox[j], B.oy[j], B.oz[j]);
     glm::dvec3 d(B.dx[j], B.dy[j], B.dz[j]);

@@ -145,9 +145,10 @@ class CompiledSystem {
 
   // The same for many rays at once: results[j] is what trace_range(rays[j], first, last,
   // lambda_nm[j]) gives, bit for bit; lambda_nm == nullptr traces every ray at the compiled
-  // wavelength, as trace_range(rays[j], first, last). Faster per ray for a rotationally
-  // symmetric system (rays in batches of kTraceBatchSize, several per SIMD register); a
-  // non-symmetric one loops over the single-ray general path. No allocation.
+  // wavelength, as trace_range(rays[j], first, last). Faster per ray: rays go in batches of
+  // kTraceBatchSize, several per SIMD register, through every run of rotationally symmetric,
+  // unplaced surfaces; a run of biconic or placed surfaces takes them one at a time (the
+  // single-ray general path). No allocation.
   void trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t count, int first,
                          int last) const;
   void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first, int last) const {

@@ -47,6 +47,7 @@ struct BlockJob {
   const Interface* interfaces;
   const MediumLaw* laws;
   int first, last;
+  bool forward;             // towards the image (first <= last) or away from it (first >= last)
   bool per_ray_wavelength;  // Block::lambda is set; else the compiled indices
   bool herzberger;          // some law is Navarro-Herzberger (the weights are needed)
 };
@@ -360,7 +361,7 @@ void block_surface(const BlockJob& job, int index, Block& B) {
 template <class V>
 void trace_block(const BlockJob& job, Block& B) {
   static_assert(Block::N % V::size == 0);
-  const bool forward = job.first <= job.last;
+  const bool forward = job.forward;  // first == last has either direction
   if (job.per_ray_wavelength) {
     // The weights of each lane's wavelength, and the index of the medium it starts in.
     const Interface& f = job.interfaces[job.first];

@@ -2,13 +2,15 @@
 // configured preset eyes (accommodation across each model's range, pupils 0.5-9 mm, fields of
 // view up to 179.9 degrees, all three mappings, odd image shapes), every returned ray is finite
 // with a unit direction and a weight in [0, max_weight()], and every returned ray really
-// passes the eye: traced back into the eye from the scene it lands on its retina point.
+// passes the eye: traced back into the eye from the scene it lands on its retina point. The
+// same for eyes with a random corneal cylinder and a random decentred iris.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "cameras/lens_system_camera.h"
+#include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
 #include "scene/parser.h"
 
@@ -110,6 +112,41 @@ TEST(LensSystemCameraSlow, TenMillionRandomSamplesAreFiniteUnitBoundedAndReal) {
       cameras, skipped, counts.samples, counts.rays, 100.0 * counts.rays / counts.samples, counts.reversed,
       counts.reverse_failures);
   EXPECT_GE(counts.samples, 10'000'000);
+  EXPECT_LT(counts.reverse_failures, counts.reversed / 1000 + 1);
+}
+
+// Eyes that are not rotationally symmetric (symmetric_stand_in.h): a random corneal cylinder at
+// a random axis and a random decentred iris on each preset model, dispersive or not.
+TEST(LensSystemCameraSlow, NonSymmetricEyesGiveFiniteBoundedRealRays) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::vector<std::string> models = {"navarro", "gullstrand", "legrand", "kooijman", "arizona", "escudero-sanz"};
+  Counts counts;
+  int cameras = 0;
+  while (counts.samples < 3'000'000) {
+    const std::string model = models[cameras % models.size()];
+    const double pupil = 1.0 + 7.0 * u(rng), fov = 1.0 + 150.0 * u(rng);
+    const std::string text = fmt::format("Camera \"{}\" \"float pupildiameter\" {} \"float fov\" {}{}", model, pupil,
+                                         fov, cameras % 2 ? "" : " \"float wavelength\" 555");
+    SceneEntity e = parse_directive_text(text, "Camera", "slow");
+    const IVec2 res(16 + int(300 * u(rng)), 16 + int(300 * u(rng)));
+    CameraContext ctx{e.params, Transform(), res, ""};
+    std::unique_ptr<Camera> plain = create_named_eye_camera(model)(ctx);
+    const auto& base = dynamic_cast<const LensSystemCamera&>(*plain);
+    optics::Prescription p = base.prescription();
+    const double cylinder = -6.0 * u(rng), axis = 180.0 * u(rng);
+    const double dx = 1.0 * (2.0 * u(rng) - 1.0), dy = 1.0 * (2.0 * u(rng) - 1.0);
+    optics::set_corneal_cylinder(p, cylinder, axis);
+    optics::set_pupil_decentration(p, dx, dy);
+    ++cameras;
+    const LensSystemCamera cam(p, Transform(), res, base.settings());
+    stress(cam, res, 100'000, rng, counts,
+           fmt::format("{} cylinder {} x {} decentred {} {}", text, cylinder, axis, dx, dy));
+    if (HasFailure()) return;
+  }
+  std::printf("%d non-symmetric cameras, %ld samples, %ld rays (%.1f%%), %ld reversed, %ld not reversible\n", cameras,
+              counts.samples, counts.rays, 100.0 * counts.rays / counts.samples, counts.reversed,
+              counts.reverse_failures);
   EXPECT_LT(counts.reverse_failures, counts.reversed / 1000 + 1);
 }
 

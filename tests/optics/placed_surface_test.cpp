@@ -244,14 +244,33 @@ TEST(PlacedSurface, GeneralBatchAndWavelengthTracesEqualSingleRaysBitForBit) {
   for (size_t j = 0; j < rays.size(); ++j) {
     const TraceResult one = sys.trace_reverse(rays[j]), compiled = blue.trace_reverse(rays[j]);
     EXPECT_EQ(batch[j].status, one.status);
+    EXPECT_EQ(batch[j].surface, one.surface);
     EXPECT_EQ(batch[j].ray.origin, one.ray.origin);
     EXPECT_EQ(batch[j].ray.direction, one.ray.direction);
     EXPECT_EQ(at450[j].status, compiled.status);
     EXPECT_EQ(at450[j].ray.origin, compiled.ray.origin);
     EXPECT_EQ(at450[j].ray.direction, compiled.ray.direction);
+    const TraceResult per_ray = sys.trace_range(rays[j], sys.image_index() - 1, 0, 450.0);
+    EXPECT_EQ(at450[j].surface, per_ray.surface);
+    EXPECT_EQ(at450[j].ray.origin, per_ray.ray.origin);
+    EXPECT_EQ(at450[j].ray.direction, per_ray.ray.direction);
     ok += one.ok();
   }
   EXPECT_GT(ok, 30);
+  // Forward, object -> image: the rays that left, turned round.
+  std::vector<Ray> in;
+  for (const TraceResult& r : batch)
+    if (r.ok()) in.push_back({r.ray.origin + r.ray.direction, -r.ray.direction});
+  std::vector<TraceResult> fwd(in.size());
+  std::vector<double> lambdas(in.size());
+  for (size_t j = 0; j < in.size(); ++j) lambdas[j] = 400.0 + 3.0 * double(j);
+  sys.trace_range_batch(in.data(), lambdas.data(), fwd.data(), in.size(), 0, sys.image_index());
+  for (size_t j = 0; j < in.size(); ++j) {
+    const TraceResult one = sys.trace_range(in[j], 0, sys.image_index(), lambdas[j]);
+    EXPECT_EQ(fwd[j].status, one.status);
+    EXPECT_EQ(fwd[j].ray.origin, one.ray.origin);
+    EXPECT_EQ(fwd[j].ray.direction, one.ray.direction);
+  }
 }
 
 }  // namespace
