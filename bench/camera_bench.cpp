@@ -114,6 +114,21 @@ void BM_NavarroBatched(benchmark::State& state) {
 }
 BENCHMARK(BM_NavarroBatched);
 
+// A -3 D myope corrected by a spectacle lens (two more surfaces before the cornea) or by a contact
+// lens (one more), against BM_NavarroBatched (issue 16's speed item: at least half its rate).
+void BM_NavarroSpectaclesBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float refractiveerror\" -3 "
+                          "\"float spectaclesphere\" -3.112"));
+}
+BENCHMARK(BM_NavarroSpectaclesBatched);
+void BM_NavarroContactLensBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float refractiveerror\" -3 "
+                          "\"float contactlens\" -3"));
+}
+BENCHMARK(BM_NavarroContactLensBatched);
+
 // The same with the batch trace on the baseline instruction set (SSE2) instead of the start-up
 // choice (AVX2 where the CPU has it): what a CPU without AVX2 gets.
 // The dispersive eye as a render drives it: the samples name their pixel's filter, so every

@@ -49,8 +49,9 @@ std::vector<ParamSpec> person_params() {
           .range(-optics::kMaxPupilDecentration_mm, optics::kMaxPupilDecentration_mm)
           .shown_default("0 0")
           .with_unit("mm")
-          .describe("[x y]: the iris moved off the axis, in the eye's frame (camera x, y). Analysed by `eyetrace "
-                    "optics`; the camera does not yet render it."),
+          .describe("[x y]: the iris moved off the axis, in the prescription frame of eye-models.md (+x is the "
+                    "camera's −x, +y its +y; the optics report's pupil `centre_mm`). Analysed by `eyetrace optics`; "
+                    "the camera does not yet render it."),
       param::real("age")
           .range(0, optics::kMaxAge_years)
           .shown_default("none")
@@ -127,7 +128,8 @@ PluginSpec make_eye_spec(bool with_model) {
               .range(-optics::kMaxRefractiveError_D, optics::kMaxRefractiveError_D)
               .with_unit("D")
               .describe(
-                  "Ametropia built in by changing the axial length: −2 is a myope whose relaxed far point is 0.5 m."),
+                  "The relaxed eye's refraction at the corneal vertex: −2 is a myope whose far point is 0.5 m. Built "
+                  "in by the axial length, or by the cornea's radius with `ametropia` `\"refractive\"`."),
           param::real("fov", kDefaultEyeFov_deg)
               .open_range(0, 180)
               .with_unit("deg")
