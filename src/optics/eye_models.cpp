@@ -1,7 +1,8 @@
 // Eye presets. Every model is a data file (eye_model.h), embedded at build time or registered
 // at run time; its accommodation is the law the file names (accommodation_laws.h). What else
-// varies with the options (pupil, refractive error, retina, wavelength) is applied here, in
-// that order, each step a small function of a Prescription. No model is named in this code.
+// varies with the options (age limit, refractive error, retina, pupil, corneal cylinder, iris
+// decentration, contact and spectacle lenses, wavelength) is applied here, in that order, each
+// step a small function of a Prescription in its own file. No model is named in this code.
 #include "optics/eye_models.h"
 
 #include <cmath>

@@ -1,8 +1,8 @@
-// Schematic eye presets: EyeOptions -> a validated Prescription (cornea first, iris stop at the
-// anterior lens vertex, retina last). Each model is one data file (data/eyes/<model>.json,
-// embedded at build time, or registered at run time with register_eye_model_file) naming its
-// accommodation law; refractive error, pupil, retina and wavelength are code. See
-// docs/eye-models.md.
+// Schematic eye presets: EyeOptions -> a validated Prescription (cornea first, or a contact or
+// spectacle lens before it; iris stop at the anterior lens vertex, retina last). Each model is
+// one data file (data/eyes/<model>.json, embedded at build time, or registered at run time with
+// register_eye_model_file) naming its accommodation law; refractive error, pupil, retina,
+// wavelength and a person's corrections are code. See docs/eye-models.md and docs/eye-camera.md.
 #pragma once
 
 #include <optional>
