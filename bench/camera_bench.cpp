@@ -11,7 +11,6 @@
 #include "cameras/perspective_camera.h"
 #include "filters/box_filter.h"
 #include "optics/airy_kernel.h"
-#include "optics/corneal_astigmatism.h"
 #include "optics/sequential_trace.h"
 #include "scene/parser.h"
 
@@ -119,14 +118,34 @@ BENCHMARK(BM_NavarroBatched);
 // decentred 0.3 mm, traced by the general path; rays drawn in the symmetric envelope's pupil
 // regions (symmetric_stand_in.h), so some are rejected: "useful" says how many.
 void BM_NavarroAstigmaticBatched(benchmark::State& state) {
-  const std::unique_ptr<Camera> plain = eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60");
-  const auto& base = dynamic_cast<const LensSystemCamera&>(*plain);
-  optics::Prescription p = base.prescription();
-  optics::set_corneal_cylinder(p, -1.5, 90.0);
-  optics::set_pupil_decentration(p, 0.3, 0.0);
-  run_batched(state, LensSystemCamera(p, Transform(), kResolution, base.settings()));
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float cylinder\" -1.5 \"float axis\" 90 "
+                          "\"float pupildecentration\" [0.3 0]"));
 }
 BENCHMARK(BM_NavarroAstigmaticBatched);
+// The issue's case: an astigmatic eye (-3 D myope, cylinder -1.5 x 90) with the spectacles that
+// correct it (a toric back surface: two more surfaces traced by the general path).
+void BM_NavarroAstigmaticSpectaclesBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float refractiveerror\" -3 "
+                          "\"float cylinder\" -1.5 \"float axis\" 90 \"float spectaclesphere\" -3.112 "
+                          "\"float spectaclecylinder\" -1.5 \"float spectacleaxis\" 90"));
+}
+BENCHMARK(BM_NavarroAstigmaticSpectaclesBatched);
+// A -3 D myope corrected by a spectacle lens (two more surfaces before the cornea) or by a contact
+// lens (one more), against BM_NavarroBatched (issue 16's speed item: at least half its rate).
+void BM_NavarroSpectaclesBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float refractiveerror\" -3 "
+                          "\"float spectaclesphere\" -3.112"));
+}
+BENCHMARK(BM_NavarroSpectaclesBatched);
+void BM_NavarroContactLensBatched(benchmark::State& state) {
+  run_batched(state, *eye("navarro",
+                          "\"float pupildiameter\" 5 \"float fov\" 60 \"float refractiveerror\" -3 "
+                          "\"float contactlens\" -3"));
+}
+BENCHMARK(BM_NavarroContactLensBatched);
 
 // The same with the batch trace on the baseline instruction set (SSE2) instead of the start-up
 // choice (AVX2 where the CPU has it): what a CPU without AVX2 gets.

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "optics/accommodation_amplitude.h"
+#include "optics/contact_lens.h"
+#include "optics/corneal_astigmatism.h"
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -19,6 +23,80 @@ std::string model_list() {
   std::string list;
   for (const std::string& m : optics::eye_model_names()) list += (list.empty() ? "`" : "`, `") + m;
   return list + "`";
+}
+
+// A person's eye (issue 16 part 2): ametropia kind, corneal astigmatism, decentred pupil, age,
+// spectacle and contact lenses. The optics of each is in src/optics (named in the docs).
+std::vector<ParamSpec> person_params() {
+  return {
+      param::string("ametropia", "axial")
+          .in({"axial", "refractive"})
+          .describe("How `refractiveerror` is built in: `\"axial\"` by the axial length (vitreous depth), "
+                    "`\"refractive\"` by the anterior corneal radius, solved so that the eye's paraxial refraction "
+                    "at the corneal vertex is `refractiveerror` (conic, lens and length stay the model's)."),
+      param::real("cylinder", 0)
+          .range(-20, 20)
+          .with_unit("D")
+          .describe("Astigmatism of the anterior cornea, as the eye's refraction cylinder at the corneal vertex "
+                    "(negative: minus cylinder, the meridian `axis` + 90 is the stronger). The meridian `axis` keeps "
+                    "the model's curvature. Such an eye is analysed by `eyetrace optics`; the camera does not yet "
+                    "render it."),
+      param::real("axis", 0).range(0, 180).with_unit("deg").describe(
+          "Axis of `cylinder`, TABO notation (0 at the examiner's right, counter-clockwise as the "
+          "examiner faces the eye)."),
+      param::reals("pupildecentration")
+          .size(2)
+          .range(-optics::kMaxPupilDecentration_mm, optics::kMaxPupilDecentration_mm)
+          .shown_default("0 0")
+          .with_unit("mm")
+          .describe("[x y]: the iris moved off the axis, in the prescription frame of eye-models.md (+x is the "
+                    "camera's −x, +y its +y; the optics report's pupil `centre_mm`). Analysed by `eyetrace optics`; "
+                    "the camera does not yet render it."),
+      param::real("age")
+          .range(0, optics::kMaxAge_years)
+          .shown_default("none")
+          .with_unit("years")
+          .describe("Refuses accommodation the eye cannot produce at this age: more than Hofstetter's (1950) "
+                    "maximum amplitude 25 − 0.4 × age D (never below 0). The accommodation compared is the change of "
+                    "refraction it produces (Navarro's parameter D is not it). No age: no limit."),
+      param::real("spectaclesphere")
+          .range(-optics::kMaxSpectaclePower_D, optics::kMaxSpectaclePower_D)
+          .shown_default("no lens")
+          .with_unit("D")
+          .describe("A spectacle lens of this back-vertex power in front of the eye (it or `spectaclecylinder` "
+                    "puts one there): a real two-surface lens, its back radius solved from the thick-lens formula. "
+                    "The eye camera's origin is then the lens's front vertex."),
+      param::real("spectaclecylinder", 0)
+          .range(-10, 10)
+          .with_unit("D")
+          .describe("The spectacle's cylinder (either sign), on a toric (biconic) back surface."),
+      param::real("spectacleaxis", 0).range(0, 180).with_unit("deg").describe("Axis of `spectaclecylinder`, TABO."),
+      param::real("vertexdistance", optics::kDefaultVertexDistance_mm)
+          .left_open_range(0, 50)
+          .with_unit("mm")
+          .describe("From the spectacle's back vertex to the corneal vertex (the eye's first vertex), on the axis."),
+      param::real("spectacleindex", optics::kDefaultSpectacleIndex)
+          .range(1.3, 2.0)
+          .describe("The spectacle's refractive index (1.5: CR-39, n_d 1.498); no dispersion."),
+      param::real("spectaclethickness")
+          .left_open_range(0, 30)
+          .shown_default("2, or a 1 mm edge")
+          .with_unit("mm")
+          .describe("The spectacle's centre thickness. Default 2 mm, thicker for a plus lens so that its edge is "
+                    "1 mm at its 50 mm diameter; a lens whose surfaces meet inside the diameter is an error."),
+      param::real("spectaclebasecurve")
+          .range(-optics::kMaxSpectaclePower_D, optics::kMaxSpectaclePower_D)
+          .shown_default("Vogel's rule")
+          .with_unit("D")
+          .describe("Front-surface power (n − 1)/R1. Default Vogel's rule on the spherical equivalent SE: SE + 6 "
+                    "(plus), SE/2 + 6 (minus), at least +0.5."),
+      param::real("contactlens", 0)
+          .range(-optics::kMaxContactLensPower_D, optics::kMaxContactLensPower_D)
+          .with_unit("D")
+          .describe("A soft contact lens of this back-vertex power (in air): a layer of index 1.43, 0.1 mm thick "
+                    "(more for plus, for a 0.05 mm edge), whose back is the cornea and whose front radius gives the "
+                    "power."),
+  };
 }
 
 // The eye cameras' table; `eye` also takes the model's name. Ranges that depend on the model
@@ -50,7 +128,8 @@ PluginSpec make_eye_spec(bool with_model) {
               .range(-optics::kMaxRefractiveError_D, optics::kMaxRefractiveError_D)
               .with_unit("D")
               .describe(
-                  "Ametropia built in by changing the axial length: −2 is a myope whose relaxed far point is 0.5 m."),
+                  "The relaxed eye's refraction at the corneal vertex: −2 is a myope whose far point is 0.5 m. Built "
+                  "in by the axial length, or by the cornea's radius with `ametropia` `\"refractive\"`."),
           param::real("fov", kDefaultEyeFov_deg)
               .open_range(0, 180)
               .with_unit("deg")
@@ -89,6 +168,7 @@ PluginSpec make_eye_spec(bool with_model) {
               .with_unit("m")
               .describe("Metres per scene unit (1: the scene is in metres; 0.001: in mm)."),
       };
+  params = params + person_params();
   return PluginSpec{"Camera", "a ray-traced schematic eye: the image on its retina",
                     "eyetrace's own: a ray-traced schematic eye. No shutter or screen-window parameters (they are "
                     "unused-parameter errors).",
@@ -120,6 +200,40 @@ void read_retina(const PluginParams& params, optics::EyeOptions& o) {
     params.fail("retina", fmt::format("eye model '{}' has a flat retina; give \"float retinaradius\" (mm) to "
                                       "curve it",
                                       o.model));
+}
+
+// The spectacle lens's parameters; none unless spectaclesphere or spectaclecylinder is given.
+std::optional<optics::SpectacleLens> read_spectacle(const PluginParams& params) {
+  if (!params.has("spectaclesphere") && !params.has("spectaclecylinder")) {
+    for (const char* name :
+         {"spectacleaxis", "vertexdistance", "spectacleindex", "spectaclethickness", "spectaclebasecurve"})
+      if (params.has(name))
+        params.fail(name, "there is no spectacle lens: give \"float spectaclesphere\" (and/or spectaclecylinder)");
+    return std::nullopt;
+  }
+  optics::SpectacleLens l;
+  l.sphere_D = params.has("spectaclesphere") ? params.get_double("spectaclesphere") : 0.0;
+  l.cylinder_D = params.get_double("spectaclecylinder");
+  l.axis_deg = params.get_double("spectacleaxis");
+  l.vertex_distance_mm = params.get_double("vertexdistance");
+  l.index = params.get_double("spectacleindex");
+  if (params.has("spectaclethickness")) l.centre_thickness_mm = params.get_double("spectaclethickness");
+  if (params.has("spectaclebasecurve")) l.base_curve_D = params.get_double("spectaclebasecurve");
+  return l;
+}
+
+void read_person(const PluginParams& params, optics::EyeOptions& o) {
+  o.ametropia =
+      params.get_string("ametropia") == "refractive" ? optics::Ametropia::Refractive : optics::Ametropia::Axial;
+  o.cylinder_D = params.get_double("cylinder");
+  o.axis_deg = params.get_double("axis");
+  if (params.has("pupildecentration")) {
+    const std::vector<float> d = params.get_floats("pupildecentration");  // the table admits exactly two
+    o.pupil_decentration_x_mm = d[0], o.pupil_decentration_y_mm = d[1];
+  }
+  if (params.has("age")) o.age_years = params.get_double("age");
+  o.spectacle = read_spectacle(params);
+  o.contact_lens_D = params.get_double("contactlens");
 }
 
 const PluginSpec& realistic_spec() {
@@ -166,6 +280,7 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
   try {
     optics::eye_model_variants(o.model);  // unknown model first, before anything depends on it
     read_retina(params, o);
+    read_person(params, o);
     return optics::make_eye(o);
   } catch (const optics::OpticsError& e) {
     // The eye options are named as the camera's parameters; an error naming none (an invalid

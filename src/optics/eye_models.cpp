@@ -1,7 +1,8 @@
 // Eye presets. Every model is a data file (eye_model.h), embedded at build time or registered
 // at run time; its accommodation is the law the file names (accommodation_laws.h). What else
-// varies with the options (pupil, refractive error, retina, wavelength) is applied here, in
-// that order, each step a small function of a Prescription. No model is named in this code.
+// varies with the options (age limit, refractive error, retina, pupil, corneal cylinder, iris
+// decentration, contact and spectacle lenses, wavelength) is applied here, in that order, each
+// step a small function of a Prescription in its own file. No model is named in this code.
 #include "optics/eye_models.h"
 
 #include <cmath>
@@ -12,10 +13,14 @@
 
 #include <fmt/format.h>
 
+#include "optics/accommodation_amplitude.h"
 #include "optics/accommodation_laws.h"
+#include "optics/contact_lens.h"
+#include "optics/corneal_astigmatism.h"
 #include "optics/embedded_data.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "optics/refractive_ametropia.h"
 
 namespace eyetrace::optics {
 
@@ -88,6 +93,45 @@ Prescription accommodated(const EyeModel& m, double A) {
   return find_accommodation_law(m.accommodation_law).apply(m, A);
 }
 
+// Axial: the vitreous depth; refractive: the anterior corneal radius (refractive_ametropia.h).
+// Either is solved on the relaxed eye and kept when it accommodates (all models).
+void build_in_refractive_error(const EyeModel& model, const EyeOptions& o, Prescription& p) {
+  const Prescription relaxed = accommodated(model, 0.0);
+  if (o.ametropia == Ametropia::Refractive) {
+    const double r0 = 1.0 / relaxed.surfaces[0].profile.curvature;
+    const double r = set_refraction_by_cornea(p, relaxed, o.refractive_error_D);
+    try {
+      validate(p);
+    } catch (const OpticsError& e) {
+      bad_option("refractiveerror", fmt::format("the anterior cornea of radius {:.4g} mm this needs: {}", r, e.what()));
+    }
+    p.notes.push_back(
+        fmt::format("refractive error {} D (refractive): anterior corneal radius {:.4f} mm instead of "
+                    "{:.4f} mm",
+                    o.refractive_error_D, r, r0));
+    return;
+  }
+  const double old_length = relaxed.axial_length_mm();
+  double new_length;
+  try {
+    new_length = image_position_for_refraction(relaxed, o.refractive_error_D);
+  } catch (const OpticsError& e) {
+    bad_option("refractiveerror", e.what());
+  }
+  p.surfaces[p.image_index() - 1].thickness_mm += new_length - old_length;
+  p.notes.push_back(fmt::format("refractive error {} D: axial length {:.4f} mm instead of {:.4f} mm",
+                                o.refractive_error_D, new_length, old_length));
+}
+
+// Corneal cylinder, decentred iris, contact lens, spectacle lens: each a function of its own file.
+void add_corrections(const EyeOptions& o, Prescription& p) {
+  if (o.cylinder_D != 0.0 || o.axis_deg != 0.0) set_corneal_cylinder(p, o.cylinder_D, o.axis_deg);
+  if (o.pupil_decentration_x_mm != 0.0 || o.pupil_decentration_y_mm != 0.0)
+    set_pupil_decentration(p, o.pupil_decentration_x_mm, o.pupil_decentration_y_mm);
+  if (o.contact_lens_D != 0.0) add_contact_lens(p, o.contact_lens_D);
+  if (o.spectacle) add_spectacle_lens(p, *o.spectacle);
+}
+
 void check_finite(const char* option, double value) {
   if (!std::isfinite(value)) bad_option(option, fmt::format("{} is not a finite number", value));
 }
@@ -149,28 +193,19 @@ Prescription make_eye(const EyeOptions& o) {
   Prescription p = accommodated(model, o.accommodation_D);
   p.variant = o.variant;
   const int retina = p.image_index();
-  const int vitreous = retina - 1;
 
-  if (o.refractive_error_D != 0.0) {
-    // Axial length from the relaxed eye; accommodation keeps the axial length (all models).
-    Prescription relaxed = accommodated(model, 0.0);
-    const double old_length = relaxed.axial_length_mm();
-    double new_length;
-    try {
-      new_length = image_position_for_refraction(relaxed, o.refractive_error_D);
-    } catch (const OpticsError& e) {
-      bad_option("refractiveerror", e.what());
-    }
-    p.surfaces[vitreous].thickness_mm += new_length - old_length;
-    p.notes.push_back(fmt::format("refractive error {} D: axial length {:.4f} mm instead of {:.4f} mm",
-                                  o.refractive_error_D, new_length, old_length));
+  if (o.age_years) {
+    const double amplitude_check_D = produced_accommodation_D(accommodated(model, 0.0), p);
+    check_accommodation_for_age(*o.age_years, o.accommodation_D, amplitude_check_D);
   }
+  if (o.refractive_error_D != 0.0) build_in_refractive_error(model, o, p);
   if (o.retina_radius_mm) p.surfaces[retina].profile = SurfaceProfile::from_radius(*o.retina_radius_mm, 0.0);
   set_stop_diameter(p, o.pupil_diameter_mm);
+  add_corrections(o, p);
   if (o.wavelength_nm != 0.0 && o.wavelength_nm != p.reference_wavelength_nm) {
     p = at_wavelength(p, o.wavelength_nm);
     for (const Medium& m : p.media)
-      if (m.dispersion.law == DispersionLaw::None) {
+      if (m.dispersion.law == DispersionLaw::None && m.index != 1.0) {
         p.notes.push_back(
             fmt::format("medium '{}' has no dispersion data: its index is "
                         "the same at every wavelength",
