@@ -25,6 +25,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import chromatic_figure as cf  # noqa: E402
+import pupil_figure as pf  # noqa: E402
 import figure_metrics as fm  # noqa: E402
 
 PANELS = ["figure3-thinlens", "figure3-navarro"]
@@ -45,7 +46,7 @@ def main():
     out = os.path.join(scratch, "figures")
     shutil.rmtree(out, ignore_errors=True)  # the tool skips panels it has made: make it render
     cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "figures"), "--quality", "smoke",
-           "--panels", "thinlens,navarro,chromatic", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
+           "--panels", "thinlens,navarro,chromatic,pupil", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
     run = subprocess.run(cmd, capture_output=True, text=True)
     print(run.stdout)
     if run.returncode != 0:
@@ -92,6 +93,7 @@ def main():
                 and not (r["rms_spot_um"] and 0 < float(r["rms_spot_um"]) < 1e4):
             fail(f"blur.csv rms_spot_um = {r['rms_spot_um']!r} in {r}")
     check_chromatic(out, run.stdout)
+    check_pupil(out, run.stdout)
     print("figures smoke: OK")
 
 
@@ -110,6 +112,23 @@ def check_chromatic(out, stdout):
     claims = [line for line in stdout.splitlines() if "HOLD" in line and ("fringe" in line or "window" in line)]
     if len(claims) != 3:
         fail(f"expected the chromatic figure's 3 claims in the output, found {claims}")
+
+
+def check_pupil(out, stdout):
+    for f in ["pupil.png", "pupil-mtf.png", "pupil.csv"] + [p.name + ".exr" for p in pf.panels("smoke")]:
+        if not os.path.exists(os.path.join(out, f)):
+            fail(f"missing pupil output {f}")
+    rows = list(csv.DictReader(open(os.path.join(out, "pupil.csv"))))
+    expected = {(p, 0.5 * (a + b)) for p in pf.PUPILS_MM for a, b in pf.BANDS_CPD}
+    if {(float(r["pupil_mm"]), float(r["freq_cpd"])) for r in rows} != expected:
+        fail(f"pupil.csv rows {sorted((r['pupil_mm'], r['freq_cpd']) for r in rows)}")
+    for r in rows:
+        for k in ("rendered_mtf", "sigma", "optics_mtf", "strehl"):
+            if not math.isfinite(float(r[k])):
+                fail(f"pupil.csv {k} = {r[k]} in {r}")
+    claims = [line for line in stdout.splitlines() if "HOLD" in line and "cpd" in line]
+    if len(claims) != 2:
+        fail(f"expected the pupil figure's 2 claims in the output, found {claims}")
 
 
 if __name__ == "__main__":
