@@ -77,21 +77,22 @@ Residual residual(const SurfaceProfile& s, const Line& l, double t) {
 // Newton's method on g from t (see intersect_biconic). Returns false when it stops without
 // meeting the convergence test.
 bool newton(const SurfaceProfile& s, const Line& l, double& t) {
+  // The residual at the new t is the one the step's domain check computed: one sag per step.
+  Residual r = residual(s, l, t);
   for (int it = 0; it < kBiconicMaxIterations; ++it) {
-    const Residual r = residual(s, l, t);
     if (!r.valid || !(r.slope != 0.0) || !std::isfinite(r.g)) return false;
     double step = -r.g / r.slope;
     if (!std::isfinite(step)) return false;
+    Residual next = residual(s, l, t + step);
     int halvings = 0;
-    while (!biconic_sag(s, l.u(t + step), l.v(t + step)).valid) {
+    while (!next.valid) {
       if (++halvings > 60) return false;
       step *= 0.5;
+      next = residual(s, l, t + step);
     }
     t += step;
-    if (std::abs(step) <= kBiconicStepTolerance_mm) {
-      const Residual at = residual(s, l, t);
-      return at.valid && std::abs(at.g) <= kBiconicResidualTolerance_mm;
-    }
+    if (std::abs(step) <= kBiconicStepTolerance_mm) return std::abs(next.g) <= kBiconicResidualTolerance_mm;
+    r = next;
   }
   return false;
 }
