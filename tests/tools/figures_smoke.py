@@ -25,6 +25,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import chromatic_figure as cf  # noqa: E402
+import clinical_figure as clin  # noqa: E402
 import pupil_figure as pf  # noqa: E402
 import figure_metrics as fm  # noqa: E402
 
@@ -46,7 +47,7 @@ def main():
     out = os.path.join(scratch, "figures")
     shutil.rmtree(out, ignore_errors=True)  # the tool skips panels it has made: make it render
     cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "figures"), "--quality", "smoke",
-           "--panels", "thinlens,navarro,chromatic,pupil", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
+           "--panels", "thinlens,navarro,chromatic,pupil,clinical", "--out", out, "--eyetrace", eyetrace, "--threads", "2"]
     run = subprocess.run(cmd, capture_output=True, text=True)
     print(run.stdout)
     if run.returncode != 0:
@@ -94,6 +95,7 @@ def main():
             fail(f"blur.csv rms_spot_um = {r['rms_spot_um']!r} in {r}")
     check_chromatic(out, run.stdout)
     check_pupil(out, run.stdout)
+    check_clinical(out, run.stdout)
     print("figures smoke: OK")
 
 
@@ -129,6 +131,23 @@ def check_pupil(out, stdout):
     claims = [line for line in stdout.splitlines() if "HOLD" in line and "cpd" in line]
     if len(claims) != 2:
         fail(f"expected the pupil figure's 2 claims in the output, found {claims}")
+
+
+def check_clinical(out, stdout):
+    for f in ["clinical.png", "clinical.csv"] + [name + ".exr" for name, _, _ in clin.EYES]:
+        if not os.path.exists(os.path.join(out, f)):
+            fail(f"missing clinical output {f}")
+    rows = list(csv.DictReader(open(os.path.join(out, "clinical.csv"))))
+    if [r["panel"] for r in rows] != [name for name, _, _ in clin.EYES]:
+        fail(f"clinical.csv panels {[r['panel'] for r in rows]}")
+    for r in rows:
+        for k in ("x_vs_emmetrope", "y_vs_emmetrope", "sphere", "cylinder", "M"):
+            if not math.isfinite(float(r[k])):
+                fail(f"clinical.csv {k} = {r[k]} in {r}")
+    claims = [line for line in stdout.splitlines() if "HOLD" in line and ("myope" in line or "astigmat" in line
+                                                                         or "spectacles" in line)]
+    if len(claims) != 4:
+        fail(f"expected the clinical figure's 4 claims in the output, found {claims}")
 
 
 if __name__ == "__main__":
