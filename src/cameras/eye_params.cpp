@@ -9,6 +9,8 @@
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
+#include "optics/zernike_file.h"
 #include "scene/scene_files.h"
 
 namespace eyetrace {
@@ -84,6 +86,11 @@ PluginSpec make_eye_spec(bool with_model) {
                         "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
                         "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
                         "(no spectral MIS). Eye cameras only."),
+          param::string("zernikefile", "")
+              .describe("A measured wavefront, relative to the scene file: OSA/ANSI Zernike coefficients (µm) over the "
+                        "entrance-pupil diameter they were measured at, applied as a phase plate on the iris "
+                        "(eye-camera.md, \"Zernike wavefront files\"). Rays beyond the measured pupil are blocked. "
+                        "The eye is then not rotationally symmetric: `eyetrace optics` analyses it."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
@@ -122,6 +129,20 @@ void read_retina(const PluginParams& params, optics::EyeOptions& o) {
                                       o.model));
 }
 
+// "zernikefile": the measured wavefront as a phase plate on the iris (optics/phase_plate.h).
+void add_zernike_plate(const PluginParams& params, const std::string& search_dir, optics::Prescription& eye) {
+  const std::string file = params.get_string("zernikefile");
+  if (file.empty()) return;
+  const std::string path = resolve_scene_file(search_dir, file);
+  if (!std::filesystem::exists(path))
+    params.fail_missing_file("zernikefile", fmt::format("cannot open \"{}\": no such file", path));
+  try {
+    optics::add_phase_plate(eye, optics::read_zernike_file(path));
+  } catch (const optics::OpticsError& e) {
+    params.fail("zernikefile", e.what());
+  }
+}
+
 const PluginSpec& realistic_spec() {
   static const PluginSpec spec{
       "Camera",
@@ -154,7 +175,8 @@ const PluginSpec& eye_camera_spec(const std::string& camera_name) {
 
 const PluginSpec& realistic_camera_spec() { return realistic_spec(); }
 
-optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& list) {
+optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& list,
+                                                  const std::string& search_dir) {
   const PluginParams params(list, eye_camera_spec(camera_name), camera_name);
   optics::EyeOptions o;
   o.model = camera_name == "eye" ? params.get_string("model") : camera_name;
@@ -166,7 +188,9 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
   try {
     optics::eye_model_variants(o.model);  // unknown model first, before anything depends on it
     read_retina(params, o);
-    return optics::make_eye(o);
+    optics::Prescription eye = optics::make_eye(o);
+    add_zernike_plate(params, search_dir, eye);
+    return eye;
   } catch (const optics::OpticsError& e) {
     // The eye options are named as the camera's parameters; an error naming none (an invalid
     // system) belongs to the model.
@@ -243,7 +267,7 @@ optics::Prescription prescription_from_camera_params(const std::string& camera_n
   if (camera_name == "realistic") return realistic_prescription_from_params(params, search_dir);
   std::vector<std::string> lens_cameras = optics::eye_model_names();
   if (camera_name == "eye" || std::find(lens_cameras.begin(), lens_cameras.end(), camera_name) != lens_cameras.end())
-    return eye_prescription_from_params(camera_name, params);
+    return eye_prescription_from_params(camera_name, params, search_dir);
   lens_cameras.insert(lens_cameras.begin(), {"eye", "realistic"});
   std::string list;
   for (const std::string& n : lens_cameras) list += (list.empty() ? "\"" : ", \"") + n + "\"";
