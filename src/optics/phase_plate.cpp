@@ -108,16 +108,16 @@ namespace {
 
 // The iris height that the rim of a measured pupil of radius r_mm maps to: the mean distance from
 // the stop's centre at which rays parallel to the axis (an axial object at infinity, as the
-// aberrometer's beacon is seen), entering through the entrance pupil's rim, cross the stop's
-// plane, over 16 azimuths (the iris may be decentred and the cornea astigmatic). The stop is
-// opened so that it blocks none of them.
+// aberrometer's beacon is seen), entering through the entrance pupil's rim, cross the stop (in
+// its own frame, where the plate's disc is), over 16 azimuths (the iris may be decentred and the cornea astigmatic).
+// The stop is opened so that it blocks none of them.
 double iris_radius_of_pupil_rim(const Prescription& p, double r_mm) {
   Prescription open = p;
   const int stop = p.stop_index();
   open.surfaces[stop].semi_diameter_mm = 1e3;
   const CompiledSystem sys(open);
   const Pupil ep = paraxial_analysis(p).entrance_pupil;
-  const glm::dvec3 centre(p.surfaces[stop].placement.decentre_x_mm, p.surfaces[stop].placement.decentre_y_mm, 0.0);
+  const trace_detail::PlacedSurface iris(p.surfaces[stop], sys.vertex_z(stop));  // its frame
   constexpr int kAzimuths = 16;
   double sum = 0.0;
   for (int k = 0; k < kAzimuths; ++k) {
@@ -130,7 +130,8 @@ double iris_radius_of_pupil_rim(const Prescription& p, double r_mm) {
           fmt::format("phase plate: a ray through the rim of the {} mm measured pupil does not reach "
                       "the iris ({})",
                       2.0 * r_mm, to_string(t.status)));
-    sum += std::hypot(t.ray.origin.x - centre.x, t.ray.origin.y - centre.y);
+    const glm::dvec3 local = iris.local_from_system * (t.ray.origin - iris.origin);
+    sum += std::hypot(local.x, local.y);
   }
   return sum / kAzimuths;
 }

@@ -54,7 +54,7 @@ class PhasePlate {
 
   // Where the plate came from, for reports: the file, its measured (entrance-)pupil diameter
   // and wavelength (0 = not stated), and the pupil magnification used to map the measured
-  // pupil onto the plate (entrance-pupil diameter / plate-plane diameter).
+  // pupil onto the plate (the measured pupil's diameter / the plate's, add_phase_plate).
   std::string origin;
   double measured_pupil_diameter_mm = 0.0;
   double measured_wavelength_nm = 0.0;
@@ -64,7 +64,8 @@ class PhasePlate {
   std::vector<double> coefficients_um_;
   double radius_mm_;
   int order_ = 0;
-  // W as a polynomial in u = x_osa / r, v = y_osa / r (um): poly_[index(p, q)] multiplies u^p v^q.
+  // W as a polynomial in u = x_osa / r, v = y_osa / r (um): poly_[p (order + 1) + q] multiplies
+  // u^p v^q (p + q <= order).
   std::vector<double> poly_;
 };
 
