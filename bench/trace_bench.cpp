@@ -6,18 +6,23 @@
 // through the general (scalar) path of a non-symmetric eye: /0 Navarro with a biconic cornea
 // of 1.50 D cylinder at axis 90, /1 that eye with the iris decentred 0.3 mm and the lens's
 // surfaces decentred 0.1 mm and tilted 1 deg (iris 0.3 mm in front of the lens).
+// BM_TraceMeasuredSingle: the plain Navarro eye with a measured wavefront to the 4th order (the
+// coefficients of scenes/measured-eye.zer over a 6 mm pupil) as a phase plate on its iris,
+// which takes the general path for every surface it has a plate on and the kernel for the rest.
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "optics/dispersion_formulas.h"
 #include "optics/eye_models.h"
+#include "optics/phase_plate.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
@@ -29,7 +34,8 @@ struct Setup {
   std::vector<Ray> rays;
   std::vector<double> lambda;
   explicit Setup(const char* model, int astigmatic = -1)
-      : p(astigmatic < 0 ? make(model) : make_astigmatic(model, astigmatic)), sys(p), rays(4096), lambda(rays.size()) {
+      : Setup(astigmatic < 0 ? make(model) : make_astigmatic(model, astigmatic)) {}
+  explicit Setup(Prescription prescription) : p(std::move(prescription)), sys(p), rays(4096), lambda(rays.size()) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     const double length = p.axial_length_mm(), z_stop = sys.vertex_z(sys.stop_index());
@@ -135,6 +141,28 @@ void BM_TraceAstigmaticSingle(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_TraceAstigmaticSingle)->Arg(0)->Arg(1);
+
+Prescription measured_navarro() {
+  Prescription p = Setup::make("navarro");
+  ZernikeFile f;
+  f.origin = "measured-eye.zer";
+  f.pupil_diameter_mm = 6.0;
+  f.max_order = 4;
+  f.coefficients_um = {0, 0, 0, -0.08, 0.25, 0.12, 0.03, -0.07, 0.02, -0.04, 0, 0, 0.10, 0, 0};
+  add_phase_plate(p, f);
+  return p;
+}
+
+void BM_TraceMeasuredSingle(benchmark::State& state) {
+  static const Setup s(measured_navarro());
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s.sys.trace_reverse(s.rays[i]));
+    i = (i + 1) & (s.rays.size() - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_TraceMeasuredSingle);
 
 void BM_TraceAstigmaticBatch(benchmark::State& state) {
   const Setup& s = astigmatic(static_cast<int>(state.range(0)));

@@ -13,6 +13,8 @@
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
+#include "optics/zernike_file.h"
 #include "scene/scene_files.h"
 
 namespace eyetrace {
@@ -39,8 +41,7 @@ std::vector<ParamSpec> person_params() {
           .with_unit("D")
           .describe("Astigmatism of the anterior cornea, as the eye's refraction cylinder at the corneal vertex "
                     "(negative: minus cylinder, the meridian `axis` + 90 is the stronger). The meridian `axis` keeps "
-                    "the model's curvature. Such an eye is analysed by `eyetrace optics`; the camera does not yet "
-                    "render it."),
+                    "the model's curvature."),
       param::real("axis", 0).range(0, 180).with_unit("deg").describe(
           "Axis of `cylinder`, TABO notation (0 at the examiner's right, counter-clockwise as the "
           "examiner faces the eye)."),
@@ -50,8 +51,7 @@ std::vector<ParamSpec> person_params() {
           .shown_default("0 0")
           .with_unit("mm")
           .describe("[x y]: the iris moved off the axis, in the prescription frame of eye-models.md (+x is the "
-                    "camera's −x, +y its +y; the optics report's pupil `centre_mm`). Analysed by `eyetrace optics`; "
-                    "the camera does not yet render it."),
+                    "camera's −x, +y its +y; the optics report's pupil `centre_mm`)."),
       param::real("age")
           .range(0, optics::kMaxAge_years)
           .shown_default("none")
@@ -163,6 +163,12 @@ PluginSpec make_eye_spec(bool with_model) {
                         "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
                         "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
                         "(no spectral MIS). Eye cameras only."),
+          param::string("zernikefile", "")
+              .describe("A measured wavefront, relative to the scene file: OSA/ANSI Zernike coefficients (µm) over the "
+                        "entrance-pupil diameter they were measured at, applied as a phase plate on the iris "
+                        "(eye-camera.md, \"Zernike wavefront files\"). Rays beyond the measured pupil are blocked. "
+                        "The eye is then not rotationally symmetric (eye-camera.md, \"Eyes that are not rotationally "
+                        "symmetric\")."),
           param::real("sceneunit", 1)
               .above(0)
               .with_unit("m")
@@ -236,6 +242,20 @@ void read_person(const PluginParams& params, optics::EyeOptions& o) {
   o.contact_lens_D = params.get_double("contactlens");
 }
 
+// "zernikefile": the measured wavefront as a phase plate on the iris (optics/phase_plate.h).
+void add_zernike_plate(const PluginParams& params, const std::string& search_dir, optics::Prescription& eye) {
+  const std::string file = params.get_string("zernikefile");
+  if (file.empty()) return;
+  const std::string path = resolve_scene_file(search_dir, file);
+  if (!std::filesystem::exists(path))
+    params.fail_missing_file("zernikefile", fmt::format("cannot open \"{}\": no such file", path));
+  try {
+    optics::add_phase_plate(eye, optics::read_zernike_file(path));
+  } catch (const optics::OpticsError& e) {
+    params.fail("zernikefile", e.what());
+  }
+}
+
 const PluginSpec& realistic_spec() {
   static const PluginSpec spec{
       "Camera",
@@ -268,7 +288,8 @@ const PluginSpec& eye_camera_spec(const std::string& camera_name) {
 
 const PluginSpec& realistic_camera_spec() { return realistic_spec(); }
 
-optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& list) {
+optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& list,
+                                                  const std::string& search_dir) {
   const PluginParams params(list, eye_camera_spec(camera_name), camera_name);
   optics::EyeOptions o;
   o.model = camera_name == "eye" ? params.get_string("model") : camera_name;
@@ -281,7 +302,9 @@ optics::Prescription eye_prescription_from_params(const std::string& camera_name
     optics::eye_model_variants(o.model);  // unknown model first, before anything depends on it
     read_retina(params, o);
     read_person(params, o);
-    return optics::make_eye(o);
+    optics::Prescription eye = optics::make_eye(o);
+    add_zernike_plate(params, search_dir, eye);
+    return eye;
   } catch (const optics::OpticsError& e) {
     // The eye options are named as the camera's parameters; an error naming none (an invalid
     // system) belongs to the model.
@@ -358,7 +381,7 @@ optics::Prescription prescription_from_camera_params(const std::string& camera_n
   if (camera_name == "realistic") return realistic_prescription_from_params(params, search_dir);
   std::vector<std::string> lens_cameras = optics::eye_model_names();
   if (camera_name == "eye" || std::find(lens_cameras.begin(), lens_cameras.end(), camera_name) != lens_cameras.end())
-    return eye_prescription_from_params(camera_name, params);
+    return eye_prescription_from_params(camera_name, params, search_dir);
   lens_cameras.insert(lens_cameras.begin(), {"eye", "realistic"});
   std::string list;
   for (const std::string& n : lens_cameras) list += (list.empty() ? "\"" : ", \"") + n + "\"";

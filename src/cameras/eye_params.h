@@ -25,7 +25,10 @@ const PluginSpec& eye_camera_spec(const std::string& camera_name);
 const PluginSpec& realistic_camera_spec();
 
 // The eye of camera `camera_name` ("eye" reads "string model"; "navarro" etc. are the model).
-optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params);
+// Files the parameters name (zernikefile) are relative to search_dir (the scene's directory;
+// empty: the working directory).
+optics::Prescription eye_prescription_from_params(const std::string& camera_name, const ParameterList& params,
+                                                  const std::string& search_dir = "");
 // fov, mapping, sceneunit of an eye camera.
 LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, const ParameterList& params);
 

@@ -72,7 +72,7 @@ LensSystemCamera::LensSystemCamera(const optics::Prescription& prescription, con
   if (!symmetric && settings.diffraction)
     throw optics::OpticsError("diffraction",
                               "the wave PSF table is traced along one meridian and needs a rotationally symmetric "
-                              "eye; this one has a biconic, decentred or tilted surface");
+                              "eye; this one has a biconic, decentred or tilted surface or a phase plate");
   const optics::CompiledSystem equivalent(symmetric ? prescription : symmetric_equivalent(prescription));
   const optics::CompiledSystem envelope(symmetric ? prescription : pupil_envelope(prescription));
   const Vec4 w = default_screen_window(resolution);
@@ -323,7 +323,7 @@ std::unique_ptr<Camera> create_eye_camera(const CameraContext& ctx) { return cre
 
 CameraFactory create_named_eye_camera(std::string model) {
   return [model](const CameraContext& ctx) -> std::unique_ptr<Camera> {
-    optics::Prescription p = eye_prescription_from_params(model, ctx.params);
+    optics::Prescription p = eye_prescription_from_params(model, ctx.params, ctx.search_dir);
     LensSystemCamera::Settings s = eye_view_settings(model, ctx.params);
     return make_camera(ctx, p, s, model == "eye" ? "model" : "pupildiameter");
   };

@@ -11,7 +11,7 @@ namespace eyetrace {
 namespace {
 
 bool symmetric_and_centred(const optics::Surface& s) {
-  return s.profile.rotationally_symmetric() && s.placement.is_identity();
+  return s.profile.rotationally_symmetric() && s.placement.is_identity() && !s.phase_plate;
 }
 
 }  // namespace
@@ -23,6 +23,7 @@ optics::Prescription symmetric_equivalent(const optics::Prescription& p) {
       s.profile = optics::SurfaceProfile::from_curvature(s.profile.mean_curvature(),
                                                          0.5 * (s.profile.conic + s.profile.cross_conic));
     s.placement = {};
+    s.phase_plate = nullptr;
   }
   return out;
 }
@@ -62,6 +63,9 @@ optics::Prescription pupil_envelope(const optics::Prescription& p) {
   if (iris.limited())
     opening.semi_diameter_mm += std::hypot(iris.placement.decentre_x_mm, iris.placement.decentre_y_mm);
   opening.placement = {};
+  // A phase plate on the iris (a measured wavefront) bends rays where they cross the iris's
+  // plane and blocks those beyond its disc: it never lets through a ray the opening stops.
+  opening.phase_plate = nullptr;
   out.surfaces.push_back(opening);
   out.surfaces.insert(out.surfaces.end(), p.surfaces.begin() + stop + 1, p.surfaces.end());
   return out;

@@ -1,11 +1,12 @@
 // Rotationally symmetric stand-ins that let the lens-system camera render a system that is not
-// rotationally symmetric (a toric cornea or spectacle lens, a decentred iris, a phase plate).
+// rotationally symmetric (a toric cornea or spectacle lens, a decentred iris, a measured
+// wavefront as a phase plate on the iris).
 // The camera's tables (field mapping, pupil regions, brightness normalisation) are built for
 // one meridian and rotated to every azimuth, which needs symmetry; every ray is still traced
 // through the real system. Two stand-ins serve two different purposes:
 //
 // - symmetric_equivalent: the same eye with each biconic replaced by its spherical-equivalent
-//   conic and every decentration and tilt removed. It defines which retina point a pixel shows
+//   conic and every decentration, tilt and phase plate removed. It defines which retina point a pixel shows
 //   (the field mapping) and the brightness normalisation, so an astigmatic or decentred eye
 //   frames the scene and exposes it as the same eye without those changes does.
 // - pupil_envelope: a system through which at least every ray of the real one passes, from
@@ -23,7 +24,7 @@
 
 namespace eyetrace {
 
-// Biconic -> conic of the mean curvature and mean conic; placements removed.
+// Biconic -> conic of the mean curvature and mean conic; placements and phase plates removed.
 optics::Prescription symmetric_equivalent(const optics::Prescription& p);
 
 // The envelope described above. Throws optics::OpticsError naming the surface when a surface

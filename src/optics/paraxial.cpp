@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "optics/optics_error.h"
+#include "optics/phase_plate.h"
 
 namespace eyetrace::optics {
 
@@ -21,10 +22,18 @@ RayMatrix multiply(const RayMatrix& m, const RayMatrix& n) {  // m after n
   return {m.A * n.A + m.B * n.C, m.A * n.B + m.B * n.D, m.C * n.A + m.D * n.C, m.C * n.B + m.D * n.D};
 }
 
+// A phase plate adds its paraxial power, the mean of its curvature matrix (phase_plate.h):
+// the scalar analysis sees a non-symmetric plate as its spherical equivalent, as it sees a
+// biconic (sphero_cylinder.h has the full matrix).
 RayMatrix refraction(const Prescription& p, int i) {
   const Surface& s = p.surfaces[i];
-  if (s.role == SurfaceRole::Image || s.profile.is_flat()) return {};
-  const double power = (s.index_after - p.index_before(i)) * s.profile.mean_curvature();  // 1/mm
+  if (s.role == SurfaceRole::Image) return {};
+  double power = s.profile.is_flat() ? 0.0 : (s.index_after - p.index_before(i)) * s.profile.mean_curvature();  // 1/mm
+  if (s.phase_plate) {
+    const PlateHessian h = s.phase_plate->hessian_at_centre();
+    power += 0.5 * (h.xx + h.yy);
+  }
+  if (power == 0.0) return {};
   return {1.0, 0.0, -power, 1.0};
 }
 

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "optics/optics_error.h"
+#include "optics/phase_plate.h"
 
 namespace eyetrace::optics {
 
@@ -46,7 +47,7 @@ double Prescription::axial_length_mm() const { return surfaces.empty() ? 0.0 : v
 
 bool Prescription::rotationally_symmetric() const {
   for (const Surface& s : surfaces)
-    if (!s.profile.rotationally_symmetric() || !s.placement.is_identity()) return false;
+    if (!s.profile.rotationally_symmetric() || !s.placement.is_identity() || s.phase_plate) return false;
   return true;
 }
 
@@ -138,6 +139,9 @@ void validate_surface(const Prescription& p, size_t i) {
     throw OpticsError(
         fmt::format("{}: index {} of medium '{}' is above {}", label(p, i), s.index_after, s.medium, kMaxIndex));
   validate_shape(p, i);
+  // The plate's rule (phase_plate.h) bends the direction tangential to a plane.
+  if (s.phase_plate && !s.profile.is_flat())
+    throw OpticsError(fmt::format("{}: a phase plate ({}) needs a flat surface", label(p, i), s.phase_plate->origin));
   if (s.profile.kind == ProfileKind::Plane && s.profile.curvature != 0.0)
     throw OpticsError(fmt::format("{}: a plane profile has curvature {}", label(p, i), s.profile.curvature));
   const double reach = s.profile.max_height();
@@ -279,6 +283,9 @@ std::string shape_note(const Surface& s) {
   if (!s.placement.is_identity())
     out += fmt::format("; decentre ({:g}, {:g}) mm, tilt ({:g}, {:g}) deg", s.placement.decentre_x_mm,
                        s.placement.decentre_y_mm, s.placement.tilt_x_deg, s.placement.tilt_y_deg);
+  if (const PhasePlate* plate = s.phase_plate.get())
+    out += fmt::format("; phase plate {}: order {}, measured over a {:g} mm pupil, {:.4g} mm here", plate->origin,
+                       plate->max_order(), plate->measured_pupil_diameter_mm, 2.0 * plate->radius_mm());
   return out;
 }
 

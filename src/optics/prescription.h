@@ -4,9 +4,11 @@
 // side; each surface carries the thickness to the next vertex and the medium after it. Surfaces
 // are numbered from 0 in every message and result. A surface may be biconic (conic_surface.h)
 // and may be decentred and tilted (surface_placement.h); the system is then not rotationally
-// symmetric and is traced by the general path of sequential_trace.h.
+// symmetric and is traced by the general path of sequential_trace.h. A flat surface may carry a
+// phase plate (phase_plate.h), which makes the system non-symmetric too.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,8 @@
 #include "optics/surface_placement.h"
 
 namespace eyetrace::optics {
+
+class PhasePlate;
 
 enum class SurfaceRole {
   Refract,  // an interface between two media
@@ -35,6 +39,9 @@ struct Surface {
   // Decentration and tilt of the surface's local frame; the clear aperture (and a stop's
   // opening) is centred on the local axis, so a decentred stop is a decentred iris.
   SurfacePlacement placement;
+  // A wavefront laid on the (flat) surface, e.g. an aberrometer's measurement on the iris; null
+  // for none. Shared: copies of a prescription (at_wavelength) keep the one plate.
+  std::shared_ptr<const PhasePlate> phase_plate;
 
   bool limited() const { return semi_diameter_mm > 0.0 && semi_diameter_mm < 1e300; }
 };
@@ -62,14 +69,15 @@ struct Prescription {
   double axial_length_mm() const;  // first vertex to image vertex
   double index_before(int surface) const { return surface == 0 ? object_index : surfaces[surface - 1].index_after; }
   const Medium* find_medium(const std::string& name) const;
-  // No biconic profile and no placement: the closed-form batched kernel traces the system.
+  // No biconic profile, no placement and no phase plate: the closed-form batched kernel traces
+  // the system.
   bool rotationally_symmetric() const;
 };
 
 // Throws OpticsError naming the surface and parameter at the first problem found: non-finite
 // numbers, thickness outside [0, 1e6] mm, index outside [1, 10], no or several stops, image not
 // last, a semi-diameter beyond a closed conic's reach, adjacent surfaces that cross within their
-// clear apertures.
+// clear apertures, a phase plate on a curved surface.
 void validate(const Prescription& p);
 
 // Same system with every surface index re-evaluated at lambda_nm from the media table (media

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -13,6 +14,7 @@
 
 #include "optics/embedded_data.h"
 #include "optics/optics_error.h"
+#include "optics/phase_plate.h"
 
 namespace eyetrace::optics {
 
@@ -85,6 +87,32 @@ std::pair<double, double> number_pair(const json& j, const char* key, const std:
   if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
     throw OpticsError(fmt::format("{}: '{}' must be a list of two numbers [x, y]", where, key));
   return {v[0].get<double>(), v[1].get<double>()};
+}
+
+// A phase plate as prescription_to_json writes it: the coefficients and the plate's diameter
+// (in its own plane) make it; the rest says where they came from.
+std::shared_ptr<const PhasePlate> read_phase_plate(const json& j, const std::string& where) {
+  if (!j.is_object()) throw OpticsError(fmt::format("{}: must be an object", where));
+  check_keys(j,
+             {"zernike_file", "zernike_osa_um", "measured_pupil_diameter_mm", "measured_wavelength_nm",
+              "pupil_magnification", "diameter_mm"},
+             where);
+  if (!j.contains("zernike_osa_um") || !j["zernike_osa_um"].is_array())
+    throw OpticsError(fmt::format("{}: 'zernike_osa_um' must be a list of numbers", where));
+  std::vector<double> c;
+  for (const json& v : j["zernike_osa_um"]) {
+    if (!v.is_number()) throw OpticsError(fmt::format("{}: 'zernike_osa_um' must be a list of numbers", where));
+    c.push_back(v.get<double>());
+  }
+  if (c.size() > static_cast<size_t>((kMaxZernikeFileOrder + 1) * (kMaxZernikeFileOrder + 2) / 2))
+    throw OpticsError(fmt::format("{}: more than the {} terms of order {}", where,
+                                  (kMaxZernikeFileOrder + 1) * (kMaxZernikeFileOrder + 2) / 2, kMaxZernikeFileOrder));
+  auto plate = std::make_shared<PhasePlate>(std::move(c), 0.5 * number(j, "diameter_mm", where));
+  plate->origin = j.value("zernike_file", std::string(where));
+  plate->measured_pupil_diameter_mm = number_or(j, "measured_pupil_diameter_mm", 0.0, where);
+  plate->measured_wavelength_nm = number_or(j, "measured_wavelength_nm", 0.0, where);
+  plate->pupil_magnification = number_or(j, "pupil_magnification", 1.0, where);
+  return plate;
 }
 
 // The optional fields of a biconic or placed surface (see prescription_io.h).
@@ -178,7 +206,7 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
     const std::string where = fmt::format("{}: surface {}", origin, i);
     check_keys(s,
                {"name", "radius_mm", "conic", "thickness_mm", "medium", "semi_diameter_mm", "role", "note",
-                "cross_radius_mm", "cross_conic", "axis_deg", "decentre_mm", "tilt_deg"},
+                "cross_radius_mm", "cross_conic", "axis_deg", "decentre_mm", "tilt_deg", "phase_plate"},
                where);
     Surface surface;
     surface.name = text(s, "name", where);
@@ -189,6 +217,7 @@ Prescription prescription_from_json(const json& j, const std::string& origin) {
       throw OpticsError(fmt::format("{}: radius_mm 0 is not a radius (use null for flat)", named));
     surface.profile = SurfaceProfile::from_radius(radius, number_or(s, "conic", 0.0, named));
     read_shape(s, surface, named);
+    if (s.contains("phase_plate")) surface.phase_plate = read_phase_plate(s["phase_plate"], named + ": phase_plate");
     surface.thickness_mm = number(s, "thickness_mm", named);
     surface.medium = text(s, "medium", named);
     surface.semi_diameter_mm = number_or(s, "semi_diameter_mm", 0.0, named);
@@ -244,6 +273,13 @@ json prescription_to_json(const Prescription& p) {
       e["decentre_mm"] = {s.placement.decentre_x_mm, s.placement.decentre_y_mm};
       e["tilt_deg"] = {s.placement.tilt_x_deg, s.placement.tilt_y_deg};
     }
+    if (const PhasePlate* plate = s.phase_plate.get())
+      e["phase_plate"] = {{"zernike_file", plate->origin},
+                          {"zernike_osa_um", plate->coefficients_um()},
+                          {"measured_pupil_diameter_mm", plate->measured_pupil_diameter_mm},
+                          {"measured_wavelength_nm", plate->measured_wavelength_nm},
+                          {"pupil_magnification", plate->pupil_magnification},
+                          {"diameter_mm", 2.0 * plate->radius_mm()}};
     surfaces.push_back(e);
   }
   return {{"format", "eyetrace-prescription"},

@@ -302,6 +302,20 @@ std::string format_report(const json& r) {
                        r[key].contains("centre_mm") ? fmt::format(", centre ({}, {}) mm", num(r[key]["centre_mm"][0]),
                                                                   num(r[key]["centre_mm"][1]))
                                                     : std::string());
+  for (size_t i = 0; r.contains("surfaces") && i < r["surfaces"].size(); ++i) {
+    const json& s = r["surfaces"][i];
+    if (!s.contains("phase_plate")) continue;
+    const json& plate = s["phase_plate"];
+    out += fmt::format(
+        "  phase plate on surface {} '{}': {} ({} OSA terms), measured over a {} mm pupil{}; {} mm here (pupil "
+        "magnification {})\n",
+        i, s["name"].get<std::string>(), plate["zernike_file"].get<std::string>(), plate["zernike_osa_um"].size(),
+        num(plate["measured_pupil_diameter_mm"], "{:g}"),
+        plate["measured_wavelength_nm"].get<double>() > 0.0
+            ? fmt::format(" at {:g} nm", plate["measured_wavelength_nm"].get<double>())
+            : std::string(),
+        num(plate["diameter_mm"], "{:.3f}"), num(plate["pupil_magnification"], "{:.4f}"));
+  }
   out += fmt::format(
       "  stop diameter {} mm; spot (source at {}):\n", num(r["stop_diameter_mm"], "{:.2f}"),
       r["spot_object_distance_m"].is_null() ? std::string("infinity") : num(r["spot_object_distance_m"], "{:.3f} m"));

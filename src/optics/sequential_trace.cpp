@@ -86,6 +86,10 @@ CompiledSystem::CompiledSystem(const Prescription& p) {
                             [](const MediumLaw& m) { return m.dispersion.law == DispersionLaw::NavarroHerzberger; });
 }
 
+double CompiledSystem::plate_path_mm(int surface, const glm::dvec3& point) const {
+  return trace_detail::plate_path_mm(placed_[surface], point);
+}
+
 double CompiledSystem::index_before(int surface, double lambda_nm) const {
   const double lambda = kernel::clamp_wavelength(lambda_nm, wavelength_nm_);
   return kernel::side_index(interfaces_[surface].before, laws_.data(), lambda, dispersion::herzberger_weights(lambda));
@@ -137,8 +141,11 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
     const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws_.data(), lambda, w, n, eta);
     if constexpr (General) {
       if (placed_[i].general) {
+        // The index the ray leaves into (a plate's rule needs it): refraction_at has just set n
+        // to it for a per-ray wavelength.
+        const double n_to = PerRayWavelength ? n : (Forward ? f.n_after : f.n_before);
         const trace_detail::PlacedStep m = trace_detail::step_placed(
-            placed_[i], f.sd2, f.role, o, d, refracts && eta.refracts, refracts && eta.refracts ? eta.eta : 1.0);
+            placed_[i], f.sd2, f.role, o, d, refracts && eta.refracts, refracts && eta.refracts ? eta.eta : 1.0, n_to);
         if (m.status != TraceStatus::Ok) return {m.status, i, {o, d}};
         o = m.p, d = m.d;
         if (points) points[Forward ? i - first : first - i] = o;
@@ -234,8 +241,10 @@ void placed_segment(const std::vector<trace_detail::Interface>& interfaces, cons
       kernel::Eta<double> eta;
       const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws, lambda, w, index, eta);
       const bool bends = refracts && eta.refracts;
+      // The index the ray leaves into, for a phase plate's rule, as trace_one takes it.
+      const double n_to = PerRayWavelength ? index : (Forward ? f.n_after : f.n_before);
       const trace_detail::PlacedStep m = trace_detail::step_placed(placed[static_cast<std::size_t>(i)], f.sd2, f.role,
-                                                                   o, d, bends, bends ? eta.eta : 1.0);
+                                                                   o, d, bends, bends ? eta.eta : 1.0, n_to);
       if (m.status != TraceStatus::Ok) {
         B.status[j] = kernel::code(m.status);
         B.surface[j] = i;

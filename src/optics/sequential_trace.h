@@ -5,7 +5,7 @@
 // can be traced at its own wavelength: the indices then come from the media's dispersion laws.
 // One kernel (trace_kernel.h) intersects and refracts for the single-ray and the batched trace.
 // A system that is not rotationally symmetric (a biconic surface, a decentred or tilted surface
-// or iris) is traced by the general path instead: one ray at a time (the batch calls loop over
+// or iris, a phase plate) is traced by the general path instead: one ray at a time (the batch calls loop over
 // it), each surface in its own frame (placed_surface.h); its symmetric, unplaced surfaces still
 // go through the kernel. A symmetric system never enters that path, so its results are those of
 // the kernel, bit for bit.
@@ -158,8 +158,13 @@ class CompiledSystem {
     trace_range_batch(rays, nullptr, results, count, image_index() - 1, 0);
   }
 
-  // False when some surface is biconic or placed: then every trace takes the general
-  // (scalar) path.
+  // The optical path (mm) a phase plate on `surface` adds to a ray that crosses it at `point`
+  // (system frame): -W there (phase_plate.h); 0 for a surface without one. The trace bends rays
+  // by the plates but sums no path; the wavefront (wavefront.h) adds this to its own sum.
+  double plate_path_mm(int surface, const glm::dvec3& point) const;
+
+  // False when some surface is biconic, placed or carries a phase plate: then every trace takes
+  // the general (scalar) path.
   bool rotationally_symmetric() const { return !general_; }
 
   // The compiled data as the kernel reads it (trace_kernel.h).
@@ -175,7 +180,7 @@ class CompiledSystem {
   std::vector<trace_detail::Interface> interfaces_;
   std::vector<trace_detail::MediumLaw> laws_;        // the distinct media with a dispersion law
   std::vector<trace_detail::PlacedSurface> placed_;  // per surface; used by the general path only
-  bool general_ = false;                             // some surface is biconic or placed
+  bool general_ = false;                             // some surface is biconic, placed or has a plate
   int stop_index_ = -1;
   double wavelength_nm_ = 0.0;
   bool herzberger_ = false;  // some law needs the Herzberger weights of the wavelength

@@ -8,6 +8,7 @@
 
 #include "optics/biconic_surface.h"
 #include "optics/optics_error.h"
+#include "optics/phase_plate.h"
 
 namespace eyetrace::optics {
 
@@ -23,11 +24,18 @@ RayMatrix4 operator*(const RayMatrix4& m, const RayMatrix4& n) {  // m after n
   return {m.A * n.A + m.B * n.C, m.A * n.B + m.B * n.D, m.C * n.A + m.D * n.C, m.C * n.B + m.D * n.D};
 }
 
+// A phase plate refracts by n u' = n u - grad W = n u - H y to first order (H: its curvature
+// matrix at the centre, phase_plate.h); its tilt terms add prism only and are left out, as
+// decentrations are.
 RayMatrix4 refraction(const Prescription& p, int i) {
   const Surface& s = p.surfaces[i];
-  if (s.role == SurfaceRole::Image || s.profile.is_flat()) return {};
+  if (s.role == SurfaceRole::Image) return {};
   RayMatrix4 m;
-  m.C = -(s.index_after - p.index_before(i)) * curvature_matrix(s.profile);
+  if (!s.profile.is_flat()) m.C = -(s.index_after - p.index_before(i)) * curvature_matrix(s.profile);
+  if (s.phase_plate) {
+    const PlateHessian h = s.phase_plate->hessian_at_centre();
+    m.C = m.C + (-1.0) * Mat2{h.xx, h.xy, h.xy, h.yy};
+  }
   return m;
 }
 

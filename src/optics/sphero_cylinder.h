@@ -9,9 +9,10 @@
 // A ray is (y, n u) with y = (x, y) heights and n u = (n u_x, n u_y) reduced angles. A surface of
 // curvature matrix K (K = R(a) diag(c1, c2) R(a)^T for a biconic whose first meridian is at a)
 // refracts by n u' = n u - (n' - n) K y; a gap of thickness t in index n transfers by
-// y' = y + t / n (n u). Decentrations and tilts are ignored here: to first order they add prism,
-// not power (the astigmatism a tilted lens induces is of second order in the tilt and appears in
-// the real-ray trace and the wavefront only).
+// y' = y + t / n (n u). A phase plate (phase_plate.h) refracts by n u' = n u - H y, H the
+// curvature matrix of its wavefront at the centre. Decentrations and tilts are ignored here: to first order they add
+// prism, not power (the astigmatism a tilted lens induces is of second order in the tilt and appears in the real-ray
+// trace and the wavefront only).
 //
 // Frames: refraction_matrix_D is in the prescription's frame (x, y of the system). The clinical
 // refraction (refraction_sphero_cylinder) is stated in the frame of ANSI Z80.28, as the

@@ -47,6 +47,9 @@ struct PathTracer {
     out.length = sys.index_before(0) *
                  (at_infinity ? glm::dot(points[0] - reference, ray.direction) : glm::distance(points[0], reference));
     for (int i = 0; i < last; ++i) out.length += sys.index_after(i) * glm::distance(points[i + 1], points[i]);
+    // A phase plate (the measured wavefront of an eye) adds its path where the ray crosses it.
+    if (!sys.rotationally_symmetric())
+      for (int i = 0; i <= last; ++i) out.length += sys.plate_path_mm(i, points[i]);
     out.last_point = points[last];
     out.direction = t.ray.direction;
     out.image_point = t.ray.origin;

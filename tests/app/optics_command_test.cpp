@@ -2,6 +2,7 @@
 // errors, and the --plot figure (spot diagram above the chromatic refraction curve).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -37,6 +38,39 @@ TEST(OpticsCommand, ChromaticJson) {
   EXPECT_EQ(narrow["chromatic_refraction"][4]["wavelength_nm"].get<double>(), 650.0);
   EXPECT_EQ(narrow["tca"]["short_wavelength_nm"].get<double>(), 470.0);
   EXPECT_EQ(narrow["tca"]["fields"].size(), 1u);
+}
+
+// "string zernikefile" on the camera: the report lists the plate (JSON and text) and the wave
+// report's least-squares refraction moves by the file's c(2,0) = 0.25 um over its 6 mm pupil,
+// M = -4 sqrt(3) c / r^2 = -0.192 D (Thibos et al. 2004; optics/phase_plate_test.cpp for the
+// 1 % the pupil mapping leaves), J0 by c(2,2) = 0.12 um, -2 sqrt(6) c / r^2 = -0.065 D.
+TEST(OpticsCommand, ZernikeFileOnTheCamera) {
+  const std::string file = std::string(EYETRACE_SOURCE_DIR) + "/scenes/measured-eye.zer";
+  const std::string eye = "Camera \"navarro\" \"float pupildiameter\" 5.3";
+  const std::string args = "optics --json --wave --wave-pupil 6 --fields 0 --camera ";
+  const test::RunResult plain = run_eyetrace(args + "'" + eye + "'", false);
+  const test::RunResult measured = run_eyetrace(args + "'" + eye + " \"string zernikefile\" \"" + file + "\"'", false);
+  ASSERT_EQ(plain.status, 0) << plain.output;
+  ASSERT_EQ(measured.status, 0) << measured.output;
+  const nlohmann::json a = nlohmann::json::parse(plain.output), b = nlohmann::json::parse(measured.output);
+  const nlohmann::json& iris = b["surfaces"][2];  // Navarro's stop, "pupil"
+  ASSERT_EQ(iris["role"].get<std::string>(), "stop");
+  ASSERT_TRUE(iris.contains("phase_plate")) << b["surfaces"].dump();
+  EXPECT_EQ(iris["phase_plate"]["zernike_osa_um"][12].get<double>(), 0.10);
+  EXPECT_EQ(iris["phase_plate"]["measured_pupil_diameter_mm"].get<double>(), 6.0);
+  const nlohmann::json &ra = a["wave"][0]["refraction"]["least_squares"],
+                       &rb = b["wave"][0]["refraction"]["least_squares"];
+  EXPECT_NEAR(rb["M_diopters"].get<double>() - ra["M_diopters"].get<double>(), -4 * std::sqrt(3.0) * 0.25 / 9, 0.01);
+  EXPECT_NEAR(rb["J0_diopters"].get<double>() - ra["J0_diopters"].get<double>(), -2 * std::sqrt(6.0) * 0.12 / 9, 0.01);
+  EXPECT_NEAR(rb["J45_diopters"].get<double>() - ra["J45_diopters"].get<double>(), 2 * std::sqrt(6.0) * 0.08 / 9, 0.01);
+
+  const test::RunResult text = run_eyetrace("optics --camera '" + eye + " \"string zernikefile\" \"" + file + "\"'");
+  ASSERT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("phase plate on surface 2 'pupil': " + file), std::string::npos) << text.output;
+
+  const test::RunResult bad = run_eyetrace("optics --camera 'Camera \"navarro\" \"string zernikefile\" \"no.zer\"'");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("parameter \"zernikefile\""), std::string::npos) << bad.output;
 }
 
 TEST(OpticsCommand, ChromaticText) {

@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "cameras/lens_system_camera.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
+#include "optics/sphero_cylinder.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
@@ -139,6 +142,43 @@ TEST(EyeParams, RealisticCameraFileErrors) {
   EXPECT_DOUBLE_EQ(
       prescription_of("Camera \"realistic\" \"string lensfile\" \"eyecam_ok.dat\"", dir).stop_diameter_mm(),
       1.0);  // pbrt-v4's default aperturediameter
+}
+
+// "string zernikefile": the file (relative to the scene's directory) becomes a phase plate on
+// the iris; a defocus of 0.5 um over a 6 mm pupil changes the refraction by Thibos et al.'s
+// M = -4 sqrt(3) c / r^2 = -0.385 D (optics/phase_plate_test.cpp has the tolerances' reasons).
+TEST(EyeParams, ZernikeFileBecomesAPhasePlateOnTheIris) {
+  const std::string dir = ::testing::TempDir();
+  {
+    std::ofstream f(dir + "/eyecam_defocus.zer");
+    f << "pupil_diameter_mm 6\nwavelength_nm 555\nordering osa\n4 0.5\n";
+  }
+  const optics::Prescription plain = prescription_of("Camera \"navarro\" \"float pupildiameter\" 5");
+  const optics::Prescription p = prescription_of(
+      "Camera \"navarro\" \"float pupildiameter\" 5 \"string zernikefile\" \"eyecam_defocus.zer\"", dir);
+  const optics::PhasePlate* plate = p.surfaces[p.stop_index()].phase_plate.get();
+  ASSERT_NE(plate, nullptr);
+  EXPECT_FALSE(p.rotationally_symmetric());
+  EXPECT_EQ(plate->coefficients_um()[4], 0.5);
+  EXPECT_EQ(plate->measured_pupil_diameter_mm, 6.0);
+  EXPECT_EQ(plate->measured_wavelength_nm, 555.0);
+  const double expected = -4.0 * std::sqrt(3.0) * 0.5 / 9.0;
+  EXPECT_NEAR(optics::refraction_sphero_cylinder(p).M_D - optics::refraction_sphero_cylinder(plain).M_D, expected,
+              0.05);
+  // The camera renders it (symmetric_stand_in.h), the file named relative to the scene.
+  const std::string render = error_of("Camera \"navarro\" \"string zernikefile\" \"eyecam_defocus.zer\"", dir);
+  EXPECT_TRUE(render.empty()) << render;
+
+  const std::string missing = error_of("Camera \"navarro\" \"string zernikefile\" \"no-such.zer\"", dir);
+  EXPECT_TRUE(contains(missing, "parameter \"zernikefile\"") && contains(missing, "no such file")) << missing;
+  {
+    std::ofstream f(dir + "/eyecam_nan.zer");
+    f << "pupil_diameter_mm 6\nordering osa\n4 nan\n";
+  }
+  const std::string bad = error_of("Camera \"eye\" \"string zernikefile\" \"" + dir + "/eyecam_nan.zer\"", dir);
+  EXPECT_TRUE(contains(bad, "test:1:") && contains(bad, "parameter \"zernikefile\"") &&
+              contains(bad, "eyecam_nan.zer:3:") && contains(bad, "'nan'"))
+      << bad;
 }
 
 TEST(EyeParams, OnlyLensCamerasHaveAPrescription) {

@@ -1,5 +1,6 @@
 // The eye camera through systems that are not rotationally symmetric (symmetric_stand_in.h):
-// the envelope's pupil regions hold every ray the real system passes (dense check), the
+// the envelope's pupil regions hold every ray the real system passes (dense check, with a toric
+// cornea, a decentred iris and a measured wavefront on it), the
 // camera's irradiance equals an independent integration that never uses the envelope, an
 // astigmatic eye blurs lines of one orientation only, by the amount geometric optics gives,
 // and the systems the envelope cannot bound are refused by name.
@@ -16,6 +17,7 @@
 #include "optics/corneal_astigmatism.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
@@ -32,6 +34,15 @@ optics::Prescription navarro(double pupil) {
   optics::Prescription p = dynamic_cast<LensSystemCamera&>(*c).prescription();
   optics::set_refraction(p, 0.0);
   return p;
+}
+
+// A measured wavefront on the iris (a phase plate of OSA coefficients over the iris's radius):
+// oblique and vertical astigmatism, defocus, coma and spherical aberration.
+void add_plate(optics::Prescription& p) {
+  const int stop = p.stop_index();
+  const std::vector<double> c_um = {0, 0, 0, 0.5, 0.3, -0.4, 0, 0.2, -0.15, 0, 0, 0, 0.1};
+  p.surfaces[static_cast<size_t>(stop)].phase_plate =
+      std::make_shared<optics::PhasePlate>(c_um, p.surfaces[static_cast<size_t>(stop)].semi_diameter_mm);
 }
 
 LensSystemCamera camera(const optics::Prescription& p, double fov, int res) {
@@ -56,6 +67,9 @@ TEST(SymmetricStandIn, EnvelopeKeepsTheEyeBehindTheIrisAndHoldsTheDecentredOpeni
   const optics::Prescription eq = symmetric_equivalent(p);
   EXPECT_TRUE(eq.rotationally_symmetric());
   EXPECT_NEAR(eq.surfaces[0].profile.curvature, p.surfaces[0].profile.mean_curvature(), 1e-15);
+  add_plate(p);
+  EXPECT_TRUE(pupil_envelope(p).rotationally_symmetric());
+  EXPECT_TRUE(symmetric_equivalent(p).rotationally_symmetric());
 }
 
 // Every ray the real system passes from a retina point lies inside the envelope's polygon for
@@ -65,6 +79,7 @@ TEST(SymmetricStandIn, PupilRegionsHoldEveryPassingRay) {
   optics::Prescription p = navarro(5.0);
   optics::set_corneal_cylinder(p, -3.0, 30.0);
   optics::set_pupil_decentration(p, 0.5, 0.4);
+  add_plate(p);
   const LensSystemCamera cam = camera(p, 60.0, 64);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -127,6 +142,7 @@ TEST(SymmetricStandIn, IrradianceMatchesAnIndependentIntegration) {
   optics::Prescription p = navarro(4.0);
   optics::set_corneal_cylinder(p, -2.0, 120.0);
   optics::set_pupil_decentration(p, 0.7, 0.3);
+  add_plate(p);
   const LensSystemCamera cam = camera(p, 90.0, 256);
   for (const Vec2 px :
        {Vec2(128.f, 128.f), Vec2(40.f, 128.f), Vec2(216.f, 128.f), Vec2(128.f, 30.f), Vec2(60.f, 200.f)}) {

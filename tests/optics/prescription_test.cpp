@@ -7,6 +7,7 @@
 #include "optics/embedded_data.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
 #include "optics/prescription_io.h"
 
 namespace eyetrace::optics {
@@ -133,6 +134,35 @@ TEST(PrescriptionJson, BiconicAndPlacementFieldsRoundTrip) {
   for (const auto& s : plain["surfaces"])
     for (const char* key : {"cross_radius_mm", "cross_conic", "axis_deg", "decentre_mm", "tilt_deg"})
       EXPECT_FALSE(s.contains(key)) << key;
+}
+
+// A phase plate (phase_plate.h) is written with the iris and read back as the same plate: the
+// same JSON again and the same wavefront at a point; a bad coefficient list names the field.
+TEST(PrescriptionJson, PhasePlateRoundTrips) {
+  Prescription p = load_embedded_prescription("navarro.json");
+  ZernikeFile f;
+  f.origin = "eye.zer";
+  f.pupil_diameter_mm = 5.0;
+  f.wavelength_nm = 555.0;
+  f.max_order = 4;
+  f.coefficients_um = {0, 0.01, -0.02, 0.1, 0.3, -0.2, 0.05, 0.04, -0.03, 0.02, 0, 0.01, 0.12, 0, -0.01};
+  add_phase_plate(p, f);
+  const nlohmann::json j = prescription_to_json(p);
+  const Prescription q = prescription_from_json(j, "again");
+  EXPECT_EQ(prescription_to_json(q), j);
+  const PhasePlate& a = *p.surfaces[p.stop_index()].phase_plate;
+  const PhasePlate& b = *q.surfaces[q.stop_index()].phase_plate;
+  EXPECT_EQ(b.wavefront_mm(0.7, -1.1), a.wavefront_mm(0.7, -1.1));
+  EXPECT_EQ(b.origin, "eye.zer");
+
+  nlohmann::json bad = j;
+  bad["surfaces"][p.stop_index()]["phase_plate"]["zernike_osa_um"] = "0.1";
+  try {
+    prescription_from_json(bad, "bad.json");
+    FAIL() << "no error";
+  } catch (const OpticsError& e) {
+    EXPECT_NE(std::string(e.what()).find("phase_plate: 'zernike_osa_um'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PrescriptionJson, BiconicAndPlacementErrorsNameTheField) {
