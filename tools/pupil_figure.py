@@ -170,10 +170,12 @@ def band_transfer(eye, ref, band):
     m = (eye[2] >= band[0]) & (eye[2] < band[1])
     se, ve = band_signal(eye, m)
     sr, vr = band_signal(ref, m)
-    ratio = max(se, 0.0) / sr
-    mtf = math.sqrt(ratio)
-    relative_var = ve / max(se, 1e-300) ** 2 + vr / sr ** 2
-    return Transfer(band, mtf, 0.5 * mtf * math.sqrt(relative_var) if se > 0 else math.sqrt(math.sqrt(ve) / sr))
+    if not sr > 0.0:
+        return Transfer(band, float("nan"), float("nan"))  # the pinhole image has no power there
+    if not se > 0.0:  # the eye's power is all noise: 0, uncertain by the noise's own scatter
+        return Transfer(band, 0.0, math.sqrt(math.sqrt(ve) / sr))
+    mtf = math.sqrt(se / sr)
+    return Transfer(band, mtf, 0.5 * mtf * math.sqrt(ve / se ** 2 + vr / sr ** 2))
 
 
 def optics_freqs(pupil_mm):
