@@ -2,7 +2,7 @@
 """The worked example of docs/python.md: the Navarro eye from Python.
 
   PYTHONPATH=build/python /usr/bin/python3 docs/python_example.py [--out FILE.png] [--spp N]
-      [--resolution WxH]
+      [--resolution WxH] [--dpi N]
 
 1. Sweeps the Navarro eye's accommodation from 0 to 6 D and plots its refraction (the optics
    report's `refraction_diopters`) and its on-axis RMS spot radius (real rays, 4 mm pupil).
@@ -48,6 +48,7 @@ def main():
     ap.add_argument("--out", default="out/python_example.png")
     ap.add_argument("--spp", type=int, default=16)
     ap.add_argument("--resolution", default="600x400")
+    ap.add_argument("--dpi", type=int, default=80, help="the figure is 12 x 8 inches")
     a = ap.parse_args()
 
     accommodations = np.linspace(0.0, 6.0, 13)
@@ -76,7 +77,7 @@ def main():
         ax.set_title(f"accommodation {acc:g} D")
         ax.axis("off")
     os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
-    fig.savefig(a.out, dpi=80)
+    fig.savefig(a.out, dpi=a.dpi)
     print(f"wrote {a.out}")
 
 
