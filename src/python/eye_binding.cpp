@@ -51,7 +51,7 @@ const PluginSpec* camera_spec(const std::string& name) {
 std::string value_text(const py::handle& v) {
   if (py::isinstance<py::str>(v)) {
     const std::string s = v.cast<std::string>();
-    if (s.find('"') != std::string::npos) throw_error(fmt::format("string value {} contains a quote", s));
+    if (s.find('"') != std::string::npos) throw py::value_error(fmt::format("the string {} contains a quote", s));
     return "\"" + s + "\"";
   }
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
@@ -60,8 +60,12 @@ std::string value_text(const py::handle& v) {
     for (const py::handle& item : v.cast<py::sequence>()) s += (s.size() > 1 ? " " : "") + value_text(item);
     return s + "]";
   }
-  const double d = v.cast<double>();  // int, float, numpy scalars; a TypeError for anything else
-  return fmt::format("{:.17g}", d);
+  try {
+    return fmt::format("{:.17g}", v.cast<double>());  // int, float, numpy scalars
+  } catch (const py::cast_error&) {
+    throw py::type_error(fmt::format("expected a number, string, bool or list of numbers, got {}",
+                                     py::str(py::type::of(v)).cast<std::string>()));
+  }
 }
 
 // The pbrt type a keyword parameter is written with: the declared one, or else what the Python
@@ -73,13 +77,19 @@ std::string type_text(const PluginSpec* spec, const std::string& name, const py:
   return "float";
 }
 
-// Camera "model" "type name" value ... for Eye(model, **params).
-std::string camera_directive(const std::string& model, const py::kwargs& params) {
-  const PluginSpec* spec = camera_spec(model);
-  std::string text = fmt::format("Camera \"{}\"", model);
+// Camera "name" "type parameter" value ... for Eye(name, **params).
+std::string camera_directive(const std::string& name, const py::kwargs& params) {
+  const PluginSpec* spec = camera_spec(name);
+  std::string text = fmt::format("Camera \"{}\"", name);
   for (const auto& [key, value] : params) {
-    const std::string name = key.cast<std::string>();
-    text += fmt::format(" \"{} {}\" {}", type_text(spec, name, value), name, value_text(value));
+    const std::string parameter = key.cast<std::string>();
+    try {
+      text += fmt::format(" \"{} {}\" {}", type_text(spec, parameter, value), parameter, value_text(value));
+    } catch (const py::type_error& e) {
+      throw py::type_error(fmt::format("Eye parameter '{}': {}", parameter, e.what()));
+    } catch (const py::value_error& e) {
+      throw py::value_error(fmt::format("Eye parameter '{}': {}", parameter, e.what()));
+    }
   }
   return text;
 }
@@ -262,13 +272,14 @@ void bind_eye(py::module_& m) {
   const std::vector<double> default_fields = optics::ReportOptions{}.fields_deg;
   const std::vector<double> default_freqs = optics::ReportOptions{}.mtf_freqs_cpd;
   py::class_<Eye>(m, "Eye",
-                  "An eye (or a \"realistic\" lens): Eye(\"navarro\", pupildiameter=4, accommodation=2) takes the "
-                  "eye camera's parameters (docs/eye-camera.md) as keywords; Eye.from_camera(directive) and "
+                  "An eye (or a \"realistic\" lens): Eye(\"navarro\", pupildiameter=4, accommodation=2) takes a "
+                  "camera name (Eye(\"eye\", model=\"navarro\") too) and the eye camera's parameters "
+                  "(docs/eye-camera.md) as keywords; Eye.from_camera(directive) and "
                   "Eye.from_prescription(path) as `eyetrace optics --camera` and `--prescription`.")
-      .def(py::init([](const std::string& model, const py::kwargs& params) {
-             return eye_from_camera(camera_directive(model, params));
+      .def(py::init([](const std::string& name, const py::kwargs& params) {
+             return eye_from_camera(camera_directive(name, params));
            }),
-           py::arg("model") = "navarro")
+           py::arg("name") = "navarro")
       .def_static("from_camera", &eye_from_camera, py::arg("directive"),
                   "An eye from a Camera directive, e.g. 'Camera \"navarro\" \"float accommodation\" 2'")
       .def_static("from_prescription", &eye_from_prescription, py::arg("path"),

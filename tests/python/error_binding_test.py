@@ -6,7 +6,9 @@ a separate process, which exits 1), and the interpreter carries on:
 1. scene text with mistakes (file:line:col, every error listed, then the count);
 2. a bad eye parameter (naming it: the eye camera's range check);
 3. a missing scene file; a missing prescription file;
-4. a bad override (--resolution) and a bad Camera directive.
+4. a bad override (--resolution) and a bad Camera directive;
+5. a keyword value Python cannot spell as scene text (None, a quote in a string) is a TypeError
+   or ValueError naming the parameter.
 """
 import os
 import unittest
@@ -57,6 +59,12 @@ class ErrorTest(unittest.TestCase):
         self.assert_same_error(expected, eyetrace.Eye, "navarro", pupildiameter=-1)
         expected = cli_error("optics", "--camera", 'Camera "navarro" "float acommodation" 2')
         self.assert_same_error(expected, eyetrace.Eye, "navarro", acommodation=2)
+
+    def test_python_types(self):
+        with self.assertRaisesRegex(TypeError, "pupildiameter"):
+            eyetrace.Eye("navarro", pupildiameter=None)
+        with self.assertRaisesRegex(ValueError, "model"):
+            eyetrace.Eye("eye", model='navarro"')
 
     def test_missing_files(self):
         missing = os.path.join(support.SCRATCH, "no-such-scene.pbrt")

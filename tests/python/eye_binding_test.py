@@ -44,6 +44,11 @@ class EyeTest(unittest.TestCase):
         wave = cli_report("--camera", directive, "--wave", "--fields", "0,10")
         self.assertEqual(eye.report(fields=[0, 10], wave=True), wave)
 
+    def test_generic_eye_camera_with_model(self):
+        directive = 'Camera "eye" "string model" "legrand" "float accommodation" 1'
+        self.assertEqual(eyetrace.Eye("eye", model="legrand", accommodation=1).report(fields=[0]),
+                         cli_report("--camera", directive, "--fields", "0"))
+
     def test_report_of_prescription_file(self):
         path = os.path.join(support.SOURCE, "data", "eyes", "navarro.json")
         self.assertEqual(eyetrace.Eye.from_prescription(path).report(fields=[0]),
