@@ -48,6 +48,22 @@ std::string crop_text(const py::object& c) {
   return s;
 }
 
+// quiet and strict for one render; afterwards warnings print and are not fatal again (the
+// module's default, which the Eye calls rely on).
+class WarningMode {
+ public:
+  WarningMode(bool quiet, bool strict) {
+    set_warnings_enabled(!quiet);
+    set_warnings_fatal(strict);
+  }
+  ~WarningMode() {
+    set_warnings_enabled(true);
+    set_warnings_fatal(false);
+  }
+  WarningMode(const WarningMode&) = delete;
+  WarningMode& operator=(const WarningMode&) = delete;
+};
+
 // The film's image as an H x W x C float32 array and its channel names.
 py::tuple image_array(const Image& image) {
   py::array_t<float> a({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(image.channels)});
@@ -71,8 +87,7 @@ py::object render(const std::optional<std::string>& scene, const std::optional<s
   request.spp = spp;
   request.seed = seed;
   request.max_memory_gib = max_memory_gib;
-  set_warnings_enabled(!quiet);
-  set_warnings_fatal(strict);
+  const WarningMode warnings(quiet, strict);
 
   std::atomic<bool> stop{false};
   std::shared_ptr<py::error_already_set> signal_error;  // what a Python signal handler raised

@@ -6,7 +6,8 @@ a separate process, which exits 1), and the interpreter carries on:
 1. scene text with mistakes (file:line:col, every error listed, then the count);
 2. a bad eye parameter (naming it: the eye camera's range check);
 3. a missing scene file; a missing prescription file;
-4. a bad override (--resolution) and a bad Camera directive;
+4. a bad override (--resolution) and a bad Camera directive; a warning with strict=True (as
+   --strict), and the next call without it renders;
 5. a keyword value Python cannot spell as scene text (None, a quote in a string) is a TypeError
    or ValueError naming the parameter.
 """
@@ -59,6 +60,16 @@ class ErrorTest(unittest.TestCase):
         self.assert_same_error(expected, eyetrace.Eye, "navarro", pupildiameter=-1)
         expected = cli_error("optics", "--camera", 'Camera "navarro" "float acommodation" 2')
         self.assert_same_error(expected, eyetrace.Eye, "navarro", acommodation=2)
+
+    def test_strict_makes_warnings_errors_for_that_call_only(self):
+        path = os.path.join(support.SCRATCH, "warning.pbrt")
+        with open(path, "w") as f:
+            f.write('Integrator "path" "bool regularize" true\nWorldBegin\nShape "sphere"\n')
+        out = os.path.join(support.SCRATCH, "warning.exr")
+        expected = cli_error("render", path, "-o", out, "--resolution", "8x8", "--spp", "1", "--strict")
+        self.assertIn("regularize", expected)
+        self.assert_same_error(expected, eyetrace.render, path, resolution=(8, 8), spp=1, strict=True)
+        self.assertEqual(eyetrace.render(path, resolution=(8, 8), spp=1, quiet=True).shape, (8, 8, 3))
 
     def test_python_types(self):
         with self.assertRaisesRegex(TypeError, "pupildiameter"):
