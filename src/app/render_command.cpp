@@ -2,7 +2,6 @@
 #include <fmt/core.h>
 
 #include <sys/resource.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <climits>
@@ -21,6 +20,7 @@
 #include "render/progress.h"
 #include "render/render_state.h"
 #include "scene/parser.h"
+#include "scene/render_request.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_fingerprint.h"
 
@@ -51,30 +51,6 @@ struct RenderArgs {
   std::string spp_image;
   std::string mpi_split = "interleaved";
 };
-
-IVec2 parse_resolution(const std::string& s) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-      w > 32768 || h > 32768)
-    throw_parameter_error({}, "--resolution", fmt::format("\"{}\": expected WxH with 1 <= W, H <= 32768", s));
-  return IVec2(w, h);
-}
-
-Vec4 parse_crop(const std::string& s) {
-  float v[4];
-  char extra = 0;
-  if (std::sscanf(s.c_str(), "%f,%f,%f,%f%c", &v[0], &v[1], &v[2], &v[3], &extra) != 4)
-    throw_parameter_error({}, "--crop", fmt::format("\"{}\": expected four fractions x0,x1,y0,y1", s));
-  if (!(v[0] >= 0 && v[0] < v[1] && v[1] <= 1 && v[2] >= 0 && v[2] < v[3] && v[3] <= 1))
-    throw_parameter_error({}, "--crop", fmt::format("\"{}\": needs 0 <= x0 < x1 <= 1 and 0 <= y0 < y1 <= 1", s));
-  return Vec4(v[0], v[1], v[2], v[3]);
-}
-
-uint64_t default_memory_limit() {
-  long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) / 4 * 3 : 0;
-}
 
 void check_output_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -285,15 +261,15 @@ struct Job {
 std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   auto job = std::make_unique<Job>();
   job->desc = parse_scene_file(a.scene);
-  RenderOverrides o;
-  if (!a.camera.empty()) o.camera = parse_directive_text(a.camera, "Camera", "--camera");
-  if (!a.resolution.empty()) o.resolution = parse_resolution(a.resolution);
-  if (!a.crop.empty()) o.crop = parse_crop(a.crop);
-  o.spp = a.max_spp > 0 ? a.max_spp : a.spp;
-  if (a.seed >= 0) o.seed = uint64_t(a.seed);
-  o.max_memory_bytes = a.max_memory_gib > 0 ? uint64_t(a.max_memory_gib * 1073741824.0) : default_memory_limit();
-  o.output = a.output;
-  job->setup = build_render_setup(job->desc, o);
+  RenderRequest request;
+  request.camera = a.camera;
+  request.resolution = a.resolution;
+  request.crop = a.crop;
+  request.spp = a.max_spp > 0 ? a.max_spp : a.spp;
+  request.seed = a.seed;
+  request.max_memory_gib = a.max_memory_gib;
+  request.output = a.output;
+  job->setup = build_requested_setup(job->desc, request);
   RenderSetup& setup = job->setup;
   job->output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(job->output);
