@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "../support/irradiance_integral.h"
 #include "cameras/perspective_camera.h"
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
@@ -59,31 +60,6 @@ Estimate mean_weight(const Camera& cam, Vec2 p_film, int n, uint32_t seed) {
 Vec2 pixel_at_field(double theta, double azimuth_deg, double fov, int res) {
   const double s = theta / (0.5 * fov), phi = azimuth_deg * kPiDouble / 180.0;
   return Vec2(float(0.5 * res * (1.0 + s * std::cos(phi))), float(0.5 * res * (1.0 - s * std::sin(phi))));
-}
-
-// Independent irradiance integral at a retina point: directions drawn on a jittered grid
-// uniformly in a cone (half-angle beta around the direction to the last lens vertex), each
-// traced through the system; E = solid angle x mean(pass x cos(theta_retina)). Shares nothing
-// with the camera's pupil sampler or weights.
-double integrate_irradiance(const LensSystemCamera& cam, const LensSystemCamera::RetinaPoint& rp, int n) {
-  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.0, 0.0, cam.pupil().z_plane()) - rp.position);
-  const double beta = 35.0 * kPiDouble / 180.0, cos_beta = std::cos(beta);
-  glm::dvec3 t1 = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 1.0, 0.0)));
-  if (!std::isfinite(t1.x)) t1 = glm::dvec3(1.0, 0.0, 0.0);
-  const glm::dvec3 t2 = glm::cross(axis, t1);
-  std::mt19937 rng(99);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double cos_t = 1.0 - (i + u(rng)) / n * (1.0 - cos_beta);
-      const double sin_t = std::sqrt(1.0 - cos_t * cos_t), phi = 2.0 * kPiDouble * (j + u(rng)) / n;
-      const glm::dvec3 d = cos_t * axis + sin_t * (std::cos(phi) * t1 + std::sin(phi) * t2);
-      const double cos_r = glm::dot(d, rp.normal);
-      if (cos_r <= 0.0) continue;
-      if (cam.system().trace_range({rp.position, d}, cam.system().image_index() - 1, 0).ok()) sum += cos_r;
-    }
-  return 2.0 * kPiDouble * (1.0 - cos_beta) * sum / (double(n) * n);
 }
 
 // Depth (camera z) at which the rays of a bundle come closest together (smallest RMS radius),
@@ -153,7 +129,7 @@ TEST(LensSystemCamera, RelativeIlluminationMatchesIndependentIntegral) {
     const Estimate e = mean_weight(*cam, p, 300, 2);
     const auto rp = cam->retina_point(p);
     ASSERT_TRUE(rp);
-    const double independent = cam->weight_normalisation() * integrate_irradiance(*cam, *rp, 700);
+    const double independent = cam->weight_normalisation() * test::integrate_irradiance(*cam, *rp, 700);
     EXPECT_NEAR(e.mean, independent, 0.01 * independent) << theta;
     EXPECT_LT(e.mean, previous + 5.0 * e.stderr_) << theta;  // non-increasing within noise
     previous = e.mean;

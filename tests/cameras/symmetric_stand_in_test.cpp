@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <random>
 
+#include "../support/irradiance_integral.h"
 #include "cameras/lens_system_camera.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/optics_error.h"
@@ -101,28 +102,6 @@ TEST(SymmetricStandIn, PupilRegionsHoldEveryPassingRay) {
   EXPECT_EQ(outside, 0) << "of " << passing;
 }
 
-// Mean camera weight at a pixel against the irradiance integrated over directions from the
-// retina point, each traced through the real system (nothing of the envelope is used).
-double independent_irradiance(const LensSystemCamera& cam, const LensSystemCamera::RetinaPoint& rp, int n) {
-  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.0, 0.0, cam.pupil().z_plane()) - rp.position);
-  const double beta = 30.0 * kPiDouble / 180.0, cos_beta = std::cos(beta);
-  glm::dvec3 t1 = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 1.0, 0.0)));
-  const glm::dvec3 t2 = glm::cross(axis, t1);
-  std::mt19937 rng(99);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double cos_t = 1.0 - (i + u(rng)) / n * (1.0 - cos_beta);
-      const double sin_t = std::sqrt(1.0 - cos_t * cos_t), phi = 2.0 * kPiDouble * (j + u(rng)) / n;
-      const glm::dvec3 d = cos_t * axis + sin_t * (std::cos(phi) * t1 + std::sin(phi) * t2);
-      const double cos_r = glm::dot(d, rp.normal);
-      if (cos_r > 0.0 && cam.system().trace_range({rp.position, d}, cam.system().image_index() - 1, 0).ok())
-        sum += cos_r;
-    }
-  return 2.0 * kPiDouble * (1.0 - cos_beta) * sum / (double(n) * n);
-}
-
 double mean_weight(const Camera& cam, Vec2 p_film, int n) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.f, 1.f);
@@ -148,7 +127,7 @@ TEST(SymmetricStandIn, IrradianceMatchesAnIndependentIntegration) {
        {Vec2(128.f, 128.f), Vec2(40.f, 128.f), Vec2(216.f, 128.f), Vec2(128.f, 30.f), Vec2(60.f, 200.f)}) {
     const auto rp = cam.retina_point(px);
     ASSERT_TRUE(rp);
-    const double independent = cam.weight_normalisation() * independent_irradiance(cam, *rp, 600);
+    const double independent = cam.weight_normalisation() * test::integrate_irradiance(cam, *rp, 600);
     EXPECT_NEAR(mean_weight(cam, px, 300), independent, 0.01 * independent) << px.x << " " << px.y;
   }
 }
