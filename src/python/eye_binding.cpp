@@ -6,8 +6,10 @@
 #include <fmt/core.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
@@ -107,7 +109,9 @@ Eye eye_from_camera(const std::string& directive) {
   return Eye{directive, "", prescription_from_camera_params(e.name, e.params, ".")};
 }
 
-Eye eye_from_prescription(const std::string& path) {
+// path: str or any os.PathLike (pathlib.Path).
+Eye eye_from_prescription(const std::filesystem::path& file) {
+  const std::string path = file.string();
   try {
     return Eye{"", path, optics::load_prescription_file(path)};
   } catch (const optics::OpticsError& e) {

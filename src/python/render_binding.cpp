@@ -8,8 +8,10 @@
 #include <fmt/core.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,10 +75,13 @@ py::tuple image_array(const Image& image) {
   return py::make_tuple(a, names);
 }
 
-py::object render(const std::optional<std::string>& scene, const std::optional<std::string>& text,
+// Paths as str or any os.PathLike (pathlib.Path): pybind11's std::filesystem::path caster.
+py::object render(const std::optional<std::filesystem::path>& scene_path, const std::optional<std::string>& text,
                   const std::string& camera, int spp, int64_t seed, int threads, const py::object& resolution,
-                  const py::object& crop, bool quiet, bool strict, const std::string& search_dir, double max_memory_gib,
-                  bool channel_names) {
+                  const py::object& crop, bool quiet, bool strict, const std::filesystem::path& search_dir_path,
+                  double max_memory_gib, bool channel_names) {
+  const std::optional<std::string> scene = scene_path ? std::optional<std::string>(scene_path->string()) : std::nullopt;
+  const std::string search_dir = search_dir_path.string();
   if (scene.has_value() == text.has_value()) throw_error("render: give a scene file or text=..., not both or neither");
   if (threads < 0 || threads > 1024)
     throw_parameter_error({}, "--threads", fmt::format("{}: expected 1 to 1024 threads (0: all cores)", threads));

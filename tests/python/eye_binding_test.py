@@ -21,6 +21,7 @@
 import json
 import math
 import os
+import pathlib
 import unittest
 
 import numpy as np
@@ -52,6 +53,8 @@ class EyeTest(unittest.TestCase):
     def test_report_of_prescription_file(self):
         path = os.path.join(support.SOURCE, "data", "eyes", "navarro.json")
         self.assertEqual(eyetrace.Eye.from_prescription(path).report(fields=[0]),
+                         cli_report("--prescription", path, "--fields", "0"))
+        self.assertEqual(eyetrace.Eye.from_prescription(pathlib.Path(path)).report(fields=[0]),
                          cli_report("--prescription", path, "--fields", "0"))
 
     def test_navarro_published_constants(self):

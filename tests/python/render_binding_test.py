@@ -12,6 +12,7 @@
    interpreter renders again afterwards.
 """
 import os
+import pathlib
 import signal
 import threading
 import time
@@ -54,6 +55,9 @@ class RenderTest(unittest.TestCase):
         from_file = eyetrace.render(CORNELL, spp=2, seed=1, resolution=(24, 24), quiet=True)
         from_text = eyetrace.render(text=text, spp=2, seed=1, resolution=(24, 24), quiet=True)
         self.assertTrue(np.array_equal(from_file, from_text))
+        # A pathlib.Path is a path as a str is (os.PathLike).
+        from_path = eyetrace.render(pathlib.Path(CORNELL), spp=2, seed=1, resolution=(24, 24), quiet=True)
+        self.assertTrue(np.array_equal(from_file, from_path))
 
         spectral = text.replace('Film "rgb"', 'Film "spectral" "integer nbuckets" 6')
         path = os.path.join(support.SCRATCH, "cornell-spectral.pbrt")
