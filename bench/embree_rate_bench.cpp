@@ -1,6 +1,7 @@
 // The render's ray rate against Embree's own rate for the same rays (issue 19, item 3): the
 // figure scene (scenes/peripheral.pbrt) rendered through the Navarro eye or a pinhole with one
-// thread, its rays recorded (Scene::record_rays: camera rays' first hits, shadow rays), then
+// thread, its rays recorded (Scene::record_rays: the closest-hit rays, here the camera rays, as
+// the scene's direct integrator makes no bounce, and the shadow rays), then
 // exactly those rays traced through the same Embree scene with nothing else. Run:
 //   build/bench/embree_rate_bench --benchmark_counters_tabular=true
 // BM_RenderAgainstEmbree times both in each iteration and reports render_over_embree, the
