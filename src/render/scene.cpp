@@ -227,6 +227,10 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction* si) const {
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
   rh.ray = to_embree(ray);
+  if (RayRecord* rec = record_.load(std::memory_order_relaxed)) {
+    std::lock_guard lock(record_lock_);
+    rec->closest.push_back(rh.ray);
+  }
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(root_, &context, &rh);
@@ -263,9 +267,18 @@ bool Scene::occluded(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r = to_embree(ray);
+  if (RayRecord* rec = record_.load(std::memory_order_relaxed)) {
+    std::lock_guard lock(record_lock_);
+    rec->shadow.push_back(r);
+  }
   rtcOccluded1(root_, &context, &r);
   // Embree marks an occluded ray by setting tfar to -inf.
   return r.tfar < 0.f;
+}
+
+void Scene::record_rays(RayRecord* record) {
+  std::lock_guard lock(record_lock_);
+  record_.store(record);
 }
 
 size_t Scene::primitive_count() const {

@@ -3,8 +3,10 @@
 #pragma once
 #include <embree3/rtcore.h>
 
+#include <atomic>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,14 @@
 #include "core/transform.h"
 
 namespace eyetrace {
+
+// The rays a render traced, in Embree's form, as Scene::intersect and Scene::occluded handed
+// them to Embree: for benchmarks that replay exactly those rays through Embree alone
+// (bench/embree_rate_bench.cpp).
+struct RayRecord {
+  std::vector<RTCRay> closest;  // rtcIntersect1
+  std::vector<RTCRay> shadow;   // rtcOccluded1
+};
 
 struct Primitive {
   std::unique_ptr<Shape> shape;
@@ -53,6 +63,11 @@ class Scene {
   // Any hit in (0, ray.tmax). Thread-safe after commit().
   bool occluded(const Ray& ray) const;
 
+  // While `record` is set, every ray given to Embree is appended to it (under a lock, so any
+  // thread count works; meant for benchmarks). nullptr stops recording. The record must
+  // outlive the recording.
+  void record_rays(RayRecord* record);
+
   const std::vector<const Light*>& lights() const { return lights_; }
   const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
   Bounds3 bounds() const { return bounds_; }
@@ -76,6 +91,8 @@ class Scene {
   std::vector<size_t> geom_index_;
   Bounds3 bounds_;
   bool committed_ = false;
+  std::atomic<RayRecord*> record_{nullptr};
+  mutable std::mutex record_lock_;
 };
 
 }  // namespace eyetrace

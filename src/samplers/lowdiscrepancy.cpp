@@ -48,9 +48,9 @@ const uint32_t* sobol_matrices() {
 const uint32_t* sobol_byte_tables() {
   static const std::vector<uint32_t> tables = [] {
     // 7 bytes cover the 52 matrix columns; column 52+ would be zero anyway.
-    std::vector<uint32_t> t(2 * 7 * 256, 0u);
+    std::vector<uint32_t> t(size_t(kSobolTableDimensions) * 7 * 256, 0u);
     const uint32_t* m = sobol_matrices();
-    for (int dim = 0; dim < 2; ++dim)
+    for (int dim = 0; dim < kSobolTableDimensions; ++dim)
       for (int byte = 0; byte < 7; ++byte)
         for (int value = 0; value < 256; ++value) {
           uint32_t v = 0;

@@ -92,16 +92,19 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
   indices_.reserve(mesh.indices.size());
   cdf_.reserve(mesh.indices.size() / 3);
   point_error_.reserve(mesh.indices.size() / 3);
+  face_normal_.reserve(mesh.indices.size() / 3);
   double total = 0.0;
   for (size_t i = 0; i < mesh.indices.size(); i += 3) {
     const Vec3 &p0 = positions_[mesh.indices[i]], &p1 = positions_[mesh.indices[i + 1]],
                &p2 = positions_[mesh.indices[i + 2]];
     // Degenerate means: no usable normal in float (the same cross product interaction()
     // uses), so such a triangle could only ever produce NaN shading frames.
-    if (robust_normalize(glm::cross(p0 - p2, p1 - p2)) == Vec3(0.f)) {
+    const Vec3 n = robust_normalize(glm::cross(p0 - p2, p1 - p2));
+    if (n == Vec3(0.f)) {
       ++dropped_;
       continue;
     }
+    face_normal_.push_back(n);
     glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0);
     total += 0.5 * glm::length(glm::cross(e1, e2));
     cdf_.push_back(total);
@@ -179,11 +182,13 @@ float TriangleMesh::embree_plane_error(const Corner& c) {
   return gamma(16) * std::sqrt(longest2 * (l1_2 / cross2) * l2_2);
 }
 
-void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const {
+void TriangleMesh::normals_at(unsigned tri, float b0, float b1, float b2, Vec3* n, Vec3* ns) const {
   // pbrt: n along cross(p0 - p2, p1 - p2) of the world-space corners, flipped when
   // ReverseOrientation XOR the transform swaps handedness; given shading normals instead
   // decide the side the geometric normal faces.
-  *n = robust_normalize(glm::cross(c.p[0] - c.p[2], c.p[1] - c.p[2]));
+  // Computed once per triangle at build time from the same world-space corners (the same
+  // bits; it was 2 % of a figure-scene render, recomputed at every hit).
+  *n = face_normal_[tri];
   if (normals_.empty()) {
     if (flip_normal_) *n = -*n;
     *ns = *n;
@@ -211,7 +216,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned p
   si.p_error = point_error_[prim_id];
   si.t = t;
   si.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
-  normals_at(prim_id, b0, b1, b2, c, &si.n, &si.ns);
+  normals_at(prim_id, b0, b1, b2, &si.n, &si.ns);
 
   // dp/du, dp/dv from the uv parameterisation (pbrt's 2x2 solve); a degenerate uv mapping
   // falls back to an arbitrary frame around n.
@@ -249,7 +254,7 @@ ShapeSample TriangleMesh::sample_area(Vec2 u) const {
   s.p_error = point_error_[tri];
   s.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   Vec3 ns;
-  normals_at(unsigned(tri), b0, b1, b2, c, &s.n, &ns);
+  normals_at(unsigned(tri), b0, b1, b2, &s.n, &ns);
   s.pdf_area = 1.f / area_;
   return s;
 }

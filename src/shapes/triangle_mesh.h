@@ -60,7 +60,7 @@ class TriangleMesh : public Shape {
   // Distance from the triangle's plane within which Embree's float test may misjudge the side.
   static float embree_plane_error(const Corner& c);
   // Geometric normal oriented as pbrt orients it (see the .cpp), and the shading normal.
-  void normals_at(unsigned tri, float b0, float b1, float b2, const Corner& c, Vec3* n, Vec3* ns) const;
+  void normals_at(unsigned tri, float b0, float b1, float b2, Vec3* n, Vec3* ns) const;
   void validate(MeshData& mesh, const MeshSource& source) const;
   void build(MeshData& mesh, const Transform& world_from_object, const MeshSource& source);
 
@@ -73,6 +73,7 @@ class TriangleMesh : public Shape {
   std::vector<Vec2> uvs_;
   std::vector<double> cdf_;        // cumulative triangle area / total, for area sampling
   std::vector<Vec3> point_error_;  // triangle_error of each kept triangle
+  std::vector<Vec3> face_normal_;  // robust_normalize(cross(p0 - p2, p1 - p2)), unflipped
   float area_ = 0.f;
   Bounds3 bounds_;
   bool flip_normal_ = false;  // reverse_orientation XOR transform swaps handedness

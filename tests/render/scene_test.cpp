@@ -197,6 +197,40 @@ TEST(Scene, UntraceableRaysReturnNoHit) {
   }
 }
 
+TEST(Scene, RecordsTheRaysItTracesWhileAsked) {
+  auto scene = plane_scene();
+  SurfaceInteraction si;
+  RayRecord rec;
+  scene->intersect(Ray{Vec3(0), Vec3(0, 0, 1)}, &si);  // before recording: not kept
+  scene->record_rays(&rec);
+  const Ray a{Vec3(0.5f, -1, 0), Vec3(0, 0, 2), 3.f, 0.25f}, b{Vec3(0, 2, 1), Vec3(1, 0, 0)};
+  EXPECT_TRUE(scene->intersect(a, &si));
+  EXPECT_FALSE(scene->occluded(b));
+  scene->intersect(Ray{Vec3(0), Vec3(0)}, &si);  // untraceable: Embree never sees it
+  scene->record_rays(nullptr);
+  scene->occluded(a);  // after recording: not kept
+  ASSERT_EQ(rec.closest.size(), 1u);
+  ASSERT_EQ(rec.shadow.size(), 1u);
+  const RTCRay &ra = rec.closest[0], &rb = rec.shadow[0];
+  EXPECT_EQ(Vec3(ra.org_x, ra.org_y, ra.org_z), a.o);
+  EXPECT_EQ(Vec3(ra.dir_x, ra.dir_y, ra.dir_z), a.d);
+  EXPECT_EQ(ra.tfar, 3.f);
+  EXPECT_EQ(ra.time, 0.25f);
+  EXPECT_EQ(Vec3(rb.org_x, rb.org_y, rb.org_z), b.o);
+  EXPECT_EQ(Vec3(rb.dir_x, rb.dir_y, rb.dir_z), b.d);
+  EXPECT_EQ(rb.tfar, kInfinity);
+  // Replayed through Embree alone, the recorded closest-hit ray finds the plane at z = 2
+  // (t = 1 for |d| = 2), as the scene did.
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh;
+  rh.ray = ra;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene->embree_scene(), &ctx, &rh);
+  ASSERT_NE(rh.hit.geomID, RTC_INVALID_GEOMETRY_ID);
+  EXPECT_NEAR(rh.ray.tfar, 1.f, 1e-6f);
+}
+
 TEST(Scene, HitCarriesMaterialAndEmitterOfItsPrimitive) {
   NullMaterial mat;
   RecordingLight light(false);

@@ -128,6 +128,22 @@ TEST(SobolMatrices, FirstDimensionIsVanDerCorput) {
   }
 }
 
+TEST(SobolMatrices, ByteTablesEqualTheColumnProduct) {
+  // The tabulated dimensions (a byte of the index at a time) against the definition: the XOR
+  // of the generator matrix's columns selected by the index's set bits, one bit at a time.
+  std::mt19937_64 rng(3);
+  for (int d = 0; d < kSobolTableDimensions + 1; ++d) {
+    const uint32_t* c = sobol_matrices() + size_t(d) * kSobolMatrixSize;
+    for (int k = 0; k < 20000; ++k) {
+      uint64_t a = rng() >> (12 + k % 40);  // indices of 12 to 52 bits
+      uint32_t expected = 0;
+      for (int i = 0; i < kSobolMatrixSize; ++i)
+        if ((a >> i) & 1) expected ^= c[i];
+      ASSERT_EQ(sobol_bits(a, d), expected) << "dim " << d << " index " << a;
+    }
+  }
+}
+
 TEST(SobolMatrices, SecondDimensionIsThePascalMatrix) {
   // Column c, row r (from the most significant bit) is binomial(c, r) mod 2, which by Lucas's
   // theorem is 1 exactly when the bits of r are a subset of the bits of c.
