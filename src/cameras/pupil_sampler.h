@@ -42,7 +42,11 @@ class PupilSampler {
   struct Options {
     Mapping mapping = Mapping::Concentric;
     int intervals = 128;  // retina intervals over [0, max_arc]
-    int directions = 64;  // polygon vertices (a multiple of 4, at most 256)
+    // Polygon vertices (a multiple of 4, at most 256). Rays drawn between the polygon and the
+    // true region are lost, and that thin rim adds variance no stratification removes (about
+    // lost fraction / spp in relMSE): 64 directions lose 1.3% of a 4 mm pupil's rays, 128 lose
+    // 0.72% (256: 0.57%, the margins below being the rest) for 0.07 s more construction.
+    int directions = 128;
     double relative_margin = 0.002;
     double absolute_margin_mm = 2e-4;
     double scan_half_width_mm = 10.0;  // meridian scan used when the chief ray is blocked
