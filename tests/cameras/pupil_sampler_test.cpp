@@ -47,7 +47,8 @@ double useful_fraction(const Camera& cam, IVec2 res, int n) {
 }
 
 // The brief's target: >= 95% of the rays generated over a 5 mm pupil and a 60 degree field
-// reach the scene (pbrt-v4's exit-pupil boxes waste at least a fifth). Measured: 0.987.
+// reach the scene (pbrt-v4's exit-pupil boxes waste at least a fifth). Measured: 0.977 for Navarro
+// with 128 polygon directions (a render with 64 gave about 0.972).
 TEST(PupilSampler, UsefulRayFractionAtLeast95Percent) {
   for (const char* model : {"navarro", "gullstrand", "legrand", "kooijman"}) {
     auto cam = make_eye(fmt::format("\"string model\" \"{}\" \"float pupildiameter\" 5 \"float fov\" 60", model));
