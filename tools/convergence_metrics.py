@@ -52,7 +52,7 @@ def eccentricity(shape, camera):
     x = (np.arange(w) + 0.5 - w / 2) * s
     y = (np.arange(h) + 0.5 - h / 2) * s
     r = np.hypot(*np.meshgrid(x, y))
-    if camera in ("pinhole", "thinlens"):
+    if camera.split("-")[0] in ("pinhole", "thinlens"):  # "thinlens-4mm" is a thin lens too
         return np.degrees(np.arctan(r * math.tan(math.radians(FOV / 2))))
     return r * FOV / 2
 
@@ -159,8 +159,11 @@ def add_model_times(rows):
 
 
 COLOURS = {"independent": "tab:gray", "stratified": "tab:blue", "halton": "tab:green", "sobol": "tab:orange",
-           "zsobol": "tab:red", "zsobol-padded": "tab:purple"}
+           "zsobol": "tab:red", "zsobol-padded": "tab:purple", "sobol-none": "tab:brown",
+           "sobol-permutedigits": "tab:pink", "sobol-owen": "tab:olive"}
 STYLES = {"pinhole": "-", "thinlens": "--", "navarro": ":"}
+STYLES.update({f"{c}-{mm}mm": STYLES[c] for c in ("thinlens", "navarro") for mm in (2, 4, 6)})
+STYLES.update({f"navarro-{mm}mm-polar": "-." for mm in (2, 4, 6)})
 
 
 def plot_camera(rows, scene, camera, floors, path, clock):
@@ -185,6 +188,36 @@ def plot_camera(rows, scene, camera, floors, path, clock):
     fig.suptitle(f"{scene}, {camera}: error against time")
     fig.tight_layout()
     fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
+def plot_spp_grid(rows, scene, path):
+    """Image relMSE against spp, log-log: one small panel per camera, one line per sampler, with
+    each line's fitted slope in the legend (the convergence rate, independent of the machine)."""
+    cameras = [c for c in STYLES if any(r["scene"] == scene and r["camera"] == c for r in rows)]
+    cols = min(4, len(cameras))
+    nrows = (len(cameras) + cols - 1) // cols
+    fig, axes = plt.subplots(nrows, cols, figsize=(3.2 * cols, 2.7 * nrows), sharex=True, sharey=True, squeeze=False)
+    for ax, camera in zip(axes.flat, cameras):
+        for sampler in COLOURS:
+            pts = sorted((r["spp"], r["relmse_image"]) for r in rows
+                         if r["scene"] == scene and r["camera"] == camera and r["sampler"] == sampler)
+            if len(pts) > 1:
+                xs, ys = zip(*pts)
+                ax.loglog(xs, ys, "o-", ms=2.5, lw=1, color=COLOURS[sampler], label=f"{sampler} {slope(xs, ys):.2f}")
+        ax.set_title(camera, fontsize=9)
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=6)
+        ax.tick_params(labelsize=7)
+    for ax in axes.flat[len(cameras):]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel("spp", fontsize=8)
+    for ax in axes[:, 0]:
+        ax.set_ylabel("relMSE (image)", fontsize=8)
+    fig.suptitle(f"{scene}: error against samples per pixel (legend: log-log slope)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=70)
     plt.close(fig)
 
 

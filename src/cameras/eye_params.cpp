@@ -163,6 +163,13 @@ PluginSpec make_eye_spec(bool with_model) {
                         "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
                         "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
                         "(no spectral MIS). Eye cameras only."),
+          param::string("pupilmapping", "concentric")
+              .in({"concentric", "polar"})
+              .describe("How the pupil sample's unit square reaches the pupil region: `concentric` (Shirley and "
+                        "Chiu's concentric map to a disc, then the region's angle and radius) keeps the sampler's "
+                        "strata compact; `polar` (angle and squared radius straight from the square) is the mapping "
+                        "before 2026-11-26 and converges more slowly (docs/convergence.md, \"Where the eye loses "
+                        "the rate\")."),
           param::string("zernikefile", "")
               .describe("A measured wavefront, relative to the scene file: OSA/ANSI Zernike coefficients (µm) over the "
                         "entrance-pupil diameter they were measured at, applied as a phase plate on the iris "
@@ -321,6 +328,8 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
   s.scene_units_per_mm = 1e-3 / params.get_double("sceneunit");
   s.dispersive = !params.has("wavelength");
   s.diffraction = params.get_bool("diffraction");
+  s.pupil.mapping =
+      params.get_string("pupilmapping") == "polar" ? PupilSampler::Mapping::Polar : PupilSampler::Mapping::Concentric;
   return s;
 }
 

@@ -222,7 +222,11 @@ std::vector<double> centres_of(const std::vector<Node>& nodes) {
 
 PupilSampler::PupilSampler(const optics::CompiledSystem& system, const RetinaSurface& retina, double z_plane,
                            double max_arc_mm, const FieldAngleTable& chief, const Options& o)
-    : z_plane_(z_plane), max_arc_(std::fmax(max_arc_mm, 1e-3)), intervals_(o.intervals), directions_(o.directions) {
+    : mapping_(o.mapping),
+      z_plane_(z_plane),
+      max_arc_(std::fmax(max_arc_mm, 1e-3)),
+      intervals_(o.intervals),
+      directions_(o.directions) {
   inv_step_ = intervals_ / max_arc_;
   for (int j = 0; j < directions_; ++j) {
     cos_.push_back(std::cos(kTwoPi * j / directions_));

@@ -3,6 +3,14 @@
 // retina) through which rays reach the scene, found by tracing at construction and stored as a
 // star-shaped polygon around a centre. Rays are then drawn uniformly inside the polygon.
 //
+// The unit square reaches the polygon through (angle fraction t, radius fraction s): t picks a
+// fan triangle by area and a point along its outer edge, s = the distance out from the centre.
+// How (ux, uy) becomes (t, s) is the Options::mapping: "polar" takes t = ux, s = sqrt(uy), which
+// squeezes the square's strata into slivers near the centre; "concentric" first maps the square
+// to the unit disc by Shirley and Chiu's concentric map (strata stay compact, the map is
+// continuous) and takes t = the disc point's angle / 2 pi, s = its radius. Both are uniform
+// in the polygon.
+//
 // Layout: the retina arc [0, max_arc] is cut into intervals; each interval stores one polygon
 // (radii along fixed directions) whose centre moves linearly between the interval's end nodes.
 // The system is rotationally symmetric, so the tables live on the +x meridian (retina point
@@ -30,9 +38,15 @@ namespace eyetrace {
 
 class PupilSampler {
  public:
+  enum class Mapping { Polar, Concentric };
   struct Options {
+    Mapping mapping = Mapping::Concentric;
     int intervals = 128;  // retina intervals over [0, max_arc]
-    int directions = 64;  // polygon vertices (a multiple of 4, at most 256)
+    // Polygon vertices (a multiple of 4, at most 256). Rays drawn between the polygon and the
+    // true region are lost, and that thin rim adds variance no stratification removes (about
+    // lost fraction / spp in relMSE): 64 directions lose 1.3% of a 4 mm pupil's rays, 128 lose
+    // 0.72% (256: 0.57%, the margins below being the rest) for 0.07 s more construction.
+    int directions = 128;
     double relative_margin = 0.002;
     double absolute_margin_mm = 2e-4;
     double scan_half_width_mm = 10.0;  // meridian scan used when the chief ray is blocked
@@ -58,8 +72,14 @@ class PupilSampler {
     const double t = x - i;
     const double cx = centres_[static_cast<size_t>(i)] +
                       t * (centres_[static_cast<size_t>(i) + 1] - centres_[static_cast<size_t>(i)]);
-    // Pick a fan triangle by area, then a uniform point in it: with s = sqrt(u), the point
-    // c + s ((1 - v) V_j + v V_j+1) is uniform in the triangle (c, V_j, V_j+1).
+    double s = 0.0;
+    if (mapping_ == Mapping::Concentric) {
+      concentric(ux, uy, &ux, &s);
+    } else {
+      s = std::sqrt(uy);
+    }
+    // Pick a fan triangle by area, then a uniform point in it: with s uniform in area (s^2
+    // uniform), the point c + s ((1 - v) V_j + v V_j+1) is uniform in the triangle (c, V_j, V_j+1).
     const float* cdf = &cdf_[static_cast<size_t>(i) * directions_];
     // Guide table: the first candidate triangle for this u, then a short linear search.
     const float uf = static_cast<float>(ux);
@@ -71,7 +91,6 @@ class PupilSampler {
     const double v = std::clamp((ux - lo) * inv_width_[static_cast<size_t>(i) * directions_ + j], 0.0, 1.0);
     const int k = j + 1 == directions_ ? 0 : j + 1;
     const float* radii = &radii_[static_cast<size_t>(i) * directions_];
-    const double s = std::sqrt(uy);
     const double w0 = s * (1.0 - v) * radii[j], w1 = s * v * radii[k];
     *q = {cx + w0 * cos_[j] + w1 * cos_[k], w0 * sin_[j] + w1 * sin_[k]};
     *area = r.area;
@@ -86,6 +105,30 @@ class PupilSampler {
   int directions() const { return directions_; }
 
  private:
+  // Shirley and Chiu's concentric map of the unit square to the unit disc, returned as the
+  // angle fraction t in [0, 1) and the radius r in [0, 1]. Uniform in, uniform in the disc out:
+  // t and r^2 are then independent and uniform, as the fan mapping needs.
+  static void concentric(double ux, double uy, double* t, double* r) {
+    constexpr double kEighth = 0.125;  // pi / 4 as a fraction of a turn
+    const double x = 2.0 * ux - 1.0, y = 2.0 * uy - 1.0;
+    if (x == 0.0 && y == 0.0) {  // the centre: any angle
+      *t = 0.0, *r = 0.0;
+      return;
+    }
+    // Square ring |x| or |y| = r maps to the circle of radius r; the position along the ring
+    // to the angle. A negative r is the opposite half-turn.
+    double turn = 0.0;
+    if (std::abs(x) > std::abs(y)) {
+      *r = x, turn = kEighth * (y / x);
+    } else {
+      *r = y, turn = 2.0 * kEighth - kEighth * (x / y);
+    }
+    if (*r < 0.0) *r = -*r, turn += 0.5;
+    if (turn < 0.0) turn += 1.0;
+    // ux = 1 is outside the sampler's [0, 1) range, but rounding of turn may reach 1.
+    *t = std::fmin(turn, std::nextafter(1.0, 0.0));
+  }
+  Mapping mapping_ = Mapping::Concentric;
   struct Region {
     double area = 0.0;  // 0 = dark: no ray from this interval passes
   };

@@ -141,7 +141,7 @@ TEST(LensSystemCamera, AxialRayLeavesAlongTheAxis) {
   auto cam = eye_camera("\"float pupildiameter\" 5 \"float sceneunit\" 0.001");
   CameraSample cs;
   cs.p_film = Vec2(128.f, 128.f);
-  cs.p_lens = Vec2(0.5f, 0.f);  // radius 0 of the pupil region: its centre, on the axis here
+  cs.p_lens = Vec2(0.5f, 0.5f);  // the concentric map's centre: the pupil region's, on the axis here
   auto r = cam->generate_ray(cs);
   ASSERT_TRUE(r);
   EXPECT_NEAR(r->ray.d.x, 0.f, 1e-6f);
@@ -188,7 +188,7 @@ TEST(LensSystemCamera, ImageIsUprightAndNotMirrored) {
     auto cam = eye_camera(params);
     CameraSample cs;
     cs.p_film = Vec2(40.f, 60.f);  // left of and above the centre (raster y grows downwards)
-    cs.p_lens = Vec2(0.5f, 0.f);
+    cs.p_lens = Vec2(0.5f, 0.5f);  // the pupil region's centre (concentric map)
     auto r = cam->generate_ray(cs);
     ASSERT_TRUE(r) << params;
     EXPECT_LT(r->ray.d.x, -0.1f) << params;
@@ -287,7 +287,7 @@ TEST(LensSystemCamera, DoubleGaussLensFile) {
   EXPECT_GT(double(ok) / n, 0.9);
   CameraSample cs;
   cs.p_film = Vec2(20.f, 30.f);  // upper left
-  cs.p_lens = Vec2(0.5f, 0.f);
+  cs.p_lens = Vec2(0.5f, 0.5f);  // the pupil region's centre (concentric map)
   auto r = cam->generate_ray(cs);
   ASSERT_TRUE(r);
   EXPECT_LT(r->ray.d.x, 0.f);
