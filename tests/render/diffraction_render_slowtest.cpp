@@ -39,7 +39,7 @@ namespace {
 
 constexpr double kPupil_mm = 2.0;
 constexpr double kDistance_m = 100.0;
-constexpr int kSeeds = 4;
+constexpr int kSeeds = 6;
 constexpr double kDegree = std::numbers::pi / 180.0;
 
 optics::Prescription navarro(double lambda_nm, double accommodation_D = 0.0) {
