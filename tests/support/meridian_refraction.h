@@ -18,7 +18,10 @@
 
 namespace eyetrace::optics::test {
 
-inline double meridian_refraction(const Prescription& p, double c0, int toric = 0) {
+// The y-nu product over the surfaces in front of the image, each refracting surface with the
+// curvature `curvature(i, surface)` gives it in the meridian; V = 1000 A / B.
+template <class Curvature>
+double meridian_refraction_with(const Prescription& p, Curvature curvature) {
   double A = 1, B = 0, C = 0, D = 1;
   auto apply = [&](double a, double b, double c, double d) {
     const double nA = a * A + b * C, nB = a * B + b * D, nC = c * A + d * C, nD = c * B + d * D;
@@ -27,31 +30,25 @@ inline double meridian_refraction(const Prescription& p, double c0, int toric = 
   for (int i = 0; i < p.image_index(); ++i) {
     const Surface& s = p.surfaces[i];
     const double n = i == 0 ? p.object_index : p.surfaces[i - 1].index_after;
-    const double c = i == toric ? c0 : (s.profile.kind == ProfileKind::Plane ? 0.0 : s.profile.curvature);
-    if (s.role == SurfaceRole::Refract) apply(1, 0, -(s.index_after - n) * c, 1);
+    if (s.role == SurfaceRole::Refract) apply(1, 0, -(s.index_after - n) * curvature(i, s), 1);
     apply(1, s.thickness_mm / s.index_after, 0, 1);
   }
   return 1000.0 * A / B;
 }
 
+inline double meridian_refraction(const Prescription& p, double c0, int toric = 0) {
+  return meridian_refraction_with(p, [&](int i, const Surface& s) {
+    return i == toric ? c0 : (s.profile.kind == ProfileKind::Plane ? 0.0 : s.profile.curvature);
+  });
+}
+
 inline double meridian_refraction_at(const Prescription& p, double angle_deg) {
-  double A = 1, B = 0, C = 0, D = 1;
-  auto apply = [&](double a, double b, double c, double d) {
-    const double nA = a * A + b * C, nB = a * B + b * D, nC = c * A + d * C, nD = c * B + d * D;
-    A = nA, B = nB, C = nC, D = nD;
-  };
-  for (int i = 0; i < p.image_index(); ++i) {
-    const Surface& s = p.surfaces[i];
-    const double n = i == 0 ? p.object_index : p.surfaces[i - 1].index_after;
-    double c = s.profile.kind == ProfileKind::Plane ? 0.0 : s.profile.curvature;
-    if (s.profile.kind == ProfileKind::Biconic) {
-      const double d = (angle_deg - s.profile.axis_deg) * M_PI / 180.0;
-      c = s.profile.curvature * std::cos(d) * std::cos(d) + s.profile.cross_curvature * std::sin(d) * std::sin(d);
-    }
-    if (s.role == SurfaceRole::Refract) apply(1, 0, -(s.index_after - n) * c, 1);
-    apply(1, s.thickness_mm / s.index_after, 0, 1);
-  }
-  return 1000.0 * A / B;
+  return meridian_refraction_with(p, [&](int, const Surface& s) {
+    if (s.profile.kind == ProfileKind::Plane) return 0.0;
+    if (s.profile.kind != ProfileKind::Biconic) return s.profile.curvature;
+    const double d = (angle_deg - s.profile.axis_deg) * M_PI / 180.0;
+    return s.profile.curvature * std::cos(d) * std::cos(d) + s.profile.cross_curvature * std::sin(d) * std::sin(d);
+  });
 }
 
 }  // namespace eyetrace::optics::test
