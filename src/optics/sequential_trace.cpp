@@ -119,6 +119,22 @@ TraceResult CompiledSystem::trace_range(const Ray& ray, int first, int last, dou
                        : trace_one<false, true>(ray, first, last, lambda_nm, points);
 }
 
+namespace {
+
+// One placed surface once refraction_at has given its eta (and, for a per-ray wavelength, set n
+// to the index the ray leaves into, which a phase plate's rule needs): the general path's step,
+// shared by the one-ray trace and the batch's runs of placed surfaces.
+template <bool Forward, bool PerRayWavelength>
+trace_detail::PlacedStep placed_step(const trace_detail::Interface& f, const trace_detail::PlacedSurface& s,
+                                     bool refracts, const kernel::Eta<double>& eta, double n, const glm::dvec3& o,
+                                     const glm::dvec3& d) {
+  const bool bends = refracts && eta.refracts;
+  const double n_to = PerRayWavelength ? n : (Forward ? f.n_after : f.n_before);
+  return trace_detail::step_placed(s, f.sd2, f.role, o, d, bends, bends ? eta.eta : 1.0, n_to);
+}
+
+}  // namespace
+
 // General: the surfaces with placed_[i].general take step_placed (placed_surface.h); the others
 // the kernel, as in a symmetric system.
 template <bool Forward, bool PerRayWavelength, bool General>
@@ -141,11 +157,8 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
     const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws_.data(), lambda, w, n, eta);
     if constexpr (General) {
       if (placed_[i].general) {
-        // The index the ray leaves into (a plate's rule needs it): refraction_at has just set n
-        // to it for a per-ray wavelength.
-        const double n_to = PerRayWavelength ? n : (Forward ? f.n_after : f.n_before);
-        const trace_detail::PlacedStep m = trace_detail::step_placed(
-            placed_[i], f.sd2, f.role, o, d, refracts && eta.refracts, refracts && eta.refracts ? eta.eta : 1.0, n_to);
+        const trace_detail::PlacedStep m =
+            placed_step<Forward, PerRayWavelength>(f, placed_[i], refracts, eta, n, o, d);
         if (m.status != TraceStatus::Ok) return {m.status, i, {o, d}};
         o = m.p, d = m.d;
         if (points) points[Forward ? i - first : first - i] = o;
@@ -240,11 +253,8 @@ void placed_segment(const std::vector<trace_detail::Interface>& interfaces, cons
       const trace_detail::Interface& f = interfaces[static_cast<std::size_t>(i)];
       kernel::Eta<double> eta;
       const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws, lambda, w, index, eta);
-      const bool bends = refracts && eta.refracts;
-      // The index the ray leaves into, for a phase plate's rule, as trace_one takes it.
-      const double n_to = PerRayWavelength ? index : (Forward ? f.n_after : f.n_before);
-      const trace_detail::PlacedStep m = trace_detail::step_placed(placed[static_cast<std::size_t>(i)], f.sd2, f.role,
-                                                                   o, d, bends, bends ? eta.eta : 1.0, n_to);
+      const trace_detail::PlacedStep m =
+          placed_step<Forward, PerRayWavelength>(f, placed[static_cast<std::size_t>(i)], refracts, eta, index, o, d);
       if (m.status != TraceStatus::Ok) {
         B.status[j] = kernel::code(m.status);
         B.surface[j] = i;
