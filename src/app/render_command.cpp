@@ -155,7 +155,7 @@ struct Snapshot {
 
 // Writes the image as it stands and, unless it is final, the state to resume it from.
 void save(const std::string& output, const RenderArgs& a, const RenderSetup& setup, const TileProgress& tiles,
-          uint64_t fingerprint, Snapshot kind, const std::optional<RetinalIrradiance>& irradiance) {
+          uint64_t fingerprint, Snapshot kind, const std::optional<RetinalIrradiance>& irradiance, const Image& image) {
   int spp = setup.sampler->samples_per_pixel();
   std::map<std::string, std::string> meta = {{"eyetrace:samples_per_pixel", std::to_string(tiles.min_done())},
                                              {"eyetrace:samples_requested", std::to_string(spp)},
@@ -179,7 +179,7 @@ void save(const std::string& output, const RenderArgs& a, const RenderSetup& set
     write_render_state(state_path(output), s);
   }
   // The image after the state: a checkpoint image always has its state next to it.
-  write_image(output, setup.film->image(), meta);
+  write_image(output, image, meta);
 }
 
 void write_stats(const RenderArgs& a, const nlohmann::json& j) {
@@ -351,14 +351,24 @@ Totals totals(RenderGroup& g, const RenderCounters& c, double render_seconds, do
 }
 
 // The image and state of a finished or interrupted render (rank 0).
-void write_result(const RenderArgs& a, Job& job, bool complete) {
+// The image rank 0 writes, with rank 0's progress made whole: a finished uniform render
+// gathers the other ranks' image values alone (RenderGroup::collect_image), an interrupted one
+// their film sums too (the resumable state needs them); an adaptive render's film is whole
+// already (shared after every pass). Every rank calls it; the others get an empty image.
+Image whole_image(RenderGroup& g, Film& film, TileProgress& tiles, bool complete) {
+  if (!tiles.adaptive() && complete) return g.collect_image(film, tiles);
+  if (!tiles.adaptive()) g.collect(film, tiles);
+  return g.rank() == 0 ? film.image() : Image{};
+}
+
+void write_result(const RenderArgs& a, Job& job, bool complete, const Image& image) {
   const TileProgress& tiles = job.tiles;
   if (complete) {
-    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{false, true}, job.irradiance);
+    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{false, true}, job.irradiance, image);
     std::error_code ec;
     std::filesystem::remove(state_path(job.output), ec);  // finished: nothing left to resume
   } else if (tiles.max_done() > 0) {
-    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{true, false}, job.irradiance);
+    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{true, false}, job.irradiance, image);
     fmt::print(stderr,
                "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
                job.output, tiles.min_done(), job.spp,
@@ -384,8 +394,16 @@ void print_summary(const Job& job, const Totals& t, const nlohmann::json& spread
              t.nonfinite ? fmt::format(", {} non-finite samples discarded", t.nonfinite) : "");
 }
 
+// Wall-clock seconds of a render's stages on rank 0: `total` from the start to the last
+// sample, of which `setup` (scene, camera tables) and `render`; `output` after it (gathering
+// the other ranks' results, the image, writing it).
+struct Timing {
+  double total, setup, render, output;
+};
+
 void write_render_stats(const RenderArgs& a, const Job& job, const Totals& t, const nlohmann::json& spread,
-                        double seconds, double setup_seconds, double render_seconds, int resumed_at, bool complete) {
+                        const Timing& time, int resumed_at, bool complete) {
+  const double render_seconds = time.render;
   const SpectralBuckets& b = job.setup.film->buckets();
   nlohmann::json film = {{"type", b.spectral() ? "spectral" : "rgb"}};
   if (b.spectral()) {
@@ -398,9 +416,10 @@ void write_render_stats(const RenderArgs& a, const Job& job, const Totals& t, co
   write_stats(
       a, {{"scene", a.scene},
           {"output", job.output},
-          {"seconds", seconds},
-          {"setup_seconds", setup_seconds},
-          {"render_seconds", render_seconds},
+          {"seconds", time.total},
+          {"setup_seconds", time.setup},
+          {"render_seconds", time.render},
+          {"output_seconds", time.output},
           {"samples_per_pixel", job.spp},
           {"samples_per_pixel_completed", job.tiles.min_done()},
           {"samples_per_pixel_distribution", spread},
@@ -462,7 +481,7 @@ int run_render(const RenderArgs& a) {
       if (!g.any(lead && since >= a.checkpoint)) return;
       g.collect(*setup.film, tiles);
       if (lead && !tiles.complete(spp))
-        save(job->output, a, setup, tiles, job->fingerprint, Snapshot{}, job->irradiance);
+        save(job->output, a, setup, tiles, job->fingerprint, Snapshot{}, job->irradiance, setup.film->image());
       last_checkpoint = std::chrono::steady_clock::now();
     };
   try {
@@ -475,14 +494,16 @@ int run_render(const RenderArgs& a) {
   const double seconds = progress.elapsed_seconds(), render_seconds = seconds - setup_seconds;
   const Totals t = totals(g, counters, render_seconds, process_cpu_seconds() - cpu_before);
   const int signal = int(g.max(interrupt.signal_number()));
-  // Rank 0's film and progress are whole (RenderGroup::collect); the others' are their own.
-  const bool complete = g.broadcast(tiles.complete(spp) ? 1 : 0) != 0;
+  const bool complete = g.complete(tiles, spp);
+  const Image image = whole_image(g, *setup.film, tiles, complete);
   if (!lead) return complete ? 0 : 128 + signal;
-  write_result(a, *job, complete);
+  write_result(a, *job, complete, image);
+  const double output_seconds = progress.elapsed_seconds() - seconds;
   const nlohmann::json spread = spp_distribution(tiles, setup.film->bounds());
   if (!a.quiet && complete) print_summary(*job, t, spread, seconds, render_seconds, resumed_at, g.size());
   if (!a.stats.empty())
-    write_render_stats(a, *job, t, spread, seconds, setup_seconds, render_seconds, resumed_at, complete);
+    write_render_stats(a, *job, t, spread, Timing{seconds, setup_seconds, render_seconds, output_seconds}, resumed_at,
+                       complete);
   return complete ? 0 : 128 + signal;
 }
 

@@ -2,11 +2,13 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
 
 #include "render/film.h"
+#include "render/image_io.h"
 #include "render/tile_progress.h"
 
 namespace eyetrace {
@@ -60,6 +62,38 @@ std::vector<int> offsets_of(const std::vector<int>& counts) {
   // MPI counts are ints: a film beyond 2^31 doubles (16 GiB of accumulators) would need chunking.
   if (total > size_t(INT32_MAX)) throw std::runtime_error("MPI: the film is too large to gather in one message");
   return offsets;
+}
+
+// MPI's type for T.
+template <class T>
+MPI_Datatype mpi_type();
+template <>
+MPI_Datatype mpi_type<double>() {
+  return MPI_DOUBLE;
+}
+template <>
+MPI_Datatype mpi_type<float>() {
+  return MPI_FLOAT;
+}
+template <>
+MPI_Datatype mpi_type<int>() {
+  return MPI_INT;
+}
+
+// Every rank's `mine` to rank 0, in rank order: `all` holds rank r's values from offsets[r]
+// (both empty on the other ranks).
+template <class T>
+void gather_to_root(const std::vector<T>& mine, int rank, int size, std::vector<T>& all, std::vector<int>& offsets) {
+  const int count = int(mine.size());
+  std::vector<int> counts(rank == 0 ? static_cast<size_t>(size) : 0);
+  mpi_check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
+  if (rank == 0) {
+    offsets = offsets_of(counts);
+    all.resize(size_t(offsets.back()) + size_t(counts.back()));
+  }
+  mpi_check(MPI_Gatherv(mine.data(), count, mpi_type<T>(), all.data(), counts.data(), offsets.data(), mpi_type<T>(), 0,
+                        MPI_COMM_WORLD),
+            "MPI_Gatherv");
 }
 
 }  // namespace
@@ -139,19 +173,54 @@ void MpiRenderGroup::share(Film& film, TileProgress& tp) {
 void MpiRenderGroup::collect(Film& film, TileProgress& tp) {
   // Rank 0 sends nothing (its tiles are in place); the others send theirs to it alone.
   const std::vector<double> mine = rank() == 0 ? std::vector<double>() : own_tiles(film, tp);
-  const int count = int(mine.size());
-  std::vector<int> counts(rank() == 0 ? static_cast<size_t>(size()) : 0);
-  mpi_check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
-  std::vector<int> offsets;
   std::vector<double> all;
-  if (rank() == 0) {
-    offsets = offsets_of(counts);
-    all.resize(size_t(offsets.back()) + size_t(counts.back()));
-  }
-  mpi_check(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-                        MPI_COMM_WORLD),
-            "MPI_Gatherv");
+  std::vector<int> offsets;
+  gather_to_root(mine, rank(), size(), all, offsets);
   if (rank() == 0) unpack_others(all, offsets, film, tp);
+}
+
+Image MpiRenderGroup::collect_image(const Film& film, TileProgress& tp) {
+  const PixelBounds& b = film.bounds();
+  const size_t tiles = tp.done.size(), channels = 3 + size_t(film.buckets().count);
+  std::vector<float> values;
+  std::vector<int> done;
+  if (rank() != 0) {
+    size_t pixels = 0;
+    for (size_t t = 0; t < tiles; ++t)
+      if (owns_tile(t, tiles)) pixels += tp.tile_bounds(t, b).area();
+    if (pixels * channels > size_t(INT32_MAX))
+      throw std::runtime_error("MPI: a rank's share of the image is too large");
+    values.resize(pixels * channels);
+    float* out = values.data();
+    for (size_t t = 0; t < tiles; ++t) {
+      if (!owns_tile(t, tiles)) continue;
+      done.push_back(tp.done[t]);
+      const PixelBounds tb = tp.tile_bounds(t, b);
+      for (int y = tb.lo.y; y < tb.hi.y; ++y)
+        for (int x = tb.lo.x; x < tb.hi.x; ++x, out += channels) film.pixel_channels(IVec2(x, y), out);
+    }
+  }
+  Image image = rank() == 0 ? film.blank_image() : Image{};
+  if (rank() == 0)
+    for (size_t t = 0; t < tiles; ++t)
+      if (owns_tile(t, tiles)) film.fill_image(tp.tile_bounds(t, b), image);
+  std::vector<float> all_values;
+  std::vector<int> all_done, value_offsets, done_offsets;
+  gather_to_root(values, rank(), size(), all_values, value_offsets);
+  gather_to_root(done, rank(), size(), all_done, done_offsets);
+  if (rank() != 0) return image;
+  for (int r = 1; r < size(); ++r) {
+    const float* in = all_values.data() + value_offsets[size_t(r)];
+    const int* count = all_done.data() + done_offsets[size_t(r)];
+    for (size_t t = 0; t < tiles; ++t) {
+      if (tile_owner(t, tiles) != r) continue;
+      tp.done[t] = *count++;
+      const PixelBounds tb = tp.tile_bounds(t, b);
+      for (int y = tb.lo.y; y < tb.hi.y; ++y, in += size_t(tb.width()) * channels)
+        std::copy(in, in + size_t(tb.width()) * channels, &image.at(tb.lo.x - b.lo.x, y - b.lo.y, 0));
+    }
+  }
+  return image;
 }
 
 }  // namespace eyetrace

@@ -1,6 +1,6 @@
 // A RenderGroup over MPI_COMM_WORLD (render/render_group.h): the collectives are MPI
 // all-reductions, and share() an all-gather of each rank's own tiles; collect() is share() to
-// rank 0 alone: what the final image and checkpoints need.
+// rank 0 alone: what checkpoints need; collect_image() gathers a finished render's image values.
 #pragma once
 #include <vector>
 
@@ -21,6 +21,7 @@ class MpiRenderGroup : public RenderGroup {
   std::vector<double> gather(double v) override;
   void share(Film& film, TileProgress& tiles) override;
   void collect(Film& film, TileProgress& tiles) override;
+  Image collect_image(const Film& film, TileProgress& tiles) override;
   void abort_job() override { session_.abort_job("render"); }
 
  private:

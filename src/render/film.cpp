@@ -121,6 +121,12 @@ Film::Moments Film::moments(IVec2 p) const {
 }
 
 Image Film::image() const {
+  Image img = blank_image();
+  fill_image(bounds_, img);
+  return img;
+}
+
+Image Film::blank_image() const {
   Image img;
   img.width = bounds_.width();
   img.height = bounds_.height();
@@ -130,17 +136,22 @@ Image Film::image() const {
     for (int b = 0; b < buckets_.count; ++b) img.channel_names.push_back(buckets_.channel_name(b));
   }
   img.pixels.resize(size_t(img.width) * img.height * img.channels);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const IVec2 p = bounds_.lo + IVec2(x, y);
-      RGB v = pixel_value(p);
-      for (int c = 0; c < 3; ++c) img.at(x, y, c) = std::isfinite(v[c]) ? v[c] : 0.f;
-      for (int b = 0; b < buckets_.count; ++b) {
-        const float s = bucket_value(p, b);
-        img.at(x, y, 3 + b) = std::isfinite(s) ? s : 0.f;
-      }
-    }
   return img;
+}
+
+void Film::fill_image(const PixelBounds& region, Image& image) const {
+  for (int y = region.lo.y; y < region.hi.y; ++y)
+    for (int x = region.lo.x; x < region.hi.x; ++x)
+      pixel_channels(IVec2(x, y), &image.at(x - bounds_.lo.x, y - bounds_.lo.y, 0));
+}
+
+void Film::pixel_channels(IVec2 pixel, float* out) const {
+  const RGB v = pixel_value(pixel);
+  for (int c = 0; c < 3; ++c) out[c] = std::isfinite(v[c]) ? v[c] : 0.f;
+  for (int b = 0; b < buckets_.count; ++b) {
+    const float s = bucket_value(pixel, b);
+    out[3 + b] = std::isfinite(s) ? s : 0.f;
+  }
 }
 
 std::map<std::string, std::string> Film::image_metadata() const {

@@ -109,6 +109,12 @@ class Film {
   float bucket_value(IVec2 pixel, int b) const;
   // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, named.
   Image image() const;
+  // image() in parts: the image's size and channels with every value 0; the values of the
+  // pixels in `region` (absolute raster coordinates, inside bounds()) written into it; one
+  // pixel's 3 + buckets().count channels written to `out`.
+  Image blank_image() const;
+  void fill_image(const PixelBounds& region, Image& image) const;
+  void pixel_channels(IVec2 pixel, float* out) const;
   // Header attributes that describe the channels (the spectral layout's version and units).
   std::map<std::string, std::string> image_metadata() const;
   uint64_t nonfinite_samples() const { return nonfinite_; }

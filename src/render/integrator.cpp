@@ -177,7 +177,6 @@ class RenderLoop {
       if (opts_.on_pass) opts_.on_pass(tp_);
       if (opts_.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts_.pass_seconds);
     }
-    group_.collect(film_, tp_);  // rank 0 writes the image
   }
 
   // Pixel p takes [pixel_done, pixel_target) in a pass; the pass is whole when every pixel of

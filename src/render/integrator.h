@@ -65,7 +65,9 @@ struct RenderOptions {
   // samples per pixel. Its max_spp must be the sampler's samples per pixel.
   const AdaptiveOptions* adaptive = nullptr;
   // The processes rendering this image together (render/render_group.h); null: this one alone.
-  // Each renders the tiles it owns; at the end every rank's film is whole.
+  // Each renders the tiles it owns and at the end holds those alone (adaptive: every rank's
+  // film is whole, shared after each pass); the caller collects them (RenderGroup::collect,
+  // collect_image).
   RenderGroup* group = nullptr;
 };
 

@@ -16,6 +16,7 @@
 namespace eyetrace {
 
 class Film;
+struct Image;
 struct TileProgress;
 
 class RenderGroup {
@@ -49,8 +50,17 @@ class RenderGroup {
   // go to every rank. A rank's count of non-finite samples stays its own.
   virtual void share(Film&, TileProgress&) {}
   // The same to rank 0 alone (its film and progress become whole; the others' stay their own):
-  // enough for the final image and for checkpoints, which rank 0 writes.
+  // what a checkpoint or an interrupted render's resumable state needs, which rank 0 writes.
   virtual void collect(Film&, TileProgress&) {}
+  // A finished render's image on rank 0 (the others: an empty image), with rank 0's progress
+  // made whole, gathering what the image needs and no more: every other rank's tiles' image
+  // values (Film::pixel_channels, 3 + buckets floats a pixel instead of the film's 8 + 2 x
+  // buckets doubles) and tile counts. The values are the bits one process computes from the
+  // same sums. Alone: the film's image.
+  virtual Image collect_image(const Film& film, TileProgress&);
+  // Whether every pixel of every rank has all the samples it will get (TileProgress::complete
+  // over the whole job; a rank knows only its own tiles' counts until collect).
+  bool complete(const TileProgress& tp, int spp);
   // After an error on this rank while the others may wait for it in a collective: ends the
   // whole job (MPI_Abort). Nothing to do alone.
   virtual void abort_job() {}

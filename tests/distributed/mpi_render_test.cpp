@@ -85,6 +85,32 @@ TEST(MpiRender, OneTwoAndThreeRanksGiveTheSingleProcessBytes) {
   EXPECT_TRUE(same_pixels(blocks, ref));
 }
 
+// A finished render gathers image values, not film sums (RenderGroup::collect_image): with a
+// spectral film (R, G, B and 16 buckets per pixel) and a crop window whose tiles are cut at its
+// edges, 2 and 3 ranks still write the single process's bytes.
+TEST(MpiRender, SpectralFilmAndCroppedTilesGiveTheSingleProcessBytes) {
+  TempDir dir("eyetrace_mpi_spectral");
+  std::string scene = read_text(kScene);
+  const size_t film = scene.find("Film \"rgb\"");
+  ASSERT_NE(film, std::string::npos);
+  scene.replace(film, std::string("Film \"rgb\"").size(), "Film \"spectral\" \"integer nbuckets\" 16");
+  const std::string spectral = dir.file("spectral.pbrt");
+  std::ofstream(spectral) << scene;
+  const auto args = [&](const std::string& out, const std::string& threads) {
+    return std::vector<std::string>{"render",           spectral, "--resolution", "45x37",     "--crop",
+                                    "0.1,0.93,0.2,0.9", "--spp",  "16",           "--threads", threads,
+                                    "--seed",           "3",      "-q",           "-o",        out};
+  };
+  const std::string ref = dir.file("ref.exr");
+  ASSERT_EQ(test::run_eyetrace_logged(args(ref, "2"), dir.file("ref.log")), 0) << read_text(dir.file("ref.log"));
+  ASSERT_EQ(read_image(ref).channels, 3 + 16);
+  for (int ranks : {2, 3}) {
+    const std::string out = dir.file("out" + std::to_string(ranks) + ".exr"), log = dir.file("mpi.log");
+    ASSERT_EQ(run_mpirun(ranks, args(out, "1"), log), 0) << read_text(log);
+    EXPECT_TRUE(same_pixels(out, ref)) << ranks << " ranks";
+  }
+}
+
 // Ranks started with other arguments (mpirun's MPMD form: another seed on rank 1) would add
 // other pixels to one film: refused before rendering, naming the rank; nothing is written.
 TEST(MpiRender, RanksWithOtherOptionsAreRefused) {
