@@ -3,8 +3,8 @@
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/dielectric_material.h"
 #include "materials/local_bsdf.h"
-#include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "materials/shading_normal.h"
 #include "scene/texture_store.h"
 
 namespace eyetrace {
@@ -19,12 +19,12 @@ class CoatedDiffuseMaterial final : public Material {
     const SpectrumTexture* reflectance;
     const FloatTexture* thickness;
     const SpectrumTexture* albedo;
-    const ImageTexture* normal_map;
+    ShadingNormal shading;
   };
   explicit CoatedDiffuseMaterial(const Inputs& in) : in_(in) {}
 
   const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
-    SurfaceInteraction si = apply_normal_map(in_.normal_map, hit);
+    SurfaceInteraction si = in_.shading.apply(hit);
     TextureEvalContext tc(si);
     float thickness = std::max(0.f, in_.thickness->evaluate(tc));
     if (!std::isfinite(thickness)) thickness = 0.f;
@@ -49,8 +49,8 @@ const PluginSpec& coateddiffuse_material_spec() {
                              param::float_texture("thickness", 0.01).describe("of the coat"),
                              param::spectrum_texture("albedo", 0).describe("of the coat's medium"),
                              eta_at_550_param()} +
-          RoughnessParams::declared() +
-          std::vector<ParamSpec>{normal_map_param(), param::float_texture("g", 0).describe("read and unused"),
+          RoughnessParams::declared() + ShadingNormal::declared() +
+          std::vector<ParamSpec>{param::float_texture("g", 0).describe("read and unused"),
                                  param::integer("maxdepth", 10).range(1, 1 << 20).describe("read and unused"),
                                  param::integer("nsamples", 1).range(1, 1 << 20).describe("read and unused")}};
   return spec;
@@ -64,7 +64,7 @@ std::unique_ptr<Material> create_coateddiffuse_material(const MaterialContext& c
   in.reflectance = ctx.textures.spectrum_param(p, "reflectance");
   in.thickness = ctx.textures.float_param(p, "thickness");
   in.albedo = ctx.textures.spectrum_param(p, "albedo");
-  in.normal_map = read_normal_map(ctx, p);
+  in.shading = ShadingNormal::read(ctx, p);
   ctx.textures.float_param(p, "g");  // a texture it names must exist, though the model has no use for it
   return std::make_unique<CoatedDiffuseMaterial>(in);
 }

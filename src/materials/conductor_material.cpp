@@ -4,8 +4,8 @@
 
 #include "materials/conductor_bxdf.h"
 #include "materials/local_bsdf.h"
-#include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "materials/shading_normal.h"
 #include "scene/spectrum_param.h"
 #include "scene/texture_store.h"
 
@@ -26,11 +26,11 @@ Spectrum named(const std::string& name) { return Spectrum::named(*find_named_spe
 class ConductorMaterial final : public Material {
  public:
   ConductorMaterial(const SpectrumTexture* eta, const SpectrumTexture* k, const SpectrumTexture* reflectance,
-                    RoughnessParams roughness, const ImageTexture* normal_map)
-      : eta_(eta), k_(k), reflectance_(reflectance), roughness_(roughness), normal_map_(normal_map) {}
+                    RoughnessParams roughness, ShadingNormal shading)
+      : eta_(eta), k_(k), reflectance_(reflectance), roughness_(roughness), shading_(shading) {}
 
   const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
-    SurfaceInteraction si = apply_normal_map(normal_map_, hit);
+    SurfaceInteraction si = shading_.apply(hit);
     TextureEvalContext tc(si);
     TrowbridgeReitz mf = roughness_.distribution(tc);
     SampledSpectrum eta, k;
@@ -53,7 +53,7 @@ class ConductorMaterial final : public Material {
   const SpectrumTexture* k_;
   const SpectrumTexture* reflectance_;
   RoughnessParams roughness_;
-  const ImageTexture* normal_map_;
+  ShadingNormal shading_;
 };
 
 // A constant eta must be positive and k non-negative (textures are clamped where they are
@@ -76,7 +76,7 @@ const PluginSpec& conductor_material_spec() {
           param::spectrum_texture("eta").shown_default("\"metal-Cu-eta\"").describe("real part of the index"),
           param::spectrum_texture("k").shown_default("\"metal-Cu-k\"").describe("imaginary part of the index"),
           param::spectrum_texture("reflectance").describe("instead of `eta` and `k` (not with them)")} +
-          RoughnessParams::declared() + std::vector<ParamSpec>{normal_map_param()}};
+          RoughnessParams::declared() + ShadingNormal::declared()};
   return spec;
 }
 
@@ -93,7 +93,7 @@ std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) 
     if (!k) k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-k")));
   }
   return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx, p),
-                                             read_normal_map(ctx, p));
+                                             ShadingNormal::read(ctx, p));
 }
 
 }  // namespace eyetrace

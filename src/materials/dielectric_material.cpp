@@ -2,8 +2,8 @@
 
 #include "materials/dielectric_bxdf.h"
 #include "materials/local_bsdf.h"
-#include "materials/normal_map.h"
 #include "materials/roughness.h"
+#include "materials/shading_normal.h"
 #include "scene/spectrum_param.h"
 
 namespace eyetrace {
@@ -14,10 +14,10 @@ namespace {
 // wavelength (as pbrt-v4 does); a constant index keeps all four.
 class DielectricMaterial final : public Material {
  public:
-  DielectricMaterial(Spectrum eta, bool dispersive, RoughnessParams roughness, const ImageTexture* normal_map)
-      : eta_(std::move(eta)), dispersive_(dispersive), roughness_(roughness), normal_map_(normal_map) {}
+  DielectricMaterial(Spectrum eta, bool dispersive, RoughnessParams roughness, ShadingNormal shading)
+      : eta_(std::move(eta)), dispersive_(dispersive), roughness_(roughness), shading_(shading) {}
   const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
-    SurfaceInteraction si = apply_normal_map(normal_map_, hit);
+    SurfaceInteraction si = shading_.apply(hit);
     TrowbridgeReitz mf = roughness_.distribution(TextureEvalContext(si));
     if (dispersive_) lambda.terminate_secondary();
     return make_local_bsdf(arena, si, DielectricBxDF(eta_(lambda[0]), mf), hit.ns);
@@ -27,7 +27,7 @@ class DielectricMaterial final : public Material {
   Spectrum eta_;
   bool dispersive_;
   RoughnessParams roughness_;
-  const ImageTexture* normal_map_;
+  ShadingNormal shading_;
 };
 
 }  // namespace
@@ -49,7 +49,7 @@ const PluginSpec& dielectric_material_spec() {
       std::vector<ParamSpec>{param::float_or_spectrum("eta", 1.5)
                                  .above(0)
                                  .describe("index of refraction; a spectrum (e.g. `\"glass-BK7\"`) disperses")} +
-          RoughnessParams::declared() + std::vector<ParamSpec>{normal_map_param()}};
+          RoughnessParams::declared() + ShadingNormal::declared()};
   return spec;
 }
 
@@ -68,7 +68,7 @@ std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx)
     }
   }
   return std::make_unique<DielectricMaterial>(std::move(eta), dispersive, RoughnessParams::read(ctx, p),
-                                              read_normal_map(ctx, p));
+                                              ShadingNormal::read(ctx, p));
 }
 
 }  // namespace eyetrace
