@@ -173,6 +173,7 @@ ParamSpec any_texture(std::string name, std::optional<double> def) {
   return make(std::move(name), ParamType::AnyTexture, def);
 }
 ParamSpec reals(std::string name) { return make_array(std::move(name), ParamType::Float); }
+ParamSpec strings(std::string name) { return make_array(std::move(name), ParamType::String); }
 ParamSpec integers(std::string name) { return make_array(std::move(name), ParamType::Integer); }
 ParamSpec point2s(std::string name) { return make_array(std::move(name), ParamType::Point2); }
 ParamSpec point3s(std::string name) { return make_array(std::move(name), ParamType::Point3); }

@@ -78,6 +78,7 @@ ParamSpec float_texture(std::string name, std::optional<double> def = std::nullo
 ParamSpec spectrum_texture(std::string name, std::optional<double> def = std::nullopt);
 ParamSpec any_texture(std::string name, std::optional<double> def = std::nullopt);
 ParamSpec reals(std::string name);
+ParamSpec strings(std::string name);
 ParamSpec integers(std::string name);
 ParamSpec point2s(std::string name);
 ParamSpec point3s(std::string name);

@@ -55,6 +55,10 @@ struct MaterialContext {
   const ParameterList& params;
   TextureStore& textures;
   std::string search_dir;
+  // The material MakeNamedMaterial defined under a name (made on first use; null for an
+  // "interface"); throws SceneError for an unknown name or a material that would contain
+  // itself. Unset where no named materials exist (tests).
+  std::function<const Material*(const std::string& name)> named_material = {};
 };
 
 struct TextureContext {

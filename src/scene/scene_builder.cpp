@@ -243,7 +243,18 @@ class Builder {
     }
     auto it = materials_.find(key);
     if (it != materials_.end()) return it->second;
-    MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir};
+    // A "mix" names other materials, made here on first use; one that leads back to itself
+    // would never finish.
+    if (!materials_in_progress_.insert(key).second)
+      fail(loc, "material \"{}\" contains itself (through \"mix\")", ref.name.empty() ? key : ref.name);
+    struct Done {
+      std::set<std::string>& set;
+      std::string key;
+      ~Done() { set.erase(key); }
+    } done{materials_in_progress_, key};
+    MaterialContext ctx{e->params, *setup_.textures, desc_.search_dir, [this, e](const std::string& name) {
+                          return material(MaterialRef{-1, name}, e->loc);
+                        }};
     // pbrt-v4 reads `Material ""` and "none" (deprecated) as "interface": no surface, only the
     // boundary of a medium.
     const std::string& name = e->name.empty() || e->name == "none" ? std::string("interface") : e->name;
@@ -328,6 +339,7 @@ class Builder {
   const bool keep_going_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
+  std::set<std::string> materials_in_progress_;  // being made (a mix naming materials)
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
   DiagnosticList errors_;
 };
