@@ -16,6 +16,7 @@
 #include "materials/conductor_material.h"
 #include "materials/dielectric_material.h"
 #include "materials/diffuse_material.h"
+#include "materials/diffuse_transmission_material.h"
 #include "materials/interface_material.h"
 #include "materials/mix_material.h"
 #include "optics/eye_models.h"
@@ -72,6 +73,7 @@ void register_builtin_plugins(Registry& r) {
   r.materials.add("dielectric", create_dielectric_material, dielectric_material_spec());
   r.materials.add("interface", create_interface_material, interface_material_spec());
   r.materials.add("mix", create_mix_material, mix_material_spec());
+  r.materials.add("diffusetransmission", create_diffusetransmission_material, diffusetransmission_material_spec());
 
   r.float_textures.add("constant", create_constant_float_texture, constant_texture_spec());
   r.float_textures.add("scale", create_scale_float_texture, scale_texture_spec());

@@ -16,6 +16,7 @@
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/dielectric_bxdf.h"
+#include "materials/diffuse_transmission_bxdf.h"
 #include "materials/lambertian_bxdf.h"
 #include "materials/local_bsdf.h"
 
@@ -44,6 +45,15 @@ std::vector<Case> cases() {
   return {
       {"lambertian",
        [](auto& a, auto& si) { return make_local_bsdf(a, si, LambertianBxDF(test::channels(1.f, 0.8f, 0.3f))); }},
+      {"diffuse_transmission",
+       [](auto& a, auto& si) {
+         return make_local_bsdf(
+             a, si, DiffuseTransmissionBxDF(test::channels(0.2f, 0.5f, 0.1f), test::channels(0.7f, 0.3f, 0.05f)));
+       }},
+      {"diffuse_transmission_only",
+       [](auto& a, auto& si) {
+         return make_local_bsdf(a, si, DiffuseTransmissionBxDF(SampledSpectrum(0.f), SampledSpectrum(1.f)));
+       }},
       {"dielectric_smooth",
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, DielectricBxDF(1.5f, mf(0.f, 0.f))); }, true},
       {"dielectric_rough",
