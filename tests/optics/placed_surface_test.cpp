@@ -20,8 +20,10 @@
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
 #include "optics/sequential_trace.h"
 #include "optics/spectacle_lens.h"
+#include "optics/zernike_file.h"
 
 namespace eyetrace::optics {
 namespace {
@@ -326,6 +328,16 @@ TEST(PlacedSurface, BatchOnEveryInstructionSetEqualsSingleRaysBitForBit) {
   add_spectacle_lens(eye, lens);
   const CompiledSystem sys(eye);
   ASSERT_FALSE(sys.rotationally_symmetric());
+  // The same with a measured wavefront (coma and astigmatism, third order) on the iris: a phase
+  // plate's surface, which the batch takes lane by lane.
+  ZernikeFile zernike;
+  zernike.origin = "test.zer";
+  zernike.pupil_diameter_mm = 6.0;
+  zernike.max_order = 3;
+  zernike.coefficients_um = {0.0, 0.0, 0.0, 0.2, 0.1, -0.3, 0.0, 0.15, -0.1, 0.0};
+  Prescription plated_eye = eye;
+  add_phase_plate(plated_eye, zernike);
+  const CompiledSystem plated(plated_eye);
 
   Prescription cyl;
   cyl.name = "cylinder";
@@ -349,14 +361,17 @@ TEST(PlacedSurface, BatchOnEveryInstructionSetEqualsSingleRaysBitForBit) {
     const std::string name = to_string(isa);
     expect_batch_bits(sys, reverse, nullptr, sys.image_index() - 1, 0, name + " eye");
     expect_batch_bits(sys, reverse, &lambda, sys.image_index() - 1, 0, name + " eye per-ray wavelength");
+    expect_batch_bits(plated, reverse, &lambda, plated.image_index() - 1, 0, name + " eye with a phase plate");
     expect_batch_bits(cylinder, forward, nullptr, 0, cylinder.image_index(), name + " cylinder");
   }
   // The comparison covers passing and lost rays of both systems.
   int eye_ok = 0, cylinder_ok = 0, cylinder_lost = 0;
-  for (const Ray& r : reverse) eye_ok += sys.trace_reverse(r).ok();
+  int plated_ok = 0;
+  for (const Ray& r : reverse) eye_ok += sys.trace_reverse(r).ok(), plated_ok += plated.trace_reverse(r).ok();
   for (const Ray& r : forward) (cylinder.trace_forward(r).ok() ? cylinder_ok : cylinder_lost) += 1;
   EXPECT_GT(eye_ok, 50);
   EXPECT_LT(eye_ok, 330);
+  EXPECT_GT(plated_ok, 50);
   EXPECT_GT(cylinder_ok, 30);
   EXPECT_GT(cylinder_lost, 30);
 }
