@@ -1,11 +1,11 @@
 // Biconic sag, slopes and the iterative ray intersection (see biconic_surface.h).
 #include "optics/biconic_surface.h"
 
-#include "optics/biconic_kernel.h"
-
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include "optics/biconic_kernel.h"
 
 namespace eyetrace::optics {
 

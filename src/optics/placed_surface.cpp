@@ -4,10 +4,7 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
-
-#include "optics/sequential_trace.h"
 
 namespace eyetrace::optics::trace_detail {
 
