@@ -3,7 +3,8 @@
 // items_per_second = traces per second. The batch benchmarks run on each instruction set
 // (/0 baseline = SSE2, /1 AVX2 where the CPU has it), at the compiled wavelength and at a
 // wavelength of each ray's own (uniform in 360-830 nm). BM_TraceAstigmatic* trace the same rays
-// through the general (scalar) path of a non-symmetric eye: /0 Navarro with a biconic cornea
+// through a non-symmetric eye (its placed surfaces by placed_kernel.h's step, the batch on the
+// start-up instruction set): /0 Navarro with a biconic cornea
 // of 1.50 D cylinder at axis 90, /1 that eye with the iris decentred 0.3 mm and the lens's
 // surfaces decentred 0.1 mm and tilted 1 deg (iris 0.3 mm in front of the lens).
 // BM_TraceMeasuredSingle: the plain Navarro eye with a measured wavefront to the 4th order (the

@@ -42,11 +42,30 @@ struct MeridianFrame {
   double y(double u, double v) const { return sin_a * u + cos_a * v; }
 };
 
+// The numbers of a biconic its intersection works with, computed once per surface (a placed
+// surface keeps them: placed_surface.h).
+struct BiconicTerms {
+  double c1 = 0.0, c2 = 0.0;  // the meridians' curvatures
+  double a = 0.0, b = 0.0;    // (1+Q1) c1^2 and (1+Q2) c2^2: the rim is a u^2 + b v^2 = 1
+  MeridianFrame frame{0.0};
+  // The conic the iteration starts from (intersect_biconic says which), as the conic kernel
+  // (trace_kernel.h) takes it: curvature, 1 + Q, their product, flat.
+  double start_c = 0.0, start_k = 1.0, start_kc = 0.0;
+  bool start_plane = true;
+
+  BiconicTerms() = default;
+  explicit BiconicTerms(const SurfaceProfile& profile);
+};
+
 // The first crossing of the ray o + t d (local frame, any |d| > 0) with the biconic's vertex
 // sheet at t >= -t_tolerance. Not converged (or no root): hit false, and diverged true when the
 // iteration gave up rather than finding that the ray misses.
 ProfileHit intersect_biconic(const SurfaceProfile& profile, const glm::dvec3& origin, const glm::dvec3& direction,
                              double t_tolerance);
+// Its second stage alone (the bracketed search, see biconic_surface.cpp), for a ray o + t d the
+// lane iteration (biconic_kernel.h) did not settle. Plain doubles: the AVX2 batch calls it.
+ProfileHit intersect_biconic_bracketed(const BiconicTerms& terms, double ox, double oy, double oz, double dx, double dy,
+                                       double dz, double t_tolerance);
 
 // Gradient of sag(x, y) - z at a point of the sheet (local frame): (dz/dx, dz/dy, -1), i.e.
 // oriented towards -z at the vertex like the conic's. Non-finite beyond the rim.

@@ -1,6 +1,7 @@
-// The hot path of the eye camera: one loop over a flat interface array around the one kernel of
-// trace_kernel.h, for one ray (V = double) or a block of rays (V = a SIMD batch). No
-// allocation, no exceptions, no virtual calls per ray.
+// The hot path of the eye camera: one loop over a flat interface array around the kernels of
+// trace_kernel.h (a rotationally symmetric surface) and placed_kernel.h (a placed one), for one
+// ray (V = double) or a block of rays (V = a SIMD batch, batch_kernel.h). No allocation, no
+// exceptions, no virtual calls per ray.
 #include "optics/sequential_trace.h"
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "optics/trace_kernel.h"
+#include "optics/batch_kernel.h"
 
 namespace eyetrace::optics {
 
@@ -119,24 +120,8 @@ TraceResult CompiledSystem::trace_range(const Ray& ray, int first, int last, dou
                        : trace_one<false, true>(ray, first, last, lambda_nm, points);
 }
 
-namespace {
-
-// One placed surface once refraction_at has given its eta (and, for a per-ray wavelength, set n
-// to the index the ray leaves into, which a phase plate's rule needs): the general path's step,
-// shared by the one-ray trace and the batch's runs of placed surfaces.
-template <bool Forward, bool PerRayWavelength>
-trace_detail::PlacedStep placed_step(const trace_detail::Interface& f, const trace_detail::PlacedSurface& s,
-                                     bool refracts, const kernel::Eta<double>& eta, double n, const glm::dvec3& o,
-                                     const glm::dvec3& d) {
-  const bool bends = refracts && eta.refracts;
-  const double n_to = PerRayWavelength ? n : (Forward ? f.n_after : f.n_before);
-  return trace_detail::step_placed(s, f.sd2, f.role, o, d, bends, bends ? eta.eta : 1.0, n_to);
-}
-
-}  // namespace
-
-// General: the surfaces with placed_[i].general take step_placed (placed_surface.h); the others
-// the kernel, as in a symmetric system.
+// General: the surfaces with placed_[i].general take placed_kernel.h's step; the others the
+// conic kernel's, as in a symmetric system.
 template <bool Forward, bool PerRayWavelength, bool General>
 TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, double lambda_nm, glm::dvec3* points) const {
   constexpr int step_dir = Forward ? 1 : -1;
@@ -155,18 +140,12 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
     const Interface& f = interfaces_[i];
     kernel::Eta<double> eta;
     const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws_.data(), lambda, w, n, eta);
-    if constexpr (General) {
-      if (placed_[i].general) {
-        const trace_detail::PlacedStep m =
-            placed_step<Forward, PerRayWavelength>(f, placed_[i], refracts, eta, n, o, d);
-        if (m.status != TraceStatus::Ok) return {m.status, i, {o, d}};
-        o = m.p, d = m.d;
-        if (points) points[Forward ? i - first : first - i] = o;
-        if (i == last) break;
-        continue;
-      }
-    }
-    const kernel::Moved<double> m = kernel::step(f, o.x, o.y, o.z, d.x, d.y, d.z, refracts, eta);
+    // The index of the medium the ray leaves into (a phase plate's rule needs it).
+    const double n_to = PerRayWavelength ? n : (Forward ? f.n_after : f.n_before);
+    const kernel::Moved<double> m =
+        General && placed_[i].general
+            ? kernel::placed_step(placed_[i], f.sd2, f.role, o.x, o.y, o.z, d.x, d.y, d.z, refracts, eta, n_to, true)
+            : kernel::step(f, o.x, o.y, o.z, d.x, d.y, d.z, refracts, eta);
     if (m.status != kernel::kOk) return {static_cast<TraceStatus>(static_cast<int>(m.status)), i, {o, d}};
     o = {m.px, m.py, m.pz};
     d = {m.dx, m.dy, m.dz};
@@ -183,6 +162,15 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
 namespace kernel {
 
 void trace_block_baseline(const BlockJob& job, Block& block) { trace_block<xsimd::batch<double>>(job, block); }
+
+void plate_surface_lanes(const BlockJob& job, int index, Block& block) {
+  if (job.per_ray_wavelength)
+    job.forward ? placed_surface_lanes<true, true, double>(job, index, block)
+                : placed_surface_lanes<false, true, double>(job, index, block);
+  else
+    job.forward ? placed_surface_lanes<true, false, double>(job, index, block)
+                : placed_surface_lanes<false, false, double>(job, index, block);
+}
 
 }  // namespace kernel
 
@@ -228,52 +216,9 @@ void CompiledSystem::trace_range_batch(const Ray* rays, const double* lambda_nm,
                 std::min(kTraceBatchSize, count - base), first, last);
 }
 
-namespace {
-
-// Lanes of a block through surfaces first..last (all of them placed, traced one ray at a time
-// by step_placed), as trace_one does it: the same index bookkeeping, so a lane's bits are those
-// of the one-ray trace. Lanes not Ok stay as they are.
-template <bool Forward, bool PerRayWavelength>
-void placed_segment(const std::vector<trace_detail::Interface>& interfaces, const MediumLaw* laws,
-                    const std::vector<trace_detail::PlacedSurface>& placed, int first, int last, std::size_t n,
-                    kernel::Block& B) {
-  constexpr int step_dir = Forward ? 1 : -1;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (B.status[j] != kernel::kOk) continue;
-    glm::dvec3 o(B.ox[j], B.oy[j], B.oz[j]), d(B.dx[j], B.dy[j], B.dz[j]);
-    double lambda = 0.0, index = 0.0;
-    std::array<double, 4> w{};
-    if constexpr (PerRayWavelength) {
-      lambda = B.lambda[j];
-      w = dispersion::herzberger_weights(lambda);
-      const trace_detail::Interface& f = interfaces[static_cast<std::size_t>(first)];
-      index = kernel::side_index(Forward ? f.before : f.after, laws, lambda, w);
-    }
-    for (int i = first;; i += step_dir) {
-      const trace_detail::Interface& f = interfaces[static_cast<std::size_t>(i)];
-      kernel::Eta<double> eta;
-      const bool refracts = kernel::refraction_at<Forward, PerRayWavelength>(f, laws, lambda, w, index, eta);
-      const trace_detail::PlacedStep m =
-          placed_step<Forward, PerRayWavelength>(f, placed[static_cast<std::size_t>(i)], refracts, eta, index, o, d);
-      if (m.status != TraceStatus::Ok) {
-        B.status[j] = kernel::code(m.status);
-        B.surface[j] = i;
-        break;
-      }
-      o = m.p, d = m.d;
-      if (i == last) break;
-    }
-    B.ox[j] = o.x, B.oy[j] = o.y, B.oz[j] = o.z;
-    B.dx[j] = d.x, B.dy[j] = d.y, B.dz[j] = d.z;
-  }
-}
-
-}  // namespace
-
-// A block of rays. A system with placed surfaces is cut into runs of kernel surfaces, traced
-// by the SIMD kernel, and runs of placed ones, traced lane by lane; between runs a lane
-// carries its point and unnormalised direction, and the index of its medium is evaluated
-// afresh from the same law, so every lane ends with the bits of trace_range.
+// A block of rays through surfaces first..last, every surface for all lanes at once (a placed
+// one by placed_kernel.h's step, a symmetric one by the conic kernel's), so every lane ends with
+// the bits of trace_range.
 void CompiledSystem::trace_block(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t n,
                                  int first, int last) const {
   kernel::Block B;
@@ -290,24 +235,9 @@ void CompiledSystem::trace_block(const Ray* rays, const double* lambda_nm, Trace
     B.status[j] = kernel::code(TraceStatus::Missed), B.surface[j] = -1.0;
     B.lambda[j] = wavelength_nm_;
   }
-  const bool per_ray = lambda_nm != nullptr, forward = first <= last;
-  const int step_dir = forward ? 1 : -1;
-  for (int i = first;;) {
-    const bool general = placed_[static_cast<std::size_t>(i)].general;
-    int j = i;
-    while (j != last && placed_[static_cast<std::size_t>(j + step_dir)].general == general) j += step_dir;
-    if (!general)
-      block_tracer().load(std::memory_order_relaxed)(
-          {interfaces_.data(), laws_.data(), i, j, forward, per_ray, herzberger_}, B);
-    else if (forward)
-      per_ray ? placed_segment<true, true>(interfaces_, laws_.data(), placed_, i, j, n, B)
-              : placed_segment<true, false>(interfaces_, laws_.data(), placed_, i, j, n, B);
-    else
-      per_ray ? placed_segment<false, true>(interfaces_, laws_.data(), placed_, i, j, n, B)
-              : placed_segment<false, false>(interfaces_, laws_.data(), placed_, i, j, n, B);
-    if (j == last) break;
-    i = j + step_dir;
-  }
+  block_tracer().load(std::memory_order_relaxed)({interfaces_.data(), laws_.data(), general_ ? placed_.data() : nullptr,
+                                                  first, last, first <= last, lambda_nm != nullptr, herzberger_},
+                                                 B);
   for (std::size_t j = 0; j < n; ++j) {
     const glm::dvec3 o(B.ox[j], B.oy[j], B.oz[j]);
     glm::dvec3 d(B.dx[j], B.dy[j], B.dz[j]);

@@ -4,10 +4,11 @@
 // nothing, throws nothing and reports every lost ray by kind instead of producing NaN. Each ray
 // can be traced at its own wavelength: the indices then come from the media's dispersion laws.
 // One kernel (trace_kernel.h) intersects and refracts for the single-ray and the batched trace.
-// A system that is not rotationally symmetric (a biconic surface, a decentred or tilted surface
-// or iris, a phase plate) is traced by the general path instead: one ray at a time (the batch calls loop over
-// it), each surface in its own frame (placed_surface.h); its symmetric, unplaced surfaces still
-// go through the kernel. A symmetric system never enters that path, so its results are those of
+// In a system that is not rotationally symmetric the placed surfaces (a biconic surface, a
+// decentred or tilted surface or iris, a phase plate) take the general step instead, each
+// surface in its own frame (placed_surface.h, placed_kernel.h; the same code for one ray and for
+// a batch's lanes, a phase plate's surface lane by lane); its symmetric, unplaced surfaces still
+// go through the kernel. A symmetric system never enters that step, so its results are those of
 // the kernel, bit for bit.
 #pragma once
 
@@ -146,9 +147,9 @@ class CompiledSystem {
   // The same for many rays at once: results[j] is what trace_range(rays[j], first, last,
   // lambda_nm[j]) gives, bit for bit; lambda_nm == nullptr traces every ray at the compiled
   // wavelength, as trace_range(rays[j], first, last). Faster per ray: rays go in batches of
-  // kTraceBatchSize, several per SIMD register, through every run of rotationally symmetric,
-  // unplaced surfaces; a run of biconic or placed surfaces takes them one at a time (the
-  // single-ray general path). No allocation.
+  // kTraceBatchSize, several per SIMD register, through every surface (a surface with a phase
+  // plate takes them one at a time; a biconic's rare rays that its Newton iteration does not
+  // settle are searched one at a time, biconic_kernel.h). No allocation.
   void trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results, std::size_t count, int first,
                          int last) const;
   void trace_range_batch(const Ray* rays, TraceResult* results, std::size_t count, int first, int last) const {
@@ -164,7 +165,7 @@ class CompiledSystem {
   double plate_path_mm(int surface, const glm::dvec3& point) const;
 
   // False when some surface is biconic, placed or carries a phase plate: then every trace takes
-  // the general (scalar) path.
+  // the general step on those surfaces.
   bool rotationally_symmetric() const { return !general_; }
 
   // The compiled data as the kernel reads it (trace_kernel.h).

@@ -12,8 +12,11 @@
 // per lane; the rare ones (a ray parallel to a paraboloid's axis, a tangent at the origin, a
 // zero gradient) are handled in it, not by a second code path.
 //
-// Internal to the optics library: included by sequential_trace.cpp, conic_surface.cpp and
-// trace_kernel_avx2.cpp (the same code compiled for AVX2, chosen at run time).
+// The biconic and placed surfaces of a system that is not rotationally symmetric have their own
+// lane kernels on top of this one (biconic_kernel.h, placed_kernel.h), which refract with its
+// refract(); batch_kernel.h runs a block of rays through a range of surfaces.
+//
+// Internal to the optics library: included by conic_surface.cpp and the headers above.
 #pragma once
 
 #include <array>
@@ -30,34 +33,6 @@ namespace eyetrace::optics::kernel {
 
 using trace_detail::Interface;
 using trace_detail::MediumLaw;
-
-// kTraceBatchSize rays in structure-of-arrays form: what the batch trace works on.
-struct Block {
-  static constexpr std::size_t N = kTraceBatchSize;
-  alignas(64) double ox[N], oy[N], oz[N];
-  alignas(64) double dx[N], dy[N], dz[N];
-  alignas(64) double status[N];   // the lane's TraceStatus (Ok = 0 while it travels)
-  alignas(64) double surface[N];  // where a lost lane was lost
-  alignas(64) double lambda[N];   // per-ray wavelength (nm), already clamped
-  alignas(64) double n[N];        // per-ray wavelength: index of the medium the ray is in
-  alignas(64) double w[4][N];     // per-ray wavelength: Herzberger weights of lambda
-};
-
-struct BlockJob {
-  const Interface* interfaces;
-  const MediumLaw* laws;
-  int first, last;
-  bool forward;             // towards the image (first <= last) or away from it (first >= last)
-  bool per_ray_wavelength;  // Block::lambda is set; else the compiled indices
-  bool herzberger;          // some law is Navarro-Herzberger (the weights are needed)
-};
-
-// Traces a block through surfaces first..last (lanes not Ok at the start stay as they are).
-// The same template (below) compiled for the baseline instruction set (sequential_trace.cpp)
-// and, on x86-64, for AVX2 (trace_kernel_avx2.cpp).
-void trace_block_baseline(const BlockJob& job, Block& block);
-void trace_block_avx2(const BlockJob& job, Block& block);
-bool avx2_compiled();  // trace_block_avx2 exists (x86-64 with a compiler that targets AVX2)
 
 // The kernel's functions are inlined into the surface loops (a call per surface, with its
 // result returned through memory, costs the single-ray trace ~20%).
@@ -103,11 +78,40 @@ template <class A>
 xsimd::batch<double, A> copysign(const xsimd::batch<double, A>& x, const xsimd::batch<double, A>& y) {
   return xsimd::copysign(x, y);
 }
+inline double abs(double x) { return std::abs(x); }
+template <class A>
+xsimd::batch<double, A> abs(const xsimd::batch<double, A>& x) {
+  return xsimd::abs(x);
+}
+// The smaller and larger of a and b by one compare, the same in every lane type (std::fmin's
+// and the packed min's rules differ for NaN and signed zeros; callers pass neither).
+template <class V>
+V min_of(const V& a, const V& b) {
+  return select(b < a, b, a);
+}
+template <class V>
+V max_of(const V& a, const V& b) {
+  return select(a < b, b, a);
+}
 inline bool is_finite(double x) { return std::isfinite(x); }
 template <class A>
 xsimd::batch_bool<double, A> is_finite(const xsimd::batch<double, A>& x) {
   return xsimd::isfinite(x);
 }
+
+// Lanes in memory: V::size doubles (1 for V = double), for the work done one lane at a time.
+template <class V>
+struct Lanes {
+  static constexpr std::size_t size = V::size;
+  static V load(const double* p) { return V::load_unaligned(p); }
+  static void store(const V& x, double* p) { x.store_unaligned(p); }
+};
+template <>
+struct Lanes<double> {
+  static constexpr std::size_t size = 1;
+  static double load(const double* p) { return *p; }
+  static void store(double x, double* p) { *p = x; }
+};
 
 // Lane statuses are kept as doubles so every array of a block has one element type.
 constexpr double code(TraceStatus s) { return static_cast<double>(s); }
@@ -211,17 +215,46 @@ struct Moved {
   V dx, dy, dz;  // where kOk: the direction after the surface
 };
 
-// Intersect, clip, refract (refracts false: the surface does not refract any lane). The ray is
-// (o, d) in the system frame, |d| = 1.
-//
-// Refraction is vector Snell with the unnormalised surface gradient g (so the normal is never
+template <class V>
+struct Refracted {
+  V status;      // kOk, or why the lane stopped (a lane not kOk on entry keeps its status)
+  V dx, dy, dz;  // where kOk: the direction after the surface
+};
+
+// Vector Snell with the unnormalised surface gradient g at the hit (so the normal is never
 // normalised): d' = eta d + gamma g, with gamma the root of |d'| = 1 that continues forward,
 //   gamma = (-eta (g.d) - sqrt(eta^2 (g.d)^2 + |g|^2 (1 - eta^2))) / |g|^2,   g turned so g.d <= 0.
 // It equals the textbook eta d + (eta cos_i - cos_t) n but has one square root and one
 // independent division instead of three dependent ones: the latency chain is what limits the
 // camera's ray rate. A negative radicand is total internal reflection (so is a NaN one, which a
-// finite ray cannot produce). |g| is zero only at a conic's centre, which no true hit reaches; a
-// hit computed there from a ray origin ~1e13 mm away (round-off) is reported as Missed.
+// finite ray cannot produce). A zero |g| (a conic's centre, which no true hit reaches: a hit
+// computed there from a ray origin ~1e13 mm away by round-off) or a non-finite one (a biconic
+// at its rim, where the slope is infinite) is reported as Missed. d and g in one frame, |d| = 1;
+// lanes whose status is not kOk on entry keep it. The conic kernel (step) and the placed
+// surfaces (placed_kernel.h) refract with this one function.
+template <class V>
+EYETRACE_KERNEL_INLINE Refracted<V> refract(V gx, V gy, V gz, const V& dx, const V& dy, const V& dz, const V& status,
+                                            const Eta<V>& eta) {
+  V gd = gx * dx + gy * dy + gz * dz;
+  const Mask<V> flip = gd > 0.0;
+  gx = select(flip, -gx, gx), gy = select(flip, -gy, gy), gz = select(flip, -gz, gz), gd = select(flip, -gd, gd);
+  const V g2 = gx * gx + gy * gy + gz * gz;
+  const V radicand = eta.eta2 * gd * gd + g2 * eta.one_minus_eta2;
+  const Mask<V> refracted = radicand >= 0.0;
+  const V gamma = (-eta.eta * gd - sqrt(select(refracted, radicand, V(0.0)))) * (1.0 / g2);
+  const V refraction =
+      select((g2 > 0.0) & is_finite(g2), select(refracted, V(kOk), V(code(TraceStatus::TotalInternalReflection))),
+             V(code(TraceStatus::Missed)));
+  const V nx = eta.eta * dx + gamma * gx, ny = eta.eta * dy + gamma * gy, nz = eta.eta * dz + gamma * gz;
+  // Per-lane indices refract every lane too, unless two media have the same index at a lane's
+  // wavelength: checked once, the selects below are for that case only.
+  if (eta.all || all(eta.refracts)) return {select(status == kOk, refraction, status), nx, ny, nz};
+  return {select((status == kOk) & eta.refracts, refraction, status), select(eta.refracts, nx, dx),
+          select(eta.refracts, ny, dy), select(eta.refracts, nz, dz)};
+}
+
+// Intersect, clip, refract (refracts false: the surface does not refract any lane). The ray is
+// (o, d) in the system frame, |d| = 1.
 template <class V>
 EYETRACE_KERNEL_INLINE Moved<V> step(const Interface& f, const V& ox, const V& oy, const V& oz, const V& dx,
                                      const V& dy, const V& dz, bool refracts, const Eta<V>& eta) {
@@ -235,28 +268,8 @@ EYETRACE_KERNEL_INLINE Moved<V> step(const Interface& f, const V& ox, const V& o
   if (!refracts) return {status, px, py, pz + f.z, dx, dy, dz};
 
   // Gradient of c(x^2 + y^2 + k z^2) - 2z, halved.
-  V gx = f.c * px, gy = f.c * py, gz = f.kc * pz - 1.0;
-  V gd = gx * dx + gy * dy + gz * dz;
-  const Mask<V> flip = gd > 0.0;
-  gx = select(flip, -gx, gx), gy = select(flip, -gy, gy), gz = select(flip, -gz, gz), gd = select(flip, -gd, gd);
-  const V g2 = gx * gx + gy * gy + gz * gz;
-  const V radicand = eta.eta2 * gd * gd + g2 * eta.one_minus_eta2;
-  const Mask<V> refracted = radicand >= 0.0;
-  const V gamma = (-eta.eta * gd - sqrt(select(refracted, radicand, V(0.0)))) * (1.0 / g2);
-  const V refraction = select(g2 > 0.0, select(refracted, V(kOk), V(code(TraceStatus::TotalInternalReflection))),
-                              V(code(TraceStatus::Missed)));
-  const V nx = eta.eta * dx + gamma * gx, ny = eta.eta * dy + gamma * gy, nz = eta.eta * dz + gamma * gz;
-  // Per-lane indices refract every lane too, unless two media have the same index at a lane's
-  // wavelength: checked once, the selects below are for that case only.
-  if (eta.all || all(eta.refracts)) return {select(status == kOk, refraction, status), px, py, pz + f.z, nx, ny, nz};
-  status = select((status == kOk) & eta.refracts, refraction, status);
-  return {status,
-          px,
-          py,
-          pz + f.z,
-          select(eta.refracts, nx, dx),
-          select(eta.refracts, ny, dy),
-          select(eta.refracts, nz, dz)};
+  const Refracted<V> r = refract(f.c * px, f.c * py, f.kc * pz - 1.0, dx, dy, dz, status, eta);
+  return {r.status, px, py, pz + f.z, r.dx, r.dy, r.dz};
 }
 
 // ---- Indices at a wavelength -------------------------------------------------------------------
@@ -309,79 +322,6 @@ EYETRACE_KERNEL_INLINE bool refraction_at(const Interface& f, const MediumLaw* l
     // Into air (the cornea of a reverse trace) n_from / 1 is n_from exactly: one division less.
     eta = eta_of(to.law < 0 && to.index == 1.0 ? n_from : n_from / n);
     return true;
-  }
-}
-
-// ---- The batch ---------------------------------------------------------------------------------
-
-template <class V>
-V load(const double* p) {
-  return V::load_aligned(p);
-}
-
-template <bool Forward, bool PerRayWavelength, class V>
-void block_surface(const BlockJob& job, int index, Block& B) {
-  const Interface& f = job.interfaces[index];
-  // Only a surface whose far side has a law of its own needs the wavelength and its weights.
-  const Interface::Side& from = Forward ? f.before : f.after;
-  const Interface::Side& to = Forward ? f.after : f.before;
-  const bool evaluates = PerRayWavelength && to.law >= 0 && to.law != from.law;
-  for (std::size_t j = 0; j < Block::N; j += V::size) {
-    const V ox = load<V>(B.ox + j), oy = load<V>(B.oy + j), oz = load<V>(B.oz + j);
-    const V dx = load<V>(B.dx + j), dy = load<V>(B.dy + j), dz = load<V>(B.dz + j);
-    V lambda(0.0), n(0.0);
-    std::array<V, 4> w{V(0.0), V(0.0), V(0.0), V(0.0)};
-    if (evaluates) {
-      lambda = load<V>(B.lambda + j);
-      if (job.herzberger)
-        for (int i = 0; i < 4; ++i) w[i] = load<V>(B.w[i] + j);
-    }
-    if (PerRayWavelength) n = load<V>(B.n + j);
-    Eta<V> eta;
-    const bool refracts = refraction_at<Forward, PerRayWavelength>(f, job.laws, lambda, w, n, eta);
-    if (PerRayWavelength) n.store_aligned(B.n + j);
-    const Moved<V> m = step(f, ox, oy, oz, dx, dy, dz, refracts, eta);
-
-    const V status = load<V>(B.status + j);
-    const Mask<V> alive = status == kOk;
-    const Mask<V> moves = alive & (m.status == kOk);
-    select(alive, m.status, status).store_aligned(B.status + j);
-    select(alive & !moves, V(static_cast<double>(index)), load<V>(B.surface + j)).store_aligned(B.surface + j);
-    select(moves, m.px, ox).store_aligned(B.ox + j);
-    select(moves, m.py, oy).store_aligned(B.oy + j);
-    select(moves, m.pz, oz).store_aligned(B.oz + j);
-    select(moves, m.dx, dx).store_aligned(B.dx + j);
-    select(moves, m.dy, dy).store_aligned(B.dy + j);
-    select(moves, m.dz, dz).store_aligned(B.dz + j);
-  }
-}
-
-// Surface after surface, every lane of the block at once: the surfaces' square roots and
-// divisions of Block::N / V::size registers overlap, where one ray would wait for each in turn.
-template <class V>
-void trace_block(const BlockJob& job, Block& B) {
-  static_assert(Block::N % V::size == 0);
-  const bool forward = job.forward;  // first == last has either direction
-  if (job.per_ray_wavelength) {
-    // The weights of each lane's wavelength, and the index of the medium it starts in.
-    const Interface& f = job.interfaces[job.first];
-    const Interface::Side& start = forward ? f.before : f.after;
-    for (std::size_t j = 0; j < Block::N; j += V::size) {
-      const V lambda = load<V>(B.lambda + j);
-      std::array<V, 4> w{V(0.0), V(0.0), V(0.0), V(0.0)};
-      if (job.herzberger) {
-        w = dispersion::herzberger_weights(lambda);
-        for (int i = 0; i < 4; ++i) w[i].store_aligned(B.w[i] + j);
-      }
-      side_index(start, job.laws, lambda, w).store_aligned(B.n + j);
-    }
-  }
-  for (int i = job.first;; i += forward ? 1 : -1) {
-    if (job.per_ray_wavelength)
-      forward ? block_surface<true, true, V>(job, i, B) : block_surface<false, true, V>(job, i, B);
-    else
-      forward ? block_surface<true, false, V>(job, i, B) : block_surface<false, false, V>(job, i, B);
-    if (i == job.last) break;
   }
 }
 

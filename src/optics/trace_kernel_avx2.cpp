@@ -1,9 +1,9 @@
-// The batch trace of trace_kernel.h compiled for AVX2 (4 rays a register); CMakeLists.txt gives
+// The batch trace of batch_kernel.h compiled for AVX2 (4 rays a register); CMakeLists.txt gives
 // this file -mavx2 (and no -mfma: a fused multiply-add would round differently from the
 // single-ray trace). sequential_trace.cpp calls it only on a CPU that has AVX2. Nothing else
 // may be compiled here: every function this file instantiates has internal linkage
-// (trace_kernel.h) or an AVX2 type in its signature, so none can replace a baseline twin.
-#include "optics/trace_kernel.h"
+// (batch_kernel.h and the kernels it includes) or an AVX2 type in its signature, so none can replace a baseline twin.
+#include "optics/batch_kernel.h"
 
 namespace eyetrace::optics::kernel {
 

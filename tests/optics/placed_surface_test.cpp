@@ -4,18 +4,26 @@
 // with the ray moved the other way; a decentred iris moves the chief ray of an axial object to
 // the image of the stop's centre that a 2x2 paraxial matrix product (written here) predicts.
 // A symmetric system keeps the kernel; the general path's batch and per-wavelength traces equal
-// its single rays and its system compiled at that wavelength.
+// its single rays and its system compiled at that wavelength, on every instruction set the batch
+// can run on, for the lanes the biconic's lane iteration settles and those it hands on to the
+// bracketed search.
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
 #include "../support/reverse_trace_stress.h"
+#include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
+#include "optics/phase_plate.h"
 #include "optics/sequential_trace.h"
+#include "optics/spectacle_lens.h"
+#include "optics/zernike_file.h"
 
 namespace eyetrace::optics {
 namespace {
@@ -271,6 +279,101 @@ TEST(PlacedSurface, GeneralBatchAndWavelengthTracesEqualSingleRaysBitForBit) {
     EXPECT_EQ(fwd[j].ray.origin, one.ray.origin);
     EXPECT_EQ(fwd[j].ray.direction, one.ray.direction);
   }
+}
+
+// The instruction sets the batch trace can run on here (the baseline always, AVX2 where the CPU
+// has it); the start-up choice is restored on leaving.
+struct EachIsa {
+  TraceBatchIsa start = trace_batch_isa();
+  std::vector<TraceBatchIsa> isas;
+  EachIsa() {
+    for (TraceBatchIsa isa : {TraceBatchIsa::Baseline, TraceBatchIsa::Avx2})
+      if (set_trace_batch_isa(isa)) isas.push_back(isa);
+    set_trace_batch_isa(start);
+  }
+  ~EachIsa() { set_trace_batch_isa(start); }
+};
+
+// Every lane of trace_range_batch against trace_range for the same ray (and wavelength).
+void expect_batch_bits(const CompiledSystem& sys, const std::vector<Ray>& rays, const std::vector<double>* lambda,
+                       int first, int last, const std::string& what) {
+  std::vector<TraceResult> batch(rays.size());
+  sys.trace_range_batch(rays.data(), lambda ? lambda->data() : nullptr, batch.data(), rays.size(), first, last);
+  for (size_t j = 0; j < rays.size(); ++j) {
+    const TraceResult one =
+        lambda ? sys.trace_range(rays[j], first, last, (*lambda)[j]) : sys.trace_range(rays[j], first, last);
+    ASSERT_EQ(batch[j].status, one.status) << what << " ray " << j;
+    ASSERT_EQ(batch[j].surface, one.surface) << what << " ray " << j;
+    ASSERT_EQ(batch[j].ray.origin, one.ray.origin) << what << " ray " << j;
+    ASSERT_EQ(batch[j].ray.direction, one.ray.direction) << what << " ray " << j;
+  }
+}
+
+// The eye: a -3 D myope with 1.5 D of corneal cylinder at 30 deg, its iris decentred,
+// behind toric spectacles (two biconic surfaces, the cornea and the lens's back, both traced by
+// the batch's lane kernel), in reverse at the compiled wavelength and at mixed per-ray ones.
+// And a cylinder (one flat meridian) crossed by rays from all sides: many miss its start conic
+// (the curved meridian's sphere) or cross it twice, the lanes the batch's first stage hands on to
+// the bracketed search one at a time, so both stages are compared.
+TEST(PlacedSurface, BatchOnEveryInstructionSetEqualsSingleRaysBitForBit) {
+  EyeOptions o;
+  o.model = "navarro";
+  o.refractive_error_D = -3.0;
+  o.pupil_diameter_mm = 6.0;
+  Prescription eye = make_eye(o);
+  set_corneal_cylinder(eye, -1.5, 30.0);
+  set_pupil_decentration(eye, 0.3, -0.2);
+  SpectacleLens lens;
+  lens.sphere_D = -3.1, lens.cylinder_D = -1.5, lens.axis_deg = 30.0;
+  add_spectacle_lens(eye, lens);
+  const CompiledSystem sys(eye);
+  ASSERT_FALSE(sys.rotationally_symmetric());
+  // The same with a measured wavefront (coma and astigmatism, third order) on the iris: a phase
+  // plate's surface, which the batch takes lane by lane.
+  ZernikeFile zernike;
+  zernike.origin = "test.zer";
+  zernike.pupil_diameter_mm = 6.0;
+  zernike.max_order = 3;
+  zernike.coefficients_um = {0.0, 0.0, 0.0, 0.2, 0.1, -0.3, 0.0, 0.15, -0.1, 0.0};
+  Prescription plated_eye = eye;
+  add_phase_plate(plated_eye, zernike);
+  const CompiledSystem plated(plated_eye);
+
+  Prescription cyl;
+  cyl.name = "cylinder";
+  cyl.surfaces = {flat("stop", 1.0, 1.0, 20.0, SurfaceRole::Stop), flat("cylinder", 8.0, 1.5, 0.0),
+                  flat("image", 0.0, 1.5, 0.0, SurfaceRole::Image)};
+  cyl.surfaces[1].profile = SurfaceProfile::biconic(1.0 / 4.0, 0.0, 0.0, 0.0, 30.0);
+  const CompiledSystem cylinder(cyl);
+
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Ray> reverse(333), forward(333);
+  std::vector<double> lambda(reverse.size());
+  for (size_t j = 0; j < reverse.size(); ++j) {
+    reverse[j] = test::random_reverse_ray(eye, sys, 8.0, rng);
+    lambda[j] = 400.0 + 300.0 * (0.5 + 0.5 * u(rng));
+    forward[j] = {{6.0 * u(rng), 6.0 * u(rng), -2.0 + u(rng)}, {u(rng), u(rng), 0.2 + u(rng)}};
+  }
+  EachIsa each;
+  for (TraceBatchIsa isa : each.isas) {
+    ASSERT_TRUE(set_trace_batch_isa(isa));
+    const std::string name = to_string(isa);
+    expect_batch_bits(sys, reverse, nullptr, sys.image_index() - 1, 0, name + " eye");
+    expect_batch_bits(sys, reverse, &lambda, sys.image_index() - 1, 0, name + " eye per-ray wavelength");
+    expect_batch_bits(plated, reverse, &lambda, plated.image_index() - 1, 0, name + " eye with a phase plate");
+    expect_batch_bits(cylinder, forward, nullptr, 0, cylinder.image_index(), name + " cylinder");
+  }
+  // The comparison covers passing and lost rays of both systems.
+  int eye_ok = 0, cylinder_ok = 0, cylinder_lost = 0;
+  int plated_ok = 0;
+  for (const Ray& r : reverse) eye_ok += sys.trace_reverse(r).ok(), plated_ok += plated.trace_reverse(r).ok();
+  for (const Ray& r : forward) (cylinder.trace_forward(r).ok() ? cylinder_ok : cylinder_lost) += 1;
+  EXPECT_GT(eye_ok, 50);
+  EXPECT_LT(eye_ok, 330);
+  EXPECT_GT(plated_ok, 50);
+  EXPECT_GT(cylinder_ok, 30);
+  EXPECT_GT(cylinder_lost, 30);
 }
 
 }  // namespace
