@@ -53,21 +53,24 @@ const PluginSpec& dielectric_material_spec() {
   return spec;
 }
 
-std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx) {
-  const PluginParams p(ctx.params, dielectric_material_spec(), "dielectric");
-  Spectrum eta = Spectrum::constant(read_eta_at_550(p));
-  bool dispersive = false;
+DielectricEta read_dielectric_eta(const MaterialContext& ctx, const PluginParams& p) {
+  DielectricEta eta{Spectrum::constant(read_eta_at_550(p)), false};
   if (p.has("eta") && ctx.params.find("eta")->canonical_type() == "spectrum") {
     const SpectrumValue v = p.get_spectrum("eta", SpectrumType::Unbounded);
     if (!v.rgb) {
-      eta = v.spectrum;
-      dispersive = true;
+      eta = {v.spectrum, true};
       for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f)
-        if (!(eta(l) > 0.f) || !std::isfinite(eta(l)))
-          p.fail("eta", fmt::format("index of refraction {} at {} nm must be positive", eta(l), l));
+        if (!(eta.spectrum(l) > 0.f) || !std::isfinite(eta.spectrum(l)))
+          p.fail("eta", fmt::format("index of refraction {} at {} nm must be positive", eta.spectrum(l), l));
     }
   }
-  return std::make_unique<DielectricMaterial>(std::move(eta), dispersive, RoughnessParams::read(ctx, p),
+  return eta;
+}
+
+std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx) {
+  const PluginParams p(ctx.params, dielectric_material_spec(), "dielectric");
+  DielectricEta eta = read_dielectric_eta(ctx, p);
+  return std::make_unique<DielectricMaterial>(std::move(eta.spectrum), eta.dispersive, RoughnessParams::read(ctx, p),
                                               ShadingNormal::read(ctx, p));
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/material.h"
+#include "core/spectrum.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
@@ -14,6 +15,14 @@ std::unique_ptr<Material> create_dielectric_material(const MaterialContext& ctx)
 // constants are computed once; the dielectric itself uses the whole spectrum).
 ParamSpec eta_at_550_param();
 float read_eta_at_550(const PluginParams& params);
+
+// "eta" read whole: a constant, or a spectrum (a named glass, a tabulated one), which makes the
+// material dispersive; every value in 360-830 nm is checked to be positive and finite.
+struct DielectricEta {
+  Spectrum spectrum;
+  bool dispersive = false;
+};
+DielectricEta read_dielectric_eta(const MaterialContext& ctx, const PluginParams& params);
 const PluginSpec& dielectric_material_spec();
 
 }  // namespace eyetrace

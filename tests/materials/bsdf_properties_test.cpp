@@ -19,6 +19,7 @@
 #include "materials/diffuse_transmission_bxdf.h"
 #include "materials/lambertian_bxdf.h"
 #include "materials/local_bsdf.h"
+#include "materials/thin_dielectric_bxdf.h"
 
 namespace eyetrace {
 namespace {
@@ -60,6 +61,7 @@ std::vector<Case> cases() {
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, DielectricBxDF(1.5f, mf(0.3f, 0.3f))); }},
       {"dielectric_aniso",
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, DielectricBxDF(1.33f, mf(0.15f, 0.5f))); }},
+      {"thin_dielectric", [](auto& a, auto& si) { return make_local_bsdf(a, si, ThinDielectricBxDF(1.5f)); }, true},
       {"conductor_smooth",
        [=](auto& a, auto& si) { return make_local_bsdf(a, si, ConductorBxDF(mf(0.f, 0.f), kCuEta, kCuK)); }, true},
       {"conductor_rough",
