@@ -38,8 +38,10 @@
 #include "textures/checkerboard_texture.h"
 #include "textures/constant_texture.h"
 #include "textures/direction_mix_texture.h"
+#include "textures/dots_texture.h"
 #include "textures/imagemap_texture.h"
 #include "textures/mix_texture.h"
+#include "textures/noise_textures.h"
 #include "textures/scale_texture.h"
 
 namespace eyetrace {
@@ -87,6 +89,10 @@ void register_builtin_plugins(Registry& r) {
   r.float_textures.add("imagemap", create_imagemap_float_texture, imagemap_texture_spec());
   r.float_textures.add("bilerp", create_bilerp_float_texture, bilerp_texture_spec());
   r.float_textures.add("directionmix", create_directionmix_float_texture, directionmix_texture_spec());
+  r.float_textures.add("dots", create_dots_float_texture, dots_texture_spec());
+  r.float_textures.add("fbm", create_fbm_texture, fbm_texture_spec());
+  r.float_textures.add("wrinkled", create_wrinkled_texture, wrinkled_texture_spec());
+  r.float_textures.add("windy", create_windy_texture, windy_texture_spec());
   r.spectrum_textures.add("constant", create_constant_spectrum_texture, constant_texture_spec());
   r.spectrum_textures.add("scale", create_scale_spectrum_texture, scale_texture_spec());
   r.spectrum_textures.add("mix", create_mix_spectrum_texture, mix_texture_spec());
@@ -94,6 +100,7 @@ void register_builtin_plugins(Registry& r) {
   r.spectrum_textures.add("imagemap", create_imagemap_spectrum_texture, imagemap_texture_spec());
   r.spectrum_textures.add("bilerp", create_bilerp_spectrum_texture, bilerp_texture_spec());
   r.spectrum_textures.add("directionmix", create_directionmix_spectrum_texture, directionmix_texture_spec());
+  r.spectrum_textures.add("dots", create_dots_spectrum_texture, dots_texture_spec());
 
   r.lights.add("point", create_point_light, point_light_spec());
   r.lights.add("spot", create_spot_light, spot_light_spec());
