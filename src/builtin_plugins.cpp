@@ -40,6 +40,7 @@
 #include "textures/direction_mix_texture.h"
 #include "textures/dots_texture.h"
 #include "textures/imagemap_texture.h"
+#include "textures/marble_texture.h"
 #include "textures/mix_texture.h"
 #include "textures/noise_textures.h"
 #include "textures/scale_texture.h"
@@ -101,6 +102,7 @@ void register_builtin_plugins(Registry& r) {
   r.spectrum_textures.add("bilerp", create_bilerp_spectrum_texture, bilerp_texture_spec());
   r.spectrum_textures.add("directionmix", create_directionmix_spectrum_texture, directionmix_texture_spec());
   r.spectrum_textures.add("dots", create_dots_spectrum_texture, dots_texture_spec());
+  r.spectrum_textures.add("marble", create_marble_spectrum_texture, marble_texture_spec());
 
   r.lights.add("point", create_point_light, point_light_spec());
   r.lights.add("spot", create_spot_light, spot_light_spec());

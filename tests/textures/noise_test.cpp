@@ -11,6 +11,7 @@
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/dots_texture.h"
+#include "textures/marble_texture.h"
 #include "textures/noise_textures.h"
 #include "textures/perlin_noise.h"
 
@@ -98,6 +99,27 @@ TEST(PolkaDots, EachDotIsADiscOfRadius035) {
   // A cell has a dot where the noise at its centre-plus-half is positive: about half of them.
   EXPECT_GT(with_dot, cells / 4);
   EXPECT_LT(with_dot, 3 * cells / 4);
+}
+
+// pbrt-v4's marble spline: six cubic Bezier segments over nine overlapping control points,
+// times 1.5. t = 0 and t = 1 give 1.5 x the first and last points; every colour lies within 1.5 x
+// the points' range; mid-segment it is the Bezier midpoint (p0 + 3 p1 + 3 p2 + p3) / 8.
+TEST(MarbleTexture, SplineEndsAndRange) {
+  const RGB first = marble_colour(0.f), last = marble_colour(1.f);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(first[c], 1.5f * (c < 2 ? 0.58f : 0.6f), 1e-6f);
+    EXPECT_NEAR(last[c], 1.5f * (c < 2 ? 0.58f : 0.6f), 1e-6f);
+  }
+  for (int i = 0; i <= 600; ++i) {
+    const RGB v = marble_colour(float(i) / 600.f);
+    EXPECT_GE(v.r, 1.5f * 0.2f - 1e-5f);
+    EXPECT_LE(v.r, 1.5f * 0.6f + 1e-5f);
+    EXPECT_GE(v.b, 1.5f * 0.33f - 1e-5f);
+    EXPECT_LE(v.b, 1.5f * 0.6f + 1e-5f);
+  }
+  // Halfway through the segment from {.58 .58 .6} x3 over {.5} (segment 1 at s = 1/2: points
+  // 1..4 = .58 .58 .5 .6 in red): (p1 + 3 p2 + 3 p3 + p4) / 8.
+  EXPECT_NEAR(marble_colour(1.5f / 6.f).r, 1.5f * (0.58f + 3 * 0.58f + 3 * 0.5f + 0.6f) / 8.f, 1e-5f);
 }
 
 }  // namespace
