@@ -25,40 +25,26 @@ Spectrum named(const std::string& name) { return Spectrum::named(*find_named_spe
 
 class ConductorMaterial final : public Material {
  public:
-  ConductorMaterial(const SpectrumTexture* eta, const SpectrumTexture* k, const SpectrumTexture* reflectance,
-                    RoughnessParams roughness, ShadingNormal shading)
-      : eta_(eta), k_(k), reflectance_(reflectance), roughness_(roughness), shading_(shading) {}
+  ConductorMaterial(ConductorIndex index, RoughnessParams roughness, ShadingNormal shading)
+      : index_(index), roughness_(roughness), shading_(shading) {}
 
   const BSDF* bsdf(const SurfaceInteraction& hit, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     SurfaceInteraction si = shading_.apply(hit);
     TextureEvalContext tc(si);
-    TrowbridgeReitz mf = roughness_.distribution(tc);
     SampledSpectrum eta, k;
-    if (reflectance_) {
-      // pbrt-v4: eta = 1 and the k whose normal-incidence reflectance k^2/(4+k^2) is r.
-      SampledSpectrum r = min(clamp_unit(reflectance_->evaluate(tc, lambda)), 0.9999f);
-      eta = SampledSpectrum(1.f);
-      k = 2.f * sqrt(r) * safe_div(SampledSpectrum(1.f), sqrt(SampledSpectrum(1.f) - r));
-    } else {
-      // Indices are not reflectances: RGB values become unbounded spectra.
-      tc.spectrum_type = SpectrumType::Unbounded;
-      eta = clamp_non_negative(eta_->evaluate(tc, lambda), 1.f);
-      k = clamp_non_negative(k_->evaluate(tc, lambda), 0.f);
-    }
-    return make_local_bsdf(arena, si, ConductorBxDF(mf, eta, k), hit.ns);
+    index_.evaluate(tc, lambda, &eta, &k);
+    return make_local_bsdf(arena, si, ConductorBxDF(roughness_.distribution(tc), eta, k), hit.ns);
   }
 
  private:
-  const SpectrumTexture* eta_;
-  const SpectrumTexture* k_;
-  const SpectrumTexture* reflectance_;
+  ConductorIndex index_;
   RoughnessParams roughness_;
   ShadingNormal shading_;
 };
 
 // A constant eta must be positive and k non-negative (textures are clamped where they are
 // evaluated, as in pbrt-v4): a negative value given as a number is a mistake, not a clamp.
-void check_constant(const ParameterList& params, const char* name, bool zero_allowed) {
+void check_constant(const ParameterList& params, const std::string& name, bool zero_allowed) {
   const Param* p = params.find(name);
   if (!p || p->canonical_type() == "texture") return;
   const float lo = min_value(*params.get_spectrum(name, SpectrumType::Unbounded));
@@ -69,30 +55,53 @@ void check_constant(const ParameterList& params, const char* name, bool zero_all
 
 }  // namespace
 
+std::vector<ParamSpec> ConductorIndex::declared(const std::string& prefix) {
+  return {param::spectrum_texture(prefix + "eta").shown_default("\"metal-Cu-eta\"").describe("real part of the index"),
+          param::spectrum_texture(prefix + "k").shown_default("\"metal-Cu-k\"").describe("imaginary part of the index"),
+          param::spectrum_texture("reflectance")
+              .describe(fmt::format("instead of `{0}eta` and `{0}k` (not with them)", prefix))};
+}
+
+ConductorIndex ConductorIndex::read(const MaterialContext& ctx, const PluginParams& p, const std::string& prefix) {
+  check_constant(ctx.params, prefix + "eta", false);
+  check_constant(ctx.params, prefix + "k", true);
+  ConductorIndex c;
+  c.eta = ctx.textures.spectrum_param(p, prefix + "eta", SpectrumType::Unbounded);
+  c.k = ctx.textures.spectrum_param(p, prefix + "k", SpectrumType::Unbounded);
+  c.reflectance = ctx.textures.spectrum_param(p, "reflectance");
+  if (c.reflectance && (c.eta || c.k))
+    p.fail("reflectance", fmt::format("give either \"reflectance\" or \"{0}eta\" and \"{0}k\", not both", prefix));
+  if (!c.reflectance) {
+    if (!c.eta) c.eta = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-eta")));
+    if (!c.k) c.k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-k")));
+  }
+  return c;
+}
+
+void ConductorIndex::evaluate(TextureEvalContext tc, const SampledWavelengths& lambda, SampledSpectrum* eta,
+                              SampledSpectrum* k) const {
+  if (reflectance) {
+    // pbrt-v4: eta = 1 and the k whose normal-incidence reflectance k^2/(4+k^2) is r.
+    SampledSpectrum r = min(clamp_unit(reflectance->evaluate(tc, lambda)), 0.9999f);
+    *eta = SampledSpectrum(1.f);
+    *k = 2.f * sqrt(r) * safe_div(SampledSpectrum(1.f), sqrt(SampledSpectrum(1.f) - r));
+  } else {
+    // Indices are not reflectances: RGB values become unbounded spectra.
+    tc.spectrum_type = SpectrumType::Unbounded;
+    *eta = clamp_non_negative(this->eta->evaluate(tc, lambda), 1.f);
+    *k = clamp_non_negative(this->k->evaluate(tc, lambda), 0.f);
+  }
+}
+
 const PluginSpec& conductor_material_spec() {
-  static const PluginSpec spec{
-      "Material", "a metal: Fresnel reflection of a complex index of refraction", "—",
-      std::vector<ParamSpec>{
-          param::spectrum_texture("eta").shown_default("\"metal-Cu-eta\"").describe("real part of the index"),
-          param::spectrum_texture("k").shown_default("\"metal-Cu-k\"").describe("imaginary part of the index"),
-          param::spectrum_texture("reflectance").describe("instead of `eta` and `k` (not with them)")} +
-          RoughnessParams::declared() + ShadingNormal::declared()};
+  static const PluginSpec spec{"Material", "a metal: Fresnel reflection of a complex index of refraction", "—",
+                               ConductorIndex::declared() + RoughnessParams::declared() + ShadingNormal::declared()};
   return spec;
 }
 
 std::unique_ptr<Material> create_conductor_material(const MaterialContext& ctx) {
   const PluginParams p(ctx.params, conductor_material_spec(), "conductor");
-  check_constant(ctx.params, "eta", false);
-  check_constant(ctx.params, "k", true);
-  const SpectrumTexture* eta = ctx.textures.spectrum_param(p, "eta", SpectrumType::Unbounded);
-  const SpectrumTexture* k = ctx.textures.spectrum_param(p, "k", SpectrumType::Unbounded);
-  const SpectrumTexture* reflectance = ctx.textures.spectrum_param(p, "reflectance");
-  if (reflectance && (eta || k)) p.fail("reflectance", "give either \"reflectance\" or \"eta\" and \"k\", not both");
-  if (!reflectance) {
-    if (!eta) eta = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-eta")));
-    if (!k) k = ctx.textures.keep(std::make_unique<ConstantSpectrumTexture>(named("metal-Cu-k")));
-  }
-  return std::make_unique<ConductorMaterial>(eta, k, reflectance, RoughnessParams::read(ctx, p),
+  return std::make_unique<ConductorMaterial>(ConductorIndex::read(ctx, p), RoughnessParams::read(ctx, p),
                                              ShadingNormal::read(ctx, p));
 }
 

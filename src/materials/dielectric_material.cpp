@@ -36,10 +36,10 @@ ParamSpec eta_at_550_param() {
   return param::float_or_spectrum("eta", 1.5).above(0).describe("index of refraction (a spectrum is taken at 550 nm)");
 }
 
-float read_eta_at_550(const PluginParams& params) {
-  const float eta = params.get_spectrum_at("eta", 550.f);
+float read_eta_at_550(const PluginParams& params, const std::string& name) {
+  const float eta = params.get_spectrum_at(name, 550.f);
   if (!(eta > 0.f) || !std::isfinite(eta))
-    params.fail("eta", fmt::format("index of refraction {} must be positive", eta));
+    params.fail(name, fmt::format("index of refraction {} must be positive", eta));
   return eta;
 }
 
@@ -53,15 +53,15 @@ const PluginSpec& dielectric_material_spec() {
   return spec;
 }
 
-DielectricEta read_dielectric_eta(const MaterialContext& ctx, const PluginParams& p) {
-  DielectricEta eta{Spectrum::constant(read_eta_at_550(p)), false};
-  if (p.has("eta") && ctx.params.find("eta")->canonical_type() == "spectrum") {
-    const SpectrumValue v = p.get_spectrum("eta", SpectrumType::Unbounded);
+DielectricEta read_dielectric_eta(const MaterialContext& ctx, const PluginParams& p, const std::string& name) {
+  DielectricEta eta{Spectrum::constant(read_eta_at_550(p, name)), false};
+  if (p.has(name) && ctx.params.find(name)->canonical_type() == "spectrum") {
+    const SpectrumValue v = p.get_spectrum(name, SpectrumType::Unbounded);
     if (!v.rgb) {
       eta = {v.spectrum, true};
       for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f)
         if (!(eta.spectrum(l) > 0.f) || !std::isfinite(eta.spectrum(l)))
-          p.fail("eta", fmt::format("index of refraction {} at {} nm must be positive", eta.spectrum(l), l));
+          p.fail(name, fmt::format("index of refraction {} at {} nm must be positive", eta.spectrum(l), l));
     }
   }
   return eta;

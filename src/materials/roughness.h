@@ -13,8 +13,10 @@ struct RoughnessParams {
   bool remap = true;
 
   // "roughness", "uroughness", "vroughness", "remaproughness": every rough material's table has them.
-  static std::vector<ParamSpec> declared();
-  static RoughnessParams read(const MaterialContext& ctx, const PluginParams& params);
+  // A layered material names each layer's with a prefix ("interface.", "conductor.") and
+  // declares the one "remaproughness" apart (with_remap false).
+  static std::vector<ParamSpec> declared(const std::string& prefix = "", bool with_remap = true);
+  static RoughnessParams read(const MaterialContext& ctx, const PluginParams& params, const std::string& prefix = "");
   // The distribution at a hit; negative roughness values count as 0.
   TrowbridgeReitz distribution(const TextureEvalContext& tc) const;
 };
