@@ -12,6 +12,7 @@
 #include "lights/infinite_light.h"
 #include "lights/point_light.h"
 #include "lights/spot_light.h"
+#include "materials/coated_conductor_material.h"
 #include "materials/coated_diffuse_material.h"
 #include "materials/conductor_material.h"
 #include "materials/dielectric_material.h"
@@ -77,6 +78,7 @@ void register_builtin_plugins(Registry& r) {
   r.materials.add("diffuse", create_diffuse_material, diffuse_material_spec());
   r.materials.add("coateddiffuse", create_coateddiffuse_material, coateddiffuse_material_spec());
   r.materials.add("conductor", create_conductor_material, conductor_material_spec());
+  r.materials.add("coatedconductor", create_coatedconductor_material, coatedconductor_material_spec());
   r.materials.add("dielectric", create_dielectric_material, dielectric_material_spec());
   r.materials.add("interface", create_interface_material, interface_material_spec());
   r.materials.add("mix", create_mix_material, mix_material_spec());

@@ -1,5 +1,7 @@
 #include "materials/coated_diffuse_bxdf.h"
 
+#include "materials/coat_lobe.h"
+
 namespace eyetrace {
 
 CoatConstants CoatConstants::make(float eta) {
@@ -39,24 +41,9 @@ SampledSpectrum CoatedDiffuseBxDF::base(float mu_o, float mu_i) const {
   return out;
 }
 
-float CoatedDiffuseBxDF::coat_f(const Vec3& wo, const Vec3& wi) const {
-  if (mf_.effectively_smooth()) return 0.f;
-  Vec3 wm = wo + wi;
-  float len2 = glm::dot(wm, wm);
-  if (!(len2 > 0.f)) return 0.f;
-  wm /= std::sqrt(len2);
-  float fr = std::min(fresnel(wo.z), fresnel(wi.z));
-  return mf_.D(wm) * mf_.G(wo, wi) * fr / (4.f * wo.z * wi.z);
-}
+float CoatedDiffuseBxDF::coat_f(const Vec3& wo, const Vec3& wi) const { return rough_coat_f(mf_, c_.eta, wo, wi); }
 
-float CoatedDiffuseBxDF::coat_pdf(const Vec3& wo, const Vec3& wi) const {
-  if (mf_.effectively_smooth()) return 0.f;
-  Vec3 wm = wo + wi;
-  float len2 = glm::dot(wm, wm);
-  if (!(len2 > 0.f)) return 0.f;
-  wm /= std::sqrt(len2);
-  return mf_.pdf(wo, wm) / (4.f * std::abs(glm::dot(wo, wm)));
-}
+float CoatedDiffuseBxDF::coat_pdf(const Vec3& wo, const Vec3& wi) const { return rough_coat_pdf(mf_, wo, wi); }
 
 // Lobes are chosen in proportion to their rough share of the reflected energy.
 float CoatedDiffuseBxDF::coat_probability(float mu_o) const {

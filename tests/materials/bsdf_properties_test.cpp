@@ -13,6 +13,7 @@
 
 #include "../support/chi2.h"
 #include "core/arena.h"
+#include "materials/coated_conductor_bxdf.h"
 #include "materials/coated_diffuse_bxdf.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/dielectric_bxdf.h"
@@ -69,6 +70,31 @@ std::vector<Case> cases() {
       {"conductor_aniso",
        [=](auto& a, auto& si) {
          return make_local_bsdf(a, si, ConductorBxDF(mf(0.1f, 0.4f), SampledSpectrum(1.f), SampledSpectrum(8.f)));
+       }},
+      {"coatedconductor_smooth_smooth",
+       [=](auto& a, auto& si) {
+         return make_local_bsdf(
+             a, si,
+             CoatedConductorBxDF(1.5f, mf(0.f, 0.f), mf(0.f, 0.f), kCuEta / 1.5f, kCuK / 1.5f, SampledSpectrum(0.f)));
+       },
+       true},
+      {"coatedconductor_smooth_coat_rough_metal",
+       [=](auto& a, auto& si) {
+         return make_local_bsdf(
+             a, si,
+             CoatedConductorBxDF(1.5f, mf(0.f, 0.f), mf(0.3f, 0.3f), kCuEta / 1.5f, kCuK / 1.5f, SampledSpectrum(0.f)));
+       }},
+      {"coatedconductor_rough_coat_smooth_metal",
+       [=](auto& a, auto& si) {
+         return make_local_bsdf(a, si,
+                                CoatedConductorBxDF(1.5f, mf(0.2f, 0.2f), mf(0.f, 0.f), kCuEta / 1.5f, kCuK / 1.5f,
+                                                    SampledSpectrum(3.f)));  // absorbing: mostly the glossy coat
+       }},
+      {"coatedconductor_rough_aniso_absorbing",
+       [=](auto& a, auto& si) {
+         return make_local_bsdf(a, si,
+                                CoatedConductorBxDF(1.8f, mf(0.3f, 0.3f), mf(0.1f, 0.4f), SampledSpectrum(0.2f),
+                                                    SampledSpectrum(3.f), test::channels(0.5f, 0.1f, 0.f)));
        }},
       {"coated_smooth_white",
        [=](auto& a, auto& si) {
