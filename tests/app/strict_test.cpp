@@ -30,7 +30,8 @@ TEST(CommandLine, SeveralSceneErrorsArePrintedAndNothingIsWritten) {
   const RunResult r = run_eyetrace("render -q " + scene.string() + " -o " + out.string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(r.output, scene.string() + ":3:1: error: unsupported shape \"spher\" (did you mean \"sphere\"?); " +
-                          "eyetrace supports: bilinearmesh, cylinder, disk, plymesh, sphere, trianglemesh\n" + scene.string() +
+                          "eyetrace supports: bilinearmesh, cylinder, disk, plymesh, sphere, trianglemesh\n" +
+                          scene.string() +
                           ":2:1: error: unsupported light \"pointt\" (did you mean \"point\"?); eyetrace supports: "
                           "distant, infinite, point, spot\n2 errors\n");
   EXPECT_FALSE(fs::exists(out));

@@ -11,6 +11,7 @@
 #include "../support/chi2.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
+#include "samplers/padded_sobol_sampler.h"
 #include "samplers/sobol_sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "samplers/zsobol_sampler.h"
@@ -63,6 +64,7 @@ std::vector<Case> all_cases() {
   for (const char* r : {"none", "permutedigits", "fastowen", "owen"}) {
     cases.push_back({std::string("sobol_") + r, create_sobol_sampler, r});
     cases.push_back({std::string("zsobol_") + r, create_zsobol_sampler, r});
+    cases.push_back({std::string("paddedsobol_") + r, create_paddedsobol_sampler, r});
   }
   return cases;
 }
