@@ -15,9 +15,11 @@
 // it, and the solid angle inside is mu dw / (n^2 mu'). Energy: the base's albedo is at most
 // T(mu_o) (the metal's albedo <= 1 inside, substituting dw = n^2 mu' dw' / mu), the coat's at
 // most F(mu_o); reciprocal, since every factor is symmetric in o and i. Light the rough metal
-// sends beyond the coat's critical angle stays inside and is lost (pbrt-v4's walk would
-// bounce it on: darker at grazing angles); the rough coat over a smooth metal refracts at the
-// macro surface. Two-sided, as pbrt-v4's.
+// sends beyond the coat's critical angle stays inside and is lost, and light the coat's
+// underside reflects back down is not followed (pbrt-v4's walk follows both: against pbrt-v4 a
+// rough coat on rough copper has the same luminance within 0.3 % but is less saturated, most at
+// the silhouette; tests/render/pbrt_v4_reference_test.cpp); the rough coat over a smooth metal
+// refracts at the macro surface. Two-sided, as pbrt-v4's.
 #pragma once
 #include <optional>
 

@@ -43,7 +43,9 @@ bool inside_polka_dot(Vec2 st) {
 
 const PluginSpec& dots_texture_spec() {
   static const PluginSpec spec{
-      "Texture", "polka dots of radius 0.35 in the unit cells of (s, t), by Perlin noise", "—",
+      "Texture", "polka dots of radius 0.35 in the unit cells of (s, t), by Perlin noise",
+      "pbrt-v4 (5f7a606) paints `inside` around the dots and `outside` in them (its Create passes them to "
+      "constructors declared the other way round); eyetrace follows the names",
       std::vector<ParamSpec>{param::any_texture("inside", 1).describe("of the texture's kind"),
                              param::any_texture("outside", 0).describe("of the texture's kind")} +
           TextureMapping2D::declared()};
