@@ -1,6 +1,7 @@
 // eyetrace against pbrt-v4 itself, feature by feature: each scene of tests/data/pbrt-v4/
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
-// diffusetransmission, thindielectric) is rendered here by eyetrace with two seeds and compared
+// diffusetransmission, thindielectric, partial cylinders, the directionmix, noise and dots
+// textures, the paddedsobol sampler, coatedconductor) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
 // everything whose default could differ (box pixel filter, the independent sampler, the path
@@ -21,7 +22,10 @@
 //   one-sided, a false failure with probability about 3e-5 under the central limit theorem.
 //   A bias b' in every pixel adds b'^2 / (b^2 + 0.01) to mean(d): the last test shows what size
 //   of change is caught.
-// One difference is on purpose and asserted at its size: eyetrace's light-leak guard
+// Three differences are asserted at their size. pbrt-v4 swaps the dots texture's inside and
+// outside (a pbrt-v4 bug, swap_dots_inside_outside). eyetrace's coatedconductor is closed-form
+// and less saturated than pbrt-v4's random walk for a rough coat on a rough metal. And
+// eyetrace's light-leak guard
 // (src/materials/local_bsdf.h) drops directions that the geometric and the shading normal put on
 // different sides, pbrt-v4 keeps them; with a bump map under a sky that darkens eyetrace by a
 // known amount (bump-sky.pbrt, docs/scene-format.md).
@@ -29,8 +33,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/film.h"
@@ -46,8 +53,30 @@ const std::string kDataDir = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbr
 // images add a 32nd of eyetrace's variance).
 constexpr int kSpp = 128;
 
-Image render_eyetrace(const std::string& scene, uint64_t seed) {
-  SceneDescription desc = parse_scene_file(kDataDir + scene + ".pbrt");
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// pbrt-v4 (5f7a606) paints a dots texture's "inside" outside the dots and its "outside" inside:
+// FloatDotsTexture::Create and SpectrumDotsTexture::Create pass (inside, outside) to constructors
+// that take (outsideDot, insideDot) (src/pbrt/textures.cpp and textures.h). eyetrace follows the
+// parameter names; to compare the rest of a scene with dots, eyetrace renders its text with the
+// two names exchanged.
+std::string swap_dots_inside_outside(std::string text) {
+  const std::string inside = "\"rgb inside\"", outside = "\"rgb outside\"", mark = "\"rgb @@\"";
+  for (auto [from, to] : {std::pair{inside, mark}, std::pair{outside, inside}, std::pair{mark, outside}})
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  return text;
+}
+
+Image render_eyetrace(const std::string& scene, uint64_t seed, bool swap_dots) {
+  std::string text = read_text(kDataDir + scene + ".pbrt");
+  if (swap_dots) text = swap_dots_inside_outside(text);
+  SceneDescription desc = parse_scene_string(text, kDataDir + scene + ".pbrt", kDataDir);
   RenderOverrides overrides;
   overrides.spp = kSpp;
   overrides.seed = seed;
@@ -64,13 +93,13 @@ struct ImagePairs {
   Image a1, a2, b1, b2;
 };
 
-const ImagePairs& images(const std::string& scene) {
-  static std::map<std::string, ImagePairs> cache;
-  auto it = cache.find(scene);
+const ImagePairs& images(const std::string& scene, bool swap_dots = false) {
+  static std::map<std::pair<std::string, bool>, ImagePairs> cache;
+  auto it = cache.find({scene, swap_dots});
   if (it == cache.end()) {
-    ImagePairs p{render_eyetrace(scene, 1), render_eyetrace(scene, 2), read_image(kDataDir + scene + "-seed1.exr"),
-                 read_image(kDataDir + scene + "-seed2.exr")};
-    it = cache.emplace(scene, std::move(p)).first;
+    ImagePairs p{render_eyetrace(scene, 1, swap_dots), render_eyetrace(scene, 2, swap_dots),
+                 read_image(kDataDir + scene + "-seed1.exr"), read_image(kDataDir + scene + "-seed2.exr")};
+    it = cache.emplace(std::pair{scene, swap_dots}, std::move(p)).first;
   }
   return it->second;
 }
@@ -119,8 +148,9 @@ Comparison compare(const ImagePairs& p, double scale, const std::vector<double>*
   return c;
 }
 
-void expect_matches_pbrt_v4(const std::string& scene, const std::vector<double>* add = nullptr) {
-  const ImagePairs& p = images(scene);
+void expect_matches_pbrt_v4(const std::string& scene, const std::vector<double>* add = nullptr,
+                            bool swap_dots = false) {
+  const ImagePairs& p = images(scene, swap_dots);
   for (const Image* im : {&p.a1, &p.a2, &p.b1, &p.b2}) {
     ASSERT_EQ(im->width, 64) << scene;
     ASSERT_EQ(im->height, 64) << scene;
@@ -149,6 +179,44 @@ TEST(PbrtV4Reference, BilerpTextureAsReflectance) { expect_matches_pbrt_v4("bile
 TEST(PbrtV4Reference, MixMaterialConstantAndTexturedAmount) { expect_matches_pbrt_v4("mix"); }
 TEST(PbrtV4Reference, DiffuseTransmissionLitFromBothSides) { expect_matches_pbrt_v4("diffusetransmission"); }
 TEST(PbrtV4Reference, ThinDielectricPaneBeforeAnEmitter) { expect_matches_pbrt_v4("thindielectric"); }
+
+TEST(PbrtV4Reference, PartialCylindersSeenFromOutsideAndInsideAndAsAnAreaLight) { expect_matches_pbrt_v4("cylinder"); }
+TEST(PbrtV4Reference, DirectionMixTextureInWorldAndRotatedTextureSpace) { expect_matches_pbrt_v4("directionmix"); }
+TEST(PbrtV4Reference, PaddedSobolSamplerOnTheMixScene) { expect_matches_pbrt_v4("mix-paddedsobol"); }
+TEST(PbrtV4Reference, CoatedConductorSmoothCoatOnSmoothMetal) { expect_matches_pbrt_v4("coatedconductor-smooth"); }
+
+// fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
+// octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way
+// round (swap_dots_inside_outside): with the names exchanged eyetrace matches; with the text as
+// written the dots quad alone differs, and by more than the tolerance.
+TEST(PbrtV4Reference, NoiseTexturesAndDotsWithPbrtV4sInsideOutsideSwap) {
+  expect_matches_pbrt_v4("noise", nullptr, /*swap_dots=*/true);
+  const Comparison c = compare(images("noise"), 1.0);
+  // The dots' colours, (0.8, 0.2, 0.1) and (0.2, 0.3, 0.6), differ most in red and blue.
+  for (int ch : {0, 2}) EXPECT_GT(std::abs(c.mean_a[ch] / c.mean_b[ch] - 1), 0.03) << ch;
+  std::printf("noise, dots as written: means eyetrace/pbrt-v4 %.4f %.4f %.4f\n", c.mean_a[0] / c.mean_b[0],
+              c.mean_a[1] / c.mean_b[1], c.mean_a[2] / c.mean_b[2]);
+}
+
+// A rough coat on a rough metal: eyetrace's closed-form model (coated_conductor_bxdf.h) is not
+// pbrt-v4's random walk, which also follows light bouncing between coat and metal (each bounce
+// tints it by the metal again). Not a match on purpose: the luminance agrees (within 0.3 %) but
+// eyetrace is less saturated, red 3.3 % lower and blue 6.1 % higher, most at grazing views. The
+// test prints the difference and checks it stays the size documented in docs/scene-format.md
+// (each channel's mean ratio within 1 % of the measured one; their noise is 0.1 to 0.15 %).
+TEST(PbrtV4Reference, CoatedConductorRoughCoatOnRoughMetalDiffersByTheDocumentedAmount) {
+  const ImagePairs& p = images("coatedconductor-rough");
+  for (const Image* im : {&p.a1, &p.a2, &p.b1, &p.b2})
+    for (float v : im->pixels) ASSERT_TRUE(std::isfinite(v));
+  const Comparison c = compare(p, 1.0);
+  const double documented[3] = {0.967, 1.018, 1.061};  // measured, 2 x 128 against 2 x 4096
+  for (int ch = 0; ch < 3; ++ch) {
+    const double ratio = c.mean_a[ch] / c.mean_b[ch];
+    std::printf("coatedconductor-rough channel %d: eyetrace/pbrt-v4 %.4f (sigma %.4f)\n", ch, ratio,
+                c.mean_sigma[ch] / c.mean_b[ch]);
+    EXPECT_NEAR(ratio, documented[ch], 0.01) << ch;
+  }
+}
 
 // What eyetrace's light-leak guard takes from bump-sky.pbrt, per pixel: the diffuse plane
 // (reflectance 0.5, 3 x 3 units, (u, v) from 0 to 1) displaced by d = 0.9 u (1 - 2 v) has the
