@@ -4,7 +4,8 @@ error, through the same Navarro eye (issue 19, item 4; docs/performance.md, "Aga
 realisticEye").
 
     /usr/bin/python3 bench/peer_equal_error.py --pbrt /work/oracles/pbrt-v3-spectral/build/pbrt \
-        [--eyetrace build/bin/eyetrace] [--work out/peer] [--csv docs/data/peer_equal_error.csv]
+        [--scenes peer,peripheral] [--modes mono,spec] [--work out/peer] [--csv out/peer/peer_equal_error.csv]
+    /usr/bin/python3 bench/peer_equal_error.py --analyse --csv docs/data/peer-equal-error-2026-11-26.csv
 
 For each scene (scenes/peer.pbrt, scenes/peripheral.pbrt) and each mode (monochromatic at 550 nm,
 spectral) it renders with both programs at a ladder of samples per pixel and once at a reference
@@ -31,9 +32,12 @@ band's ray refracted at the band's centre wavelength. eyetrace's: `"float wavele
 default dispersive eye (four hero wavelengths per path, spectral MIS).
 
 The references share their first samples with the ladder images on both sides (deterministic Halton
-on both; pbrt-v3 has no seed option), which lowers each measured relMSE by about a factor
-(1 - n/N) for n of N samples; the ladder stops at N/8 so this is at most 12 % and the same on both
-sides.
+on both; pbrt-v3 has no seed option), so what is measured is v(n) - v(N) rather than v(n); `corrected`
+adds v(N) back from a power-law fit to the ladder. For eyetrace, which draws independent images
+(--seed), every rung also records the two-seed estimate mean((a - b)^2) / 2 / mean^2 as a check.
+
+Rows are appended to --csv as they are measured (one invocation per scene and mode keeps each run
+short); --analyse prints the corrected ladders and the table of times and ratios from that file.
 """
 import argparse
 import csv
@@ -320,6 +324,7 @@ def main():
     p.add_argument('--eyetrace-ladder', default=None, help='spp ladder for eyetrace (default --ladder)')
     p.add_argument('--eyetrace-reference-spp', type=int, default=None)
     args = p.parse_args()
+    args.work = os.path.abspath(args.work)  # pbrt-v3 resolves relative file names against the scene's folder
     if not args.analyse:
         if not args.pbrt and 'pbrt' in args.renderers:
             p.error('--pbrt is needed to render')
