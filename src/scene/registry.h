@@ -48,6 +48,8 @@ struct ShapeContext {
   Transform world_from_object;
   bool reverse_orientation = false;
   std::string search_dir;
+  // For "texture alpha" (named float textures); null where there are none (tests).
+  TextureStore* textures = nullptr;
 };
 
 // Resolves material/texture parameters that may be a constant or a named texture.

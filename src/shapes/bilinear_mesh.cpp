@@ -58,7 +58,6 @@ std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContex
   std::vector<int> face_indices = params.get_ints("faceIndices");
   if (params.has("emissionfilename"))
     params.warn_param("emissionfilename", "image-driven emission sampling is not supported; ignored");
-  warn_alpha_unsupported(params, "bilinearmesh");
 
   size_t nv = positions.size();
   if (nv == 0) params.fail("P", "the mesh has no vertex positions");
@@ -85,8 +84,10 @@ std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContex
 
   MeshData mesh = bilinear_patches_to_triangles(positions, indices, normals, uvs);
   std::vector<std::unique_ptr<Shape>> shapes;
-  shapes.push_back(std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                                  MeshSource{ctx.params}));
+  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
+                                            MeshSource{ctx.params});
+  tri->set_alpha(read_alpha(ctx, params));
+  shapes.push_back(std::move(tri));
   return shapes;
 }
 

@@ -57,15 +57,15 @@ std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ct
 
   for (const char* name : {"displacement", "displacement.edgelength", "edgelength"})
     if (params.has(name)) params.warn_param(name, "displacement is not supported; the mesh is used as is");
-  warn_alpha_unsupported(params, "plymesh");
 
   MeshData mesh = read_ply_mesh(path.string(), ctx.params);
   MeshSource source(ctx.params);
   source.p = source.indices = source.n = source.uv = "filename";
   source.context = fmt::format("\"{}\": ", path.string());
   std::vector<std::unique_ptr<Shape>> shapes;
-  shapes.push_back(
-      std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source));
+  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source);
+  tri->set_alpha(read_alpha(ctx, params));
+  shapes.push_back(std::move(tri));
   return shapes;
 }
 

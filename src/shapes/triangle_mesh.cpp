@@ -1,5 +1,8 @@
 #include "shapes/triangle_mesh.h"
 
+#include "samplers/hash.h"
+#include "scene/texture_store.h"
+
 #include <algorithm>
 
 #include "core/float_error.h"
@@ -27,7 +30,22 @@ constexpr Vec2 kDefaultUV[3] = {Vec2(0.f, 0.f), Vec2(1.f, 0.f), Vec2(1.f, 1.f)};
 
 ParamSpec alpha_param() {
   return param::float_texture("alpha", 1)
-      .describe("cutouts are not supported: other values warn, the shape stays opaque");
+      .describe(
+          "cutout: 0 no surface, 1 opaque, between: passes that fraction of rays (meshes only; the "
+          "quadrics warn and stay opaque)");
+}
+
+ShapeAlpha read_alpha(const ShapeContext& ctx, const PluginParams& params) {
+  ShapeAlpha alpha;
+  const Param* p = params.list().find("alpha");
+  if (!p) return alpha;
+  if (p->canonical_type() != "texture") {
+    alpha.constant = params.get_float("alpha");
+    return alpha;
+  }
+  if (!ctx.textures) params.fail("alpha", "a texture alpha needs the scene's textures (internal: none given)");
+  alpha.texture = ctx.textures->float_param(params, "alpha");
+  return alpha;
 }
 
 void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name) {
@@ -133,10 +151,48 @@ unsigned TriangleMesh::attach(RTCDevice device, RTCScene scene) const {
                              vertex_count_);
   rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices_.data(), 0, 3 * sizeof(uint32_t),
                              indices_.size() / 3);
+  if (!alpha_.opaque()) {
+    rtcSetGeometryUserData(geom, const_cast<TriangleMesh*>(this));
+    rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+    rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+  }
   rtcCommitGeometry(geom);
   unsigned id = rtcAttachGeometry(scene, geom);
   rtcReleaseGeometry(geom);
   return id;
+}
+
+bool TriangleMesh::alpha_passes(unsigned tri, float b1, float b2, const Vec3& o, const Vec3& d, float t) const {
+  if (alpha_.opaque()) return true;
+  const Corner c = corners(tri);
+  const float b0 = 1.f - b1 - b2;
+  TextureEvalContext ctx;
+  ctx.p = o + t * d;
+  ctx.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
+  ctx.n = face_normal_[tri];
+  const float a = alpha_.at(ctx);
+  if (a >= 1.f) return true;
+  if (!(a > 0.f)) return false;  // 0, negative or NaN: no surface
+  // pbrt-v4's HashFloat(o, d): uniform in [0, 1), the same for the same ray.
+  const uint64_t h = hash_values(o.x, o.y, o.z, d.x, d.y, d.z);
+  return float(h >> 40) * 0x1p-24f <= a;
+}
+
+// Embree calls this for every candidate hit of a mesh with alpha (one ray at a time here:
+// rtcIntersect1 / rtcOccluded1, N = 1, but written for any N); clearing valid[i] makes Embree
+// ignore the hit and look on. The ray is in the space the mesh lives in (instance space for an
+// instanced mesh), its tfar the candidate's distance.
+void TriangleMesh::alpha_filter(const RTCFilterFunctionNArguments* args) {
+  const auto* mesh = static_cast<const TriangleMesh*>(args->geometryUserPtr);
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] == 0) continue;
+    const Vec3 o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
+    const Vec3 d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
+    if (!mesh->alpha_passes(RTCHitN_primID(args->hit, n, i), RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i), o,
+                            d, RTCRayN_tfar(args->ray, n, i)))
+      args->valid[i] = 0;
+  }
 }
 
 TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
@@ -281,10 +337,10 @@ std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContex
   mesh.uvs = params.get_point2s("uv");
   if (params.has("S")) params.warn_param("S", "tangents are ignored; shading frames come from \"N\" and \"uv\"");
   std::vector<int> face_indices = params.get_ints("faceIndices");
-  warn_alpha_unsupported(params, "trianglemesh");
   std::vector<std::unique_ptr<Shape>> shapes;
   auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
                                             MeshSource{ctx.params});
+  tri->set_alpha(read_alpha(ctx, params));
   if (!face_indices.empty() && face_indices.size() != tri->primitive_count() + size_t(tri->dropped_triangles()))
     params.fail("faceIndices", fmt::format("{} face indices given for {} triangles", face_indices.size(),
                                            tri->primitive_count() + tri->dropped_triangles()));

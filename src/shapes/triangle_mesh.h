@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/shape.h"
+#include "core/texture.h"
 #include "core/transform.h"
 #include "scene/registry.h"
 
@@ -31,6 +32,14 @@ struct MeshSource {
   std::string context;  // prefix for messages, e.g. "file \"bunny.ply\": "
 };
 
+// A shape's alpha: a named texture, or a constant (1: opaque).
+struct ShapeAlpha {
+  const FloatTexture* texture = nullptr;
+  float constant = 1.f;
+  bool opaque() const { return !texture && constant >= 1.f; }
+  float at(const TextureEvalContext& ctx) const { return texture ? texture->evaluate(ctx) : constant; }
+};
+
 class TriangleMesh : public Shape {
  public:
   // Validates `mesh` (indices in range and a multiple of 3, per-vertex arrays as long as
@@ -48,6 +57,16 @@ class TriangleMesh : public Shape {
   size_t vertex_count() const { return vertex_count_; }
   int dropped_triangles() const { return dropped_; }
 
+  // Alpha cutouts ("alpha", pbrt-v4's): where the texture is 0 the surface is not there; where
+  // it is below 1, a ray passes with probability 1 - alpha, decided by a hash of the ray's
+  // origin and direction (pbrt-v4's HashFloat), the same decision every time that ray is
+  // traced. An Embree filter function applies it to intersections and shadow rays alike.
+  // Opaque (the default): no filter is installed.
+  void set_alpha(const ShapeAlpha& alpha) { alpha_ = alpha; }
+  // Whether a ray (o, d) hitting triangle `tri` at Embree's barycentrics (b1, b2), distance t,
+  // meets the surface there; public for tests.
+  bool alpha_passes(unsigned tri, float b1, float b2, const Vec3& o, const Vec3& d, float t) const;
+
  private:
   struct Corner {
     Vec3 p[3];
@@ -62,6 +81,7 @@ class TriangleMesh : public Shape {
   // Geometric normal oriented as pbrt orients it (see the .cpp), and the shading normal.
   void normals_at(unsigned tri, float b0, float b1, float b2, Vec3* n, Vec3* ns) const;
   void validate(MeshData& mesh, const MeshSource& source) const;
+  static void alpha_filter(const RTCFilterFunctionNArguments* args);
   void build(MeshData& mesh, const Transform& world_from_object, const MeshSource& source);
 
   // World-space positions with one padding element at the end: Embree reads vertex buffers
@@ -75,6 +95,7 @@ class TriangleMesh : public Shape {
   std::vector<Vec3> point_error_;  // triangle_error of each kept triangle
   std::vector<Vec3> face_normal_;  // robust_normalize(cross(p0 - p2, p1 - p2)), unflipped
   float area_ = 0.f;
+  ShapeAlpha alpha_;
   Bounds3 bounds_;
   bool flip_normal_ = false;  // reverse_orientation XOR transform swaps handedness
   int dropped_ = 0;
@@ -84,9 +105,14 @@ class TriangleMesh : public Shape {
 // "normal N", "point2 uv", "vector3 S" (ignored with a warning), "integer faceIndices".
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx);
 
-// Reads "alpha" (float or texture) and warns that alpha cutouts are not supported.
-// "alpha", which every shape takes: cutouts are not supported, so anything but 1 warns.
+// "alpha", which every shape takes (a float or a float texture, default 1). Triangle meshes
+// (trianglemesh, plymesh, bilinearmesh) cut out by it (read_alpha); the quadrics do not yet, so
+// anything but 1 there warns (warn_alpha_unsupported).
 ParamSpec alpha_param();
+// "alpha" read: a constant, or a named texture (from the scene's store). (An area light on a
+// cut-out mesh still emits from the whole surface, where pbrt-v4 masks it: the scene builder
+// warns.)
+ShapeAlpha read_alpha(const ShapeContext& ctx, const PluginParams& params);
 void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name);
 const PluginSpec& trianglemesh_shape_spec();
 

@@ -1,0 +1,106 @@
+// Alpha cutouts on triangle meshes (pbrt-v4's "alpha"): through the renderer, a quad in front of
+// an emitter hides it with alpha 1, is not there with alpha 0, passes a fraction 1 - alpha of the
+// camera rays in between (a binomial mean, 4 sigma), follows a texture's pattern exactly, and
+// casts no shadow where it is cut out; a ray's decision is the same each time it is traced.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/film.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
+
+namespace eyetrace {
+namespace {
+
+Image render(const std::string& text) {
+  SceneDescription desc = parse_scene_string(text, "alpha.pbrt", ".");
+  RenderSetup s = build_render_setup(desc, {});
+  RenderCounters counters;
+  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
+  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
+  return s.film->image();
+}
+
+double mean(const Image& img, int x0 = 0, int x1 = -1) {
+  if (x1 < 0) x1 = img.width;
+  double sum = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = x0; x < x1; ++x) sum += img.at(x, y, 1);
+  return sum / (double(x1 - x0) * img.height);
+}
+
+// A black quad (z = 0, uv over it) seen from +z in front of an emitter of radiance 1 (z = -1),
+// with the given alpha parameter text; 16 x 16 pixels, `spp` samples each.
+std::string pane(const std::string& alpha, int spp = 16, const std::string& textures = "") {
+  return fmt::format(R"(
+    LookAt 0 0 5  0 0 0  0 1 0
+    Camera "perspective" "float fov" 10
+    Film "rgb" "integer xresolution" 16 "integer yresolution" 16
+    Sampler "independent" "integer pixelsamples" {}
+    PixelFilter "box"
+    Integrator "path" "integer maxdepth" 5
+    WorldBegin
+    {}
+    AttributeBegin
+      Material "diffuse" "rgb reflectance" [0 0 0]
+      AreaLightSource "diffuse" "rgb L" [1 1 1]
+      Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-3 -3 -1  3 -3 -1  3 3 -1  -3 3 -1]
+    AttributeEnd
+    Material "diffuse" "rgb reflectance" [0 0 0]
+    Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]
+      "point2 uv" [0 0  1 0  1 1  0 1] {}
+  )",
+                     spp, textures, alpha);
+}
+
+TEST(AlphaCutout, OpaqueHiddenAndHalfway) {
+  EXPECT_NEAR(mean(render(pane(""))), 0.0, 1e-6);                    // no alpha: opaque
+  EXPECT_NEAR(mean(render(pane(R"("float alpha" 1)"))), 0.0, 1e-6);  // 1: opaque
+  // 0: not there (1 within the colour noise of 4 sampled wavelengths per camera ray).
+  EXPECT_NEAR(mean(render(pane(R"("float alpha" 0)"))), 1.0, 1e-3);
+  // 0.3: each camera ray passes with probability 0.7 (emitter 1) or stops on the black quad.
+  const int n = 16 * 16 * 64;
+  EXPECT_NEAR(mean(render(pane(R"("float alpha" 0.3)", 64))), 0.7, 4 * std::sqrt(0.7 * 0.3 / n));
+}
+
+TEST(AlphaCutout, ATexturedAlphaCutsItsPattern) {
+  // A checkerboard of two columns across the quad (uscale 2): alpha 1 where u < 1/2 (x < 0), 0
+  // where u > 1/2, which shows the emitter. pbrt's LookAt from +z puts world +x on the image's
+  // left, so the left half shows the emitter and the right stays black. The quad fills the
+  // view (fov 10 at distance 5 sees +-0.44), so the halves are the image's.
+  const Image img = render(pane(R"("texture alpha" "cut")", 4,
+                                R"(Texture "cut" "float" "checkerboard" "float uscale" 2 "float vscale" 1
+                                    "float tex1" 1 "float tex2" 0)"));
+  EXPECT_NEAR(mean(img, 0, 7), 1.0, 2e-3);
+  EXPECT_NEAR(mean(img, 9, 16), 0.0, 1e-6);
+}
+
+TEST(AlphaCutout, ACutOutOccluderCastsNoShadow) {
+  // A floor (z = 0) lit by a distant light from direction (0, 1, 1); a quad at z = 1 over
+  // y in [0.2, 5] shadows the floor around the origin, which the camera sees past the quad's
+  // edge (its rays cross z = 1 near y = -0.1): alpha 1 shadows it, alpha 0 does not.
+  auto scene = [](const std::string& alpha) {
+    return fmt::format(R"(
+      LookAt 0 -0.5 5  0 0 0  0 1 0
+      Camera "perspective" "float fov" 2
+      Film "rgb" "integer xresolution" 8 "integer yresolution" 8
+      Sampler "independent" "integer pixelsamples" 4
+      Integrator "path" "integer maxdepth" 1
+      WorldBegin
+      LightSource "distant" "point3 from" [0 10 10] "point3 to" [0 0 0] "rgb L" [1 1 1]
+      Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+      Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-5 -5 0  5 -5 0  5 5 0  -5 5 0]
+      Material "diffuse" "rgb reflectance" [0 0 0]
+      Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-5 0.2 1  5 0.2 1  5 5 1  -5 5 1] {}
+    )",
+                       alpha);
+  };
+  const double lit = 0.5 / 3.14159265358979 * std::sqrt(0.5);  // R / pi E cos 45 with E = 1
+  EXPECT_NEAR(mean(render(scene(R"("float alpha" 0)"))), lit, 1e-3 * lit + 1e-5);
+  EXPECT_NEAR(mean(render(scene(R"("float alpha" 1)"))), 0.0, 1e-6);
+  EXPECT_NEAR(mean(render(scene(""))), 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace eyetrace
