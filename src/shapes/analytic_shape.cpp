@@ -180,4 +180,16 @@ void AnalyticShape::finish(const Ray& ray, float t, SurfaceInteraction* si) cons
   si->time = ray.time;
 }
 
+ShapeSample AnalyticShape::area_sample_at(const glm::dvec3& p) const {
+  SurfaceInteraction si;
+  surface_at(p, &si);
+  ShapeSample s;
+  s.p = si.p;
+  s.p_error = si.p_error;
+  s.n = si.n;
+  s.uv = si.uv;
+  s.pdf_area = 1.f / area();
+  return s;
+}
+
 }  // namespace eyetrace

@@ -2,7 +2,9 @@
 // user geometry whose callbacks run the shape's own ray test in object space, in double
 // precision, and holds the object/world transforms both ways in double.
 #pragma once
+#include <cmath>
 #include <optional>
+#include <utility>
 
 #include "core/shape.h"
 #include "core/transform.h"
@@ -40,6 +42,30 @@ class AnalyticShape : public Shape {
   // gets the world-space bound of the float p (see point_error).
   void set_surface(SurfaceInteraction* si, const glm::dvec3& p, const glm::dvec3& n, double u, double v,
                    const glm::dvec3& dpdu, const glm::dvec3& dpdv, double p_rel_error = 0.0) const;
+  // The area sample at object-space surface point p: its world point, error, normal and uv
+  // from surface_at, with density 1 / area() (the quadrics sample uniformly in area).
+  ShapeSample area_sample_at(const glm::dvec3& p) const;
+  // The first crossing in (tmin, tmax) of a quadric whose crossings solve a t^2 + 2 b t + c = 0,
+  // given disc = b^2 - a c computed without cancellation by the caller (pbrt-v4's form: from
+  // the line's point closest to the axis or centre): q = -(b + sign(b) sqrt(disc)) adds two
+  // numbers of one sign, so the roots q / a and c / q (Vieta) keep every digit where the
+  // textbook (-b + sqrt) / a loses the near root when b^2 >> a c. The near root first; when it
+  // lies before tmin or its point is cut away (a partial shape, an open end), the far root is
+  // the first surface the ray meets. Nothing when disc < 0 (a miss; a grazing ray, disc = 0,
+  // touches at one point).
+  template <class CutAway>
+  static std::optional<double> first_crossing(const DRay& r, double a, double b, double c, double disc, double tmin,
+                                              double tmax, CutAway cut_away) {
+    if (disc < 0.0) return std::nullopt;
+    const double q = -(b + std::copysign(std::sqrt(disc), b));
+    double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+    if (t0 > t1) std::swap(t0, t1);
+    for (double t : {t0, t1}) {
+      if (t >= tmax) break;
+      if (t > tmin && !cut_away(r.o + t * r.d)) return t;
+    }
+    return std::nullopt;
+  }
   // Absolute error bound of point_to_world(p) for an object-space p off the surface by
   // p_rel_error |p|: carried through the transform, plus the transform's double rounding,
   // plus the final rounding to float.

@@ -49,18 +49,8 @@ std::optional<double> Cylinder::hit_object(const DRay& r, double tmin, double tm
   const double fx = o.x - (b / a) * d.x, fy = o.y - (b / a) * d.y;
   const double len_f = std::sqrt(fx * fx + fy * fy);
   const double disc = a * (radius_ - len_f) * (radius_ + len_f);
-  if (disc < 0.0) return std::nullopt;
-  // q adds two numbers of one sign (no cancellation); the roots are q / a and c / q.
-  const double q = -(b + std::copysign(std::sqrt(disc), b));
-  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
-  if (t0 > t1) std::swap(t0, t1);
-  // The near root first; when it lies before tmin or outside [zmin, zmax] or the azimuth cut,
-  // the far root is the first surface the ray meets (the inside of the open tube).
-  for (double t : {t0, t1}) {
-    if (t >= tmax) break;
-    if (t > tmin && !cut_away(o + t * d)) return t;
-  }
-  return std::nullopt;
+  // The open ends and the azimuth cut make the far root the first crossing for some rays.
+  return first_crossing(r, a, b, c, disc, tmin, tmax, [this](const glm::dvec3& p) { return cut_away(p); });
 }
 
 void Cylinder::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
@@ -86,15 +76,7 @@ void Cylinder::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
 ShapeSample Cylinder::sample_area(Vec2 u) const {
   // Uniform in z and phi is uniform in area on the tube.
   const double z = zmin_ + double(u.x) * (zmax_ - zmin_), phi = double(u.y) * phimax_;
-  SurfaceInteraction si;
-  surface_at(glm::dvec3(radius_ * std::cos(phi), radius_ * std::sin(phi), z), &si);
-  ShapeSample s;
-  s.p = si.p;
-  s.p_error = si.p_error;
-  s.n = si.n;
-  s.uv = si.uv;
-  s.pdf_area = float(1.0 / area_);
-  return s;
+  return area_sample_at(glm::dvec3(radius_ * std::cos(phi), radius_ * std::sin(phi), z));
 }
 
 const PluginSpec& cylinder_shape_spec() {

@@ -63,15 +63,7 @@ ShapeSample Disk::sample_area(Vec2 u) const {
   // samples the full disk and ignores innerradius/phimax; this is exact for both.)
   double r2 = inner_radius_ * inner_radius_ + double(u.x) * (radius_ * radius_ - inner_radius_ * inner_radius_);
   double r = std::sqrt(r2), phi = double(u.y) * phimax_;
-  SurfaceInteraction si;
-  surface_at(glm::dvec3(r * std::cos(phi), r * std::sin(phi), height_), &si);
-  ShapeSample s;
-  s.p = si.p;
-  s.p_error = si.p_error;
-  s.n = si.n;
-  s.uv = si.uv;
-  s.pdf_area = float(1.0 / area_);
-  return s;
+  return area_sample_at(glm::dvec3(r * std::cos(phi), r * std::sin(phi), height_));
 }
 
 const PluginSpec& disk_shape_spec() {

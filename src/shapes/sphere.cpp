@@ -50,20 +50,7 @@ std::optional<double> Sphere::hit_object(const DRay& r, double tmin, double tmax
   glm::dvec3 f = o - (b / a) * d;
   double len_f = glm::length(f);
   double disc = a * (radius_ - len_f) * (radius_ + len_f);
-  if (disc < 0.0) return std::nullopt;
-  // q = -(b + sign(b) sqrt(disc)) adds two numbers of the same sign, so it never cancels;
-  // the roots are then q / a and c / q (Vieta: their product is c / a). The textbook
-  // (-b + sqrt) / a would lose every digit of the near root when b^2 >> a c.
-  double q = -(b + std::copysign(std::sqrt(disc), b));
-  double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
-  if (t0 > t1) std::swap(t0, t1);
-  // The near root first; when it lies before tmin or its point is cut away (partial
-  // sphere), the far root is the first surface the ray meets, e.g. the inside of a bowl.
-  for (double t : {t0, t1}) {
-    if (t >= tmax) break;
-    if (t > tmin && !cut_away(o + t * d)) return t;
-  }
-  return std::nullopt;
+  return first_crossing(r, a, b, c, disc, tmin, tmax, [this](const glm::dvec3& p) { return cut_away(p); });
 }
 
 void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
@@ -94,15 +81,7 @@ ShapeSample Sphere::sample_area(Vec2 u) const {
   double z = zmin_ + double(u.x) * (zmax_ - zmin_);
   double phi = double(u.y) * phimax_;
   double rxy = std::sqrt(std::max(0.0, radius_ * radius_ - z * z));
-  SurfaceInteraction si;
-  surface_at(glm::dvec3(rxy * std::cos(phi), rxy * std::sin(phi), z), &si);
-  ShapeSample s;
-  s.p = si.p;
-  s.p_error = si.p_error;
-  s.n = si.n;
-  s.uv = si.uv;
-  s.pdf_area = float(1.0 / area_);
-  return s;
+  return area_sample_at(glm::dvec3(rxy * std::cos(phi), rxy * std::sin(phi), z));
 }
 
 const PluginSpec& sphere_shape_spec() {

@@ -6,11 +6,9 @@
 
 #include <cmath>
 
+#include "../support/render_text.h"
 #include "core/transform.h"
 #include "materials/bump_map.h"
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
 #include "scene/texture_store.h"
 #include "textures/bilerp_texture.h"
 
@@ -100,14 +98,7 @@ double lit_plane(Vec3 from, bool bumped) {
       "point3 P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] "point2 uv" [0 0  1 0  1 1  0 1]
   )",
                                        from.x, from.y, from.z, bumped ? "\"texture displacement\" \"bump\"" : "");
-  SceneDescription desc = parse_scene_string(text, "bump.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  const Image img = s.film->image();
-  double sum = 0;
-  for (float v : img.pixels) sum += v;
-  return sum / double(img.pixels.size());
+  return test::image_mean(test::render_text(text, "bump.pbrt"));
 }
 
 TEST(BumpMap, ADiffusePlaneShinesWithTheCosineToTheBumpedNormal) {

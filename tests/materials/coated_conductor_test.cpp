@@ -12,13 +12,11 @@
 #include <cmath>
 #include <random>
 
+#include "../support/render_text.h"
 #include "../support/spectral.h"
 #include "materials/coated_conductor_bxdf.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/fresnel.h"
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
@@ -105,15 +103,7 @@ double lit(const std::string& material) {
     Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]
   )",
                                        material);
-  SceneDescription desc = parse_scene_string(text, "cc.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  const Image img = s.film->image();
-  double sum = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) sum += img.at(x, y, 1);  // green
-  return sum / (img.width * img.height);
+  return test::channel_mean(test::render_text(text, "cc.pbrt"), 1);  // green
 }
 
 TEST(CoatedConductor, PbrtV4ParametersRenderAndAMirrorMetalUnderAnIndexOneCoatIsTheMetal) {

@@ -2,6 +2,7 @@
 // without absorption reflects everything) and its parameters.
 #include <gtest/gtest.h>
 
+#include "../support/params.h"
 #include "../support/spectral.h"
 
 #include <random>
@@ -21,13 +22,7 @@ SurfaceInteraction hit() {
   return si;
 }
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 // Mean of f cos / pdf over n samples, and its standard error.
 std::pair<SampledSpectrum, SampledSpectrum> albedo(const BSDF& b, const Vec3& wo, int n, unsigned seed) {

@@ -7,9 +7,7 @@
 
 #include <cmath>
 
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "../support/render_text.h"
 
 namespace eyetrace {
 namespace {
@@ -19,12 +17,7 @@ struct Mean {
 };
 
 Mean render_mean(const std::string& text) {
-  SceneDescription desc = parse_scene_string(text, "dt.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
-  const Image img = s.film->image();
+  const Image img = test::render_text(text, "dt.pbrt");
   double sum = 0, sum2 = 0;
   for (float v : img.pixels) {
     sum += v;

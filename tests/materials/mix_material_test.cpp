@@ -8,14 +8,12 @@
 #include <cmath>
 #include <random>
 
+#include "../support/render_text.h"
 #include "../support/spectral.h"
 #include "core/arena.h"
 #include "core/error.h"
 #include "materials/diffuse_material.h"
 #include "materials/mix_material.h"
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
 #include "scene/texture_store.h"
 
 namespace eyetrace {
@@ -60,14 +58,7 @@ double lit_plane(const std::string& material, int spp) {
     Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]
   )",
                                        spp, material);
-  SceneDescription desc = parse_scene_string(text, "mix.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  const Image img = s.film->image();
-  double sum = 0;
-  for (float v : img.pixels) sum += v;
-  return sum / double(img.pixels.size());
+  return test::image_mean(test::render_text(text, "mix.pbrt"));
 }
 
 TEST(MixMaterial, AmountsZeroAndOneAreTheMaterialsAndAQuarterIsTheBlend) {

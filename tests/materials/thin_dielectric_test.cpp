@@ -7,11 +7,9 @@
 
 #include <cmath>
 
+#include "../support/render_text.h"
 #include "materials/fresnel.h"
 #include "materials/thin_dielectric_bxdf.h"
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
@@ -63,14 +61,7 @@ double mean_through_pane(bool pane) {
                                        pane ? R"(Material "thindielectric" "float eta" 1.5
     Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-2 -2 1  2 -2 1  2 2 1  -2 2 1])"
                                             : "");
-  SceneDescription desc = parse_scene_string(text, "pane.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  const Image img = s.film->image();
-  double sum = 0;
-  for (float v : img.pixels) sum += v;
-  return sum / double(img.pixels.size());
+  return test::image_mean(test::render_text(text, "pane.pbrt"));
 }
 
 TEST(ThinDielectric, APanePassesOneMinusItsReflectance) {

@@ -6,29 +6,14 @@
 
 #include <cmath>
 
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "../support/render_text.h"
 
 namespace eyetrace {
 namespace {
 
-Image render(const std::string& text) {
-  SceneDescription desc = parse_scene_string(text, "alpha.pbrt", ".");
-  RenderSetup s = build_render_setup(desc, {});
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
-  return s.film->image();
-}
+Image render(const std::string& text) { return test::render_text(text, "alpha.pbrt"); }
 
-double mean(const Image& img, int x0 = 0, int x1 = -1) {
-  if (x1 < 0) x1 = img.width;
-  double sum = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = x0; x < x1; ++x) sum += img.at(x, y, 1);
-  return sum / (double(x1 - x0) * img.height);
-}
+double mean(const Image& img, int x0 = 0, int x1 = -1) { return test::channel_mean(img, 1, x0, x1); }
 
 // A black quad (z = 0, uv over it) seen from +z in front of an emitter of radiance 1 (z = -1),
 // with the given alpha parameter text; 16 x 16 pixels, `spp` samples each.

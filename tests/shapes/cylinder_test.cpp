@@ -9,6 +9,7 @@
 #include <functional>
 #include <random>
 
+#include "../support/one_shape.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -16,39 +17,13 @@ namespace {
 
 std::unique_ptr<Shape> make_cylinder(std::vector<std::pair<std::string, double>> floats,
                                      const Transform& t = Transform(), bool reverse = false) {
-  ParameterList pl(SourceLoc{"cyl.pbrt", 3, 1});
-  for (auto& [name, value] : floats) {
-    Param p;
-    p.type = "float";
-    p.name = name;
-    p.loc = SourceLoc{"cyl.pbrt", 3, 7};
-    p.numbers = {value};
-    pl.add(p);
-  }
+  ParameterList pl = test::float_params("cyl.pbrt", 3, floats);
   auto shapes = create_cylinder_shapes(ShapeContext{pl, t, reverse, ""});
   return std::move(shapes.at(0));
 }
 
-struct OneShape {
-  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
-  const Shape* shape = nullptr;
-  explicit OneShape(std::unique_ptr<Shape> s) {
-    shape = s.get();
-    scene->add_primitive(Primitive{std::move(s), nullptr, nullptr});
-    scene->commit();
-  }
-  std::optional<SurfaceInteraction> hit(Vec3 o, Vec3 d) const {
-    SurfaceInteraction si;
-    if (!scene->intersect(Ray{o, d}, &si)) return std::nullopt;
-    return si;
-  }
-};
-
-void expect_near(const Vec3& a, const Vec3& b, float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
+using test::expect_near;
+using test::OneShape;
 
 TEST(Cylinder, HitPointNormalUVAndTangents) {
   OneShape s(make_cylinder({{"radius", 2}, {"zmin", -1}, {"zmax", 3}}));
@@ -153,14 +128,7 @@ TEST(Cylinder, MillionsOfRandomRaysGiveFinitePointsOnTheSurface) {
 }
 
 TEST(Cylinder, ValidationErrorsNameTheParameter) {
-  auto error_of = [](const std::function<void()>& f) -> std::string {
-    try {
-      f();
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "(no error)";
-  };
+  auto error_of = [](const std::function<void()>& f) { return test::scene_error_of(f); };
   std::string e = error_of([] { make_cylinder({{"radius", 0}}); });
   EXPECT_NE(e.find("\"radius\""), std::string::npos) << e;
   e = error_of([] { make_cylinder({{"zmin", 1}, {"zmax", 1}}); });

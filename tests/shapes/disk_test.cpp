@@ -7,6 +7,7 @@
 #include <functional>
 #include <random>
 
+#include "../support/one_shape.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -14,48 +15,14 @@ namespace {
 
 std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),
                                  bool reverse = false) {
-  ParameterList pl(SourceLoc{"disk.pbrt", 2, 1});
-  for (auto& [name, value] : floats) {
-    Param p;
-    p.type = "float";
-    p.name = name;
-    p.loc = SourceLoc{"disk.pbrt", 2, 6};
-    p.numbers = {value};
-    pl.add(p);
-  }
+  ParameterList pl = test::float_params("disk.pbrt", 2, floats);
   auto shapes = create_disk_shapes(ShapeContext{pl, t, reverse, ""});
   return std::move(shapes.at(0));
 }
 
-struct OneShape {
-  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
-  const Shape* shape = nullptr;
-  explicit OneShape(std::unique_ptr<Shape> s) {
-    shape = s.get();
-    scene->add_primitive(Primitive{std::move(s), nullptr, nullptr});
-    scene->commit();
-  }
-  std::optional<SurfaceInteraction> hit(Vec3 o, Vec3 d) const {
-    SurfaceInteraction si;
-    if (!scene->intersect(Ray{o, d}, &si)) return std::nullopt;
-    return si;
-  }
-};
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-void expect_near(const Vec3& a, const Vec3& b, float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
+using test::expect_near;
+using test::OneShape;
+std::string error_of(const std::function<void()>& f) { return test::scene_error_of(f); }
 
 TEST(Disk, HitPointNormalAndUV) {
   OneShape s(make_disk({{"height", 1}}));
@@ -153,7 +120,7 @@ TEST(Disk, ValidationErrorsNameTheParameter) {
   EXPECT_NE(e.find("\"radius\""), std::string::npos) << e;
   e = error_of([] { make_disk({{"innerradius", 1}}); });
   EXPECT_NE(e.find("\"innerradius\""), std::string::npos) << e;
-  EXPECT_NE(e.find("disk.pbrt:2:6"), std::string::npos) << e;
+  EXPECT_NE(e.find("disk.pbrt:2:9"), std::string::npos) << e;
   e = error_of([] { make_disk({{"phimax", -10}}); });
   EXPECT_NE(e.find("\"phimax\""), std::string::npos) << e;
 }

@@ -7,22 +7,14 @@
 #include <functional>
 #include <random>
 
+#include "../support/one_shape.h"
 #include "render/scene.h"
 
 namespace eyetrace {
 namespace {
 
 ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) {
-  ParameterList pl(SourceLoc{"sphere.pbrt", 5, 1});
-  for (auto& [name, value] : floats) {
-    Param p;
-    p.type = "float";
-    p.name = name;
-    p.loc = SourceLoc{"sphere.pbrt", 5, 9};
-    p.numbers = {value};
-    pl.add(p);
-  }
-  return pl;
+  return test::float_params("sphere.pbrt", 5, floats);
 }
 
 std::unique_ptr<Shape> make_sphere(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),
@@ -33,35 +25,9 @@ std::unique_ptr<Shape> make_sphere(std::vector<std::pair<std::string, double>> f
   return std::move(shapes.at(0));
 }
 
-struct OneShape {
-  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
-  const Shape* shape = nullptr;
-  explicit OneShape(std::unique_ptr<Shape> s) {
-    shape = s.get();
-    scene->add_primitive(Primitive{std::move(s), nullptr, nullptr});
-    scene->commit();
-  }
-  std::optional<SurfaceInteraction> hit(Vec3 o, Vec3 d, float tmax = kInfinity) const {
-    SurfaceInteraction si;
-    if (!scene->intersect(Ray{o, d, tmax}, &si)) return std::nullopt;
-    return si;
-  }
-};
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-void expect_near(const Vec3& a, const Vec3& b, float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
+using test::expect_near;
+using test::OneShape;
+std::string error_of(const std::function<void()>& f) { return test::scene_error_of(f); }
 
 TEST(Sphere, AxialHitAtAnalyticDistance) {
   OneShape s(make_sphere({}));

@@ -7,6 +7,7 @@
 #include <functional>
 #include <random>
 
+#include "../support/one_shape.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -34,15 +35,7 @@ std::unique_ptr<Shape> make_mesh(const ParameterList& pl, const Transform& t = T
   return std::move(shapes.at(0));
 }
 
-struct OneShape {
-  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
-  const Shape* shape = nullptr;
-  explicit OneShape(std::unique_ptr<Shape> s) {
-    shape = s.get();
-    scene->add_primitive(Primitive{std::move(s), nullptr, nullptr});
-    scene->commit();
-  }
-};
+using test::OneShape;
 
 std::string error_of(const std::function<void()>& f) {
   try {

@@ -3,6 +3,7 @@
 // RGB corners read as reflectances.
 #include <gtest/gtest.h>
 
+#include "../support/params.h"
 #include "../support/spectral.h"
 
 #include "core/transform.h"
@@ -12,13 +13,7 @@
 namespace eyetrace {
 namespace {
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 TextureEvalContext at(float u, float v) {
   TextureEvalContext c;

@@ -2,6 +2,7 @@
 // parameters, the solid (3D) checker and the closed-form filtered average.
 #include <gtest/gtest.h>
 
+#include "../support/params.h"
 #include "../support/spectral.h"
 
 #include "core/transform.h"
@@ -11,13 +12,7 @@
 namespace eyetrace {
 namespace {
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 TextureEvalContext at_uv(float u, float v, float footprint = 0.f) {
   TextureEvalContext c;

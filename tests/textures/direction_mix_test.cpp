@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "../support/params.h"
 #include "../support/spectral.h"
 #include "core/error.h"
 #include "core/transform.h"
@@ -14,13 +15,7 @@
 namespace eyetrace {
 namespace {
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 TextureEvalContext facing(Vec3 n) {
   TextureEvalContext c;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include "../support/params.h"
 #include "../support/spectral.h"
 
 #include <OpenImageIO/imageio.h>
@@ -30,13 +31,7 @@ Param str(const std::string& name, const std::string& v) {
   return p;
 }
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 // IEC 61966-2-1 decoding, written independently of the code under test.
 double srgb_decode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }

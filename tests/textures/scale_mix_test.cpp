@@ -2,6 +2,7 @@
 // named textures.
 #include <gtest/gtest.h>
 
+#include "../support/params.h"
 #include "../support/spectral.h"
 
 #include "core/transform.h"
@@ -14,13 +15,7 @@
 namespace eyetrace {
 namespace {
 
-Param number(const std::string& type, const std::string& name, std::vector<double> v) {
-  Param p;
-  p.type = type;
-  p.name = name;
-  p.numbers = std::move(v);
-  return p;
-}
+constexpr auto number = test::number_param;
 
 Param texture_ref(const std::string& name, const std::string& tex) {
   Param p;
