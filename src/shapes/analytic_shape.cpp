@@ -81,7 +81,18 @@ double AnalyticShape::plane_area_scale() const {
 }
 
 std::optional<double> AnalyticShape::hit(const Vec3& o, const Vec3& d, double tmin, double tmax) const {
-  return hit_object(to_object(o, d), tmin, tmax);
+  const DRay r = to_object(o, d);
+  // A cut-out crossing is skipped and the next one looked for beyond it: a quadric has at most
+  // two, so the loop's bound is only a guard.
+  for (int crossing = 0; crossing < 4; ++crossing) {
+    const std::optional<double> t = hit_object(r, tmin, tmax);
+    if (!t || alpha_.opaque()) return t;
+    SurfaceInteraction si;
+    surface_at(r.o + *t * r.d, &si);
+    if (alpha_.passes(TextureEvalContext(si), o, d)) return t;
+    tmin = *t;
+  }
+  return std::nullopt;
 }
 
 unsigned AnalyticShape::attach(RTCDevice device, RTCScene scene) const {

@@ -8,6 +8,7 @@
 
 #include "core/shape.h"
 #include "core/transform.h"
+#include "shapes/shape_alpha.h"
 
 namespace eyetrace {
 
@@ -25,8 +26,10 @@ class AnalyticShape : public Shape {
   SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
 
   // Smallest t in (tmin, tmax) where the ray (given in the space the geometry lives in,
-  // `d` not necessarily unit) meets the surface; public for tests.
+  // `d` not necessarily unit) meets the surface, skipping crossings its alpha cuts out
+  // (shape_alpha.h); public for tests.
   std::optional<double> hit(const Vec3& o, const Vec3& d, double tmin, double tmax) const;
+  void set_alpha(const ShapeAlpha& alpha) { alpha_ = alpha; }
   // Whether the transform is a similarity (rotation, uniform scale, mirror, translation),
   // under which uniform area sampling in object space stays uniform in world space.
   bool is_similarity() const { return is_similarity_; }
@@ -86,6 +89,7 @@ class AnalyticShape : public Shape {
   // Exact area factor for the plane z = const (any affine transform).
   double plane_area_scale() const;
 
+  ShapeAlpha alpha_;
   glm::dmat4 world_from_object_, object_from_world_;
   glm::dmat3 normal_from_object_;  // inverse transpose of the linear part
   bool reverse_orientation_;

@@ -100,9 +100,9 @@ std::vector<std::unique_ptr<Shape>> create_cylinder_shapes(const ShapeContext& c
     std::swap(zmin, zmax);
   }
   if (!(zmax > zmin)) params.fail("zmax", fmt::format("the cylinder has no height: zmin = zmax = {}", zmin));
-  warn_alpha_unsupported(params, "cylinder");
   auto cylinder = std::make_unique<Cylinder>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax,
                                              params.get_float("phimax"));
+  cylinder->set_alpha(read_alpha(ctx, params));
   if (!cylinder->is_similarity())
     warn(params.loc(),
          "cylinder: the transform scales non-uniformly; area sampling (for area lights) treats it as if uniformly "

@@ -84,10 +84,10 @@ std::vector<std::unique_ptr<Shape>> create_disk_shapes(const ShapeContext& ctx) 
   float inner = params.get_float("innerradius");
   if (!(inner < radius)) params.fail("innerradius", fmt::format("must be in [0, radius = {}), got {}", radius, inner));
   float phimax = params.get_float("phimax");
-  warn_alpha_unsupported(params, "disk");
   std::vector<std::unique_ptr<Shape>> shapes;
-  shapes.push_back(
-      std::make_unique<Disk>(ctx.world_from_object, ctx.reverse_orientation, height, radius, inner, phimax));
+  auto disk = std::make_unique<Disk>(ctx.world_from_object, ctx.reverse_orientation, height, radius, inner, phimax);
+  disk->set_alpha(read_alpha(ctx, params));
+  shapes.push_back(std::move(disk));
   return shapes;
 }
 

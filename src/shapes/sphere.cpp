@@ -108,8 +108,8 @@ std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx
   if (!(std::min(zmax, radius) > std::max(zmin, -radius)))
     params.fail("zmin", fmt::format("the cut [zmin, zmax] = [{}, {}] leaves nothing of a sphere of radius {}", zmin,
                                     zmax, radius));
-  warn_alpha_unsupported(params, "sphere");
   auto sphere = std::make_unique<Sphere>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax, phimax);
+  sphere->set_alpha(read_alpha(ctx, params));
   if (!sphere->is_similarity())
     warn(params.loc(),
          "sphere: the transform scales non-uniformly; area sampling (for area lights) treats the "

@@ -1,8 +1,5 @@
 #include "shapes/triangle_mesh.h"
 
-#include "samplers/hash.h"
-#include "scene/texture_store.h"
-
 #include <algorithm>
 
 #include "core/float_error.h"
@@ -27,34 +24,6 @@ Vec3 robust_normalize(const Vec3& v) {
 constexpr Vec2 kDefaultUV[3] = {Vec2(0.f, 0.f), Vec2(1.f, 0.f), Vec2(1.f, 1.f)};
 
 }  // namespace
-
-ParamSpec alpha_param() {
-  return param::float_texture("alpha", 1)
-      .describe(
-          "cutout: 0 no surface, 1 opaque, between: passes that fraction of rays (meshes only; the "
-          "quadrics warn and stay opaque)");
-}
-
-ShapeAlpha read_alpha(const ShapeContext& ctx, const PluginParams& params) {
-  ShapeAlpha alpha;
-  const Param* p = params.list().find("alpha");
-  if (!p) return alpha;
-  if (p->canonical_type() != "texture") {
-    alpha.constant = params.get_float("alpha");
-    return alpha;
-  }
-  if (!ctx.textures) params.fail("alpha", "a texture alpha needs the scene's textures (internal: none given)");
-  alpha.texture = ctx.textures->float_param(params, "alpha");
-  return alpha;
-}
-
-void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name) {
-  const Param* p = params.list().find("alpha");
-  if (!p) return;
-  if (p->canonical_type() != "texture" && params.get_float("alpha") == 1.f) return;  // opaque: nothing is lost
-  warn(p->loc,
-       fmt::format("{}: parameter \"alpha\": alpha cutouts are not supported; the shape is opaque", shape_name));
-}
 
 TriangleMesh::TriangleMesh(MeshData mesh, const Transform& world_from_object, bool reverse_orientation,
                            const MeshSource& source)
@@ -170,12 +139,7 @@ bool TriangleMesh::alpha_passes(unsigned tri, float b1, float b2, const Vec3& o,
   ctx.p = o + t * d;
   ctx.uv = b0 * c.uv[0] + b1 * c.uv[1] + b2 * c.uv[2];
   ctx.n = face_normal_[tri];
-  const float a = alpha_.at(ctx);
-  if (a >= 1.f) return true;
-  if (!(a > 0.f)) return false;  // 0, negative or NaN: no surface
-  // pbrt-v4's HashFloat(o, d): uniform in [0, 1), the same for the same ray.
-  const uint64_t h = hash_values(o.x, o.y, o.z, d.x, d.y, d.z);
-  return float(h >> 40) * 0x1p-24f <= a;
+  return alpha_.passes(ctx, o, d);
 }
 
 // Embree calls this for every candidate hit of a mesh with alpha (one ray at a time here:

@@ -11,6 +11,7 @@
 #include "core/texture.h"
 #include "core/transform.h"
 #include "scene/registry.h"
+#include "shapes/shape_alpha.h"
 
 namespace eyetrace {
 
@@ -32,14 +33,6 @@ struct MeshSource {
   std::string context;  // prefix for messages, e.g. "file \"bunny.ply\": "
 };
 
-// A shape's alpha: a named texture, or a constant (1: opaque).
-struct ShapeAlpha {
-  const FloatTexture* texture = nullptr;
-  float constant = 1.f;
-  bool opaque() const { return !texture && constant >= 1.f; }
-  float at(const TextureEvalContext& ctx) const { return texture ? texture->evaluate(ctx) : constant; }
-};
-
 class TriangleMesh : public Shape {
  public:
   // Validates `mesh` (indices in range and a multiple of 3, per-vertex arrays as long as
@@ -57,11 +50,8 @@ class TriangleMesh : public Shape {
   size_t vertex_count() const { return vertex_count_; }
   int dropped_triangles() const { return dropped_; }
 
-  // Alpha cutouts ("alpha", pbrt-v4's): where the texture is 0 the surface is not there; where
-  // it is below 1, a ray passes with probability 1 - alpha, decided by a hash of the ray's
-  // origin and direction (pbrt-v4's HashFloat), the same decision every time that ray is
-  // traced. An Embree filter function applies it to intersections and shadow rays alike.
-  // Opaque (the default): no filter is installed.
+  // Alpha cutouts (shape_alpha.h): an Embree filter function applies them to intersections and
+  // shadow rays alike; for an opaque mesh (the default) none is installed.
   void set_alpha(const ShapeAlpha& alpha) { alpha_ = alpha; }
   // Whether a ray (o, d) hitting triangle `tri` at Embree's barycentrics (b1, b2), distance t,
   // meets the surface there; public for tests.
@@ -105,15 +95,6 @@ class TriangleMesh : public Shape {
 // "normal N", "point2 uv", "vector3 S" (ignored with a warning), "integer faceIndices".
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx);
 
-// "alpha", which every shape takes (a float or a float texture, default 1). Triangle meshes
-// (trianglemesh, plymesh, bilinearmesh) cut out by it (read_alpha); the quadrics do not yet, so
-// anything but 1 there warns (warn_alpha_unsupported).
-ParamSpec alpha_param();
-// "alpha" read: a constant, or a named texture (from the scene's store). (An area light on a
-// cut-out mesh still emits from the whole surface, where pbrt-v4 masks it: the scene builder
-// warns.)
-ShapeAlpha read_alpha(const ShapeContext& ctx, const PluginParams& params);
-void warn_alpha_unsupported(const PluginParams& params, const std::string& shape_name);
 const PluginSpec& trianglemesh_shape_spec();
 
 }  // namespace eyetrace

@@ -1,7 +1,8 @@
-// Alpha cutouts on triangle meshes (pbrt-v4's "alpha"): through the renderer, a quad in front of
-// an emitter hides it with alpha 1, is not there with alpha 0, passes a fraction 1 - alpha of the
-// camera rays in between (a binomial mean, 4 sigma), follows a texture's pattern exactly, and
-// casts no shadow where it is cut out; a ray's decision is the same each time it is traced.
+// Alpha cutouts (pbrt-v4's "alpha", shapes/shape_alpha.h): through the renderer, a quad in front
+// of an emitter hides it with alpha 1, is not there with alpha 0, passes a fraction 1 - alpha of
+// the camera rays in between (a binomial mean, 4 sigma), follows a texture's pattern exactly,
+// and casts no shadow where it is cut out; the quadrics likewise (a sphere, whose two crossings
+// a ray passes or not together, since one hash decides both; a disk and a cylinder cut out).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -85,6 +86,28 @@ TEST(AlphaCutout, ACutOutOccluderCastsNoShadow) {
   EXPECT_NEAR(mean(render(scene(R"("float alpha" 0)"))), lit, 1e-3 * lit + 1e-5);
   EXPECT_NEAR(mean(render(scene(R"("float alpha" 1)"))), 0.0, 1e-6);
   EXPECT_NEAR(mean(render(scene(""))), 0.0, 1e-6);
+}
+
+// The quad of pane() replaced by another shape with the given alpha.
+std::string shape_before_emitter(const std::string& shape, int spp = 16) {
+  std::string text = pane("", spp);
+  const size_t at = text.rfind("Shape \"trianglemesh\"");
+  return text.substr(0, at) + shape + "\n";
+}
+
+TEST(AlphaCutout, QuadricsCutOutToo) {
+  const int n = 16 * 16 * 64;
+  for (const char* shape : {R"(Shape "sphere" "float radius" 2)", R"(Shape "disk" "float radius" 2)",
+                            R"(Translate 0 0 -0.5 Rotate 90 1 0 0 Shape "cylinder" "float radius" 3 "float zmin" -3
+                               "float zmax" 3)"}) {
+    const std::string s = shape;
+    // Opaque (black) in front of the emitter, then cut out entirely, then 30 %: the emitter's
+    // 1 seen through 70 % of the rays (4 sigma).
+    EXPECT_NEAR(mean(render(shape_before_emitter(s, 4))), 0.0, 1e-6) << s;
+    EXPECT_NEAR(mean(render(shape_before_emitter(s + R"( "float alpha" 0)", 4))), 1.0, 1e-3) << s;
+    EXPECT_NEAR(mean(render(shape_before_emitter(s + R"( "float alpha" 0.3)", 64))), 0.7, 4 * std::sqrt(0.7 * 0.3 / n))
+        << s;
+  }
 }
 
 }  // namespace
