@@ -18,7 +18,7 @@
 // sends beyond the coat's critical angle stays inside and is lost, and light the coat's
 // underside reflects back down is not followed (pbrt-v4's walk follows both: against pbrt-v4 a
 // rough coat on rough copper has the same luminance within 0.3 % but is less saturated, most at
-// the silhouette; tests/render/pbrt_v4_reference_test.cpp); the rough coat over a smooth metal
+// the silhouette; tests/render/pbrt_v4_reference_slowtest.cpp); the rough coat over a smooth metal
 // refracts at the macro surface. Two-sided, as pbrt-v4's.
 #pragma once
 #include <optional>
