@@ -1,23 +1,14 @@
 #include "materials/mix_material.h"
 
-#include <bit>
 #include <cstdint>
 
 #include "core/fnv1a.h"
+#include "samplers/hash.h"
 #include "scene/texture_store.h"
 
 namespace eyetrace {
 
 namespace {
-
-// SplitMix64's finaliser: every input bit changes about half of the output bits.
-uint64_t mix64(uint64_t x) {
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ull;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
 
 class MixMaterial final : public Material {
  public:
@@ -46,9 +37,7 @@ class MixMaterial final : public Material {
 }  // namespace
 
 float mix_material_hash(const Vec3& p, const Vec3& wo, uint64_t seed) {
-  uint64_t h = mix64(seed);
-  for (float v : {p.x, p.y, p.z, wo.x, wo.y, wo.z}) h = mix64(h ^ std::bit_cast<uint32_t>(v));
-  return float(h >> 40) * 0x1p-24f;  // 24 bits: every value exact in a float, below 1
+  return hash_float(p.x, p.y, p.z, wo.x, wo.y, wo.z, seed);
 }
 
 const PluginSpec& mix_material_spec() {

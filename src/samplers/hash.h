@@ -57,6 +57,13 @@ uint64_t hash_values(Args... args) {
   return murmur_hash64a(buf, size, 0);
 }
 
+// A hash of the values as a float uniform in [0, 1) (24 bits: every value exact in a float and
+// below 1): pbrt-v4's HashFloat, for the decisions a renderer makes per ray or per point.
+template <typename... Args>
+float hash_float(Args... args) {
+  return float(hash_values(args...) >> 40) * 0x1p-24f;
+}
+
 // The i-th element of a pseudo-random permutation of [0, n) chosen by `seed`, without
 // storing the permutation (Kensler 2013, "Correlated Multi-Jittered Sampling"): a bijective
 // hash on the next power of two, cycle-walked until it lands below n.

@@ -11,8 +11,7 @@ bool ShapeAlpha::passes(const TextureEvalContext& ctx, const Vec3& o, const Vec3
   if (a >= 1.f) return true;
   if (!(a > 0.f)) return false;  // 0, negative or NaN: no surface
   // pbrt-v4's HashFloat(o, d): uniform in [0, 1), the same for the same ray.
-  const uint64_t h = hash_values(o.x, o.y, o.z, d.x, d.y, d.z);
-  return float(h >> 40) * 0x1p-24f <= a;
+  return hash_float(o.x, o.y, o.z, d.x, d.y, d.z) <= a;
 }
 
 ParamSpec alpha_param() {

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "../support/each_isa.h"
 #include "../support/reverse_trace_stress.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
@@ -281,18 +282,7 @@ TEST(PlacedSurface, GeneralBatchAndWavelengthTracesEqualSingleRaysBitForBit) {
   }
 }
 
-// The instruction sets the batch trace can run on here (the baseline always, AVX2 where the CPU
-// has it); the start-up choice is restored on leaving.
-struct EachIsa {
-  TraceBatchIsa start = trace_batch_isa();
-  std::vector<TraceBatchIsa> isas;
-  EachIsa() {
-    for (TraceBatchIsa isa : {TraceBatchIsa::Baseline, TraceBatchIsa::Avx2})
-      if (set_trace_batch_isa(isa)) isas.push_back(isa);
-    set_trace_batch_isa(start);
-  }
-  ~EachIsa() { set_trace_batch_isa(start); }
-};
+using eyetrace::test::EachIsa;
 
 // Every lane of trace_range_batch against trace_range for the same ray (and wavelength).
 void expect_batch_bits(const CompiledSystem& sys, const std::vector<Ray>& rays, const std::vector<double>* lambda,

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "../support/each_isa.h"
 #include "optics/eye_models.h"
 #include "optics/navarro.h"
 #include "optics/optics_error.h"
@@ -126,18 +127,7 @@ TEST(SequentialTrace, SubRangeStopsAtTheStopPlane) {
   EXPECT_LT(glm::length(rest.ray.direction - full.ray.direction), 1e-12);
 }
 
-// The instruction sets the batch trace can run on here (the baseline always; AVX2 where the CPU
-// has it). Restores the start-up choice when it goes out of scope.
-struct EachIsa {
-  TraceBatchIsa start = trace_batch_isa();
-  std::vector<TraceBatchIsa> isas;
-  EachIsa() {
-    for (TraceBatchIsa isa : {TraceBatchIsa::Baseline, TraceBatchIsa::Avx2})
-      if (set_trace_batch_isa(isa)) isas.push_back(isa);
-    set_trace_batch_isa(start);
-  }
-  ~EachIsa() { set_trace_batch_isa(start); }
-};
+using eyetrace::test::EachIsa;
 
 void expect_same_bits(const TraceResult& one, const TraceResult& batch, const std::string& what) {
   ASSERT_EQ(one.status, batch.status) << what;
