@@ -8,17 +8,7 @@
 
 namespace eyetrace {
 
-namespace {
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-}  // namespace
-
 MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
-  if (ends_with(path, ".gz"))
-    params.fail("filename", fmt::format("\"{}\": compressed PLY is not supported, gunzip it", path));
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     params.fail_missing_file("filename", fmt::format("cannot open \"{}\": no such file", path));
@@ -36,17 +26,17 @@ MeshData read_ply_mesh(const std::string& path, const ParameterList& params) {
 }
 
 const PluginSpec& plymesh_shape_spec() {
-  static const PluginSpec spec{
-      "Shape",
-      "a triangle mesh read from a PLY file",
-      "No `.ply.gz` (an error: gunzip it), no displacement.",
-      {param::string("filename")
-           .shown_default("required")
-           .describe("ascii or binary PLY; vertex x y z, optional nx ny nz and u v (or s t); polygons are split into "
-                     "triangles"),
-       param::float_texture("displacement").describe("warns and is ignored"),
-       param::real("displacement.edgelength").describe("warns and is ignored"),
-       param::real("edgelength").describe("warns and is ignored"), alpha_param()}};
+  static const PluginSpec spec{"Shape",
+                               "a triangle mesh read from a PLY file",
+                               "A gzip-compressed file (`.ply.gz`) is inflated first. No displacement.",
+                               {param::string("filename")
+                                    .shown_default("required")
+                                    .describe("ascii or binary PLY, possibly gzip-compressed; vertex x y z, optional "
+                                              "nx ny nz and u v (or s t); polygons are split into "
+                                              "triangles"),
+                                param::float_texture("displacement").describe("warns and is ignored"),
+                                param::real("displacement.edgelength").describe("warns and is ignored"),
+                                param::real("edgelength").describe("warns and is ignored"), alpha_param()}};
   return spec;
 }
 

@@ -11,8 +11,11 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include <fmt/format.h>
+
+#include "core/gzip.h"
 
 namespace eyetrace {
 
@@ -301,6 +304,13 @@ MeshData read_ply_file(const std::string& path) {
   if (!in) throw PlyError("cannot open it");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw PlyError("read error");
+  // pbrt-v4 scenes ship large meshes as .ply.gz; the magic bytes decide, not the name.
+  if (is_gzip(bytes)) {
+    std::string error;
+    std::optional<std::string> inflated = gunzip(bytes, &error);
+    if (!inflated) throw PlyError("gzip-compressed file: " + error);
+    return parse_ply(*inflated);
+  }
   return parse_ply(bytes);
 }
 

@@ -19,7 +19,7 @@ class PlyError : public std::runtime_error {
 };
 
 // Vertex indices are returned as written (3 per triangle); the mesh's own validation checks
-// them against the vertex count.
+// them against the vertex count. A gzip-compressed file (pbrt-v4's .ply.gz) is inflated first.
 MeshData read_ply_file(const std::string& path);
 
 // The same for a file's contents already in memory.

@@ -3,10 +3,10 @@
 // and gzip-compressed files inflated, with a clear error naming the file when the stream is
 // truncated or corrupt. Compressed files are written by zlib's own gzip writer.
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <fstream>
 
+#include "../support/gzip_file.h"
 #include "../support/temp_files.h"
 #include "scene/parser.h"
 
@@ -20,10 +20,7 @@ void write(const TempDir& dir, const std::string& name, const std::string& text)
 }
 
 void write_gz(const TempDir& dir, const std::string& name, const std::string& text) {
-  gzFile f = gzopen(dir.file(name).c_str(), "wb");
-  ASSERT_NE(f, nullptr);
-  ASSERT_EQ(gzwrite(f, text.data(), unsigned(text.size())), int(text.size()));
-  ASSERT_EQ(gzclose(f), Z_OK);
+  test::write_gzip_file(dir.file(name), text);
 }
 
 std::string error_of(const std::string& path) {
