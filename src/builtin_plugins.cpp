@@ -7,6 +7,7 @@
 #include "filters/mitchell_filter.h"
 #include "filters/triangle_filter.h"
 #include "integrators/path_integrator.h"
+#include "integrators/path_stand_ins.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
 #include "lights/infinite_light.h"
@@ -117,6 +118,8 @@ void register_builtin_plugins(Registry& r) {
   r.integrators.add("path", create_path_integrator, path_integrator_spec());
   r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());
   r.integrators.add("direct", create_direct_integrator, direct_integrator_spec());
+  r.integrators.add("bdpt", create_bdpt_integrator, bdpt_integrator_spec());
+  r.integrators.add("sppm", create_sppm_integrator, sppm_integrator_spec());
 
   r.built_in.push_back({"film", "rgb", &film_spec()});
   r.built_in.push_back({"film", "spectral", &spectral_film_spec()});
