@@ -8,6 +8,7 @@
 
 #include "core/interaction.h"
 #include "core/ray.h"
+#include "core/texture.h"
 
 namespace eyetrace {
 
@@ -31,6 +32,13 @@ class Shape {
   virtual ShapeSample sample_area(Vec2 u) const = 0;
   virtual Bounds3 bounds() const = 0;
   virtual size_t primitive_count() const { return 1; }
+  // Alpha cut-outs seen by an area light on the shape (pbrt-v4's AlphaMasked): whether the
+  // point `ctx` describes is cut away, so that it does not emit. Alpha between 0 and 1 masks a
+  // fraction 1 - alpha of points, chosen by a hash of the point.
+  virtual bool alpha_masked(const TextureEvalContext& ctx) const { return false; }
+  // A constant alpha of 0: no ray ever meets the shape, yet pbrt-v4 lets an area light on it
+  // emit everywhere, reached by light sampling only (its "invisible emitters").
+  virtual bool invisible() const { return false; }
 };
 
 }  // namespace eyetrace

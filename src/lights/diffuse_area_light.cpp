@@ -25,7 +25,8 @@ DiffuseAreaLight::DiffuseAreaLight(const Shape& shape, const Spectrum& L, float 
       two_sided_(two_sided),
       image_(std::move(image)),
       area_(shape.area()),
-      mean_(image_ ? channel_mean(mean_pixel(*image_)) : channel_mean(L)) {}
+      mean_(image_ ? channel_mean(mean_pixel(*image_)) : channel_mean(L)),
+      invisible_(shape.invisible()) {}
 
 SampledSpectrum DiffuseAreaLight::emitted(const Vec3& n, Vec2 uv, const Vec3& w,
                                           const SampledWavelengths& lambda) const {
@@ -36,12 +37,20 @@ SampledSpectrum DiffuseAreaLight::emitted(const Vec3& n, Vec2 uv, const Vec3& w,
 
 SampledSpectrum DiffuseAreaLight::L(const SurfaceInteraction& hit, const Vec3& w,
                                     const SampledWavelengths& lambda) const {
+  if (shape_.alpha_masked(TextureEvalContext(hit))) return SampledSpectrum(0.f);
   return emitted(hit.n, hit.uv, w, lambda);
 }
 
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext& ctx, Vec2 u,
                                                          const SampledWavelengths& lambda) const {
   ShapeSample ss = shape_.sample_area(u);
+  if (!invisible_) {
+    TextureEvalContext tc;
+    tc.p = ss.p;
+    tc.n = ss.n;
+    tc.uv = ss.uv;
+    if (shape_.alpha_masked(tc)) return std::nullopt;
+  }
   Vec3 d = ss.p - ctx.p;
   float dist2 = glm::dot(d, d);
   if (!(dist2 > 0.f) || !(ss.pdf_area > 0.f)) return std::nullopt;

@@ -9,6 +9,11 @@
 // already flipped for ReverseOrientation (core/shape.h), so the context's
 // reverse_orientation flag is not applied a second time here.
 //
+// On a shape with alpha cut-outs the cut-away points emit nothing (Shape::alpha_masked, as
+// pbrt-v4). A shape of constant alpha 0 is an invisible emitter: no ray meets it, it emits
+// everywhere, and it is treated as a delta light so that light sampling, the only strategy
+// that reaches it, gets the whole MIS weight (pbrt-v4 makes it a DeltaPosition light).
+//
 // Sampling: uniform by area through Shape::sample_area, turned into a solid-angle density
 // pdf_area * dist^2 / |cos(theta_light)|. pdf_li() uses 1 / area(), which is the density
 // sample_area has when it is uniform over the shape (as every eyetrace shape's is).
@@ -33,7 +38,7 @@ class DiffuseAreaLight : public Light {
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
   SampledSpectrum L(const SurfaceInteraction& hit, const Vec3& w, const SampledWavelengths& lambda) const override;
-  bool is_delta() const override { return false; }
+  bool is_delta() const override { return invisible_; }
   float power() const override;
 
   bool two_sided() const { return two_sided_; }
@@ -48,7 +53,8 @@ class DiffuseAreaLight : public Light {
   bool two_sided_;
   std::optional<RGBImage> image_;
   float area_;
-  float mean_;  // mean of the emission (or image) as RGB, before scale: the light sampler's weight
+  float mean_;
+  bool invisible_;  // mean of the emission (or image) as RGB, before scale: the light sampler's weight
 };
 
 const PluginSpec& diffuse_area_light_spec();

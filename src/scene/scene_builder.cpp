@@ -276,11 +276,6 @@ class Builder {
           warn(s.loc, "area lights inside object instances are not supported (as in pbrt-v4); the shape does not emit");
         } else {
           const TransformedEntity& a = desc_.area_lights.at(s.area_light);
-          if (const Param* alpha = s.params.find("alpha");
-              alpha && (alpha->canonical_type() == "texture" || alpha->numbers.empty() || alpha->numbers[0] != 1.0))
-            warn(alpha->loc,
-                 "an area light on a shape with \"alpha\": the cut-out parts still emit (pbrt-v4 masks "
-                 "them)");
           AreaLightContext actx{a.params, *prim.shape, s.reverse_orientation, *setup_.textures, desc_.search_dir};
           auto light = reg_.area_lights.at(a.name, a.loc)(actx);
           prim.area_light = light.get();

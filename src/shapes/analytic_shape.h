@@ -22,6 +22,8 @@ class AnalyticShape : public Shape {
 
   unsigned attach(RTCDevice device, RTCScene scene) const override;
   Bounds3 bounds() const override;
+  bool alpha_masked(const TextureEvalContext& ctx) const override { return alpha_.masks(ctx); }
+  bool invisible() const override { return alpha_.invisible(); }
   // Recomputes the hit in object space from t (double precision) and fills it via surface_at.
   SurfaceInteraction interaction(const Ray& ray, float t, unsigned prim_id, Vec2 uv, Vec3 ng) const override;
 

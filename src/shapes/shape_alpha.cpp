@@ -14,6 +14,14 @@ bool ShapeAlpha::passes(const TextureEvalContext& ctx, const Vec3& o, const Vec3
   return hash_float(o.x, o.y, o.z, d.x, d.y, d.z) <= a;
 }
 
+bool ShapeAlpha::masks(const TextureEvalContext& ctx) const {
+  if (opaque()) return false;
+  const float a = texture ? texture->evaluate(ctx) : constant;
+  if (a >= 1.f) return false;
+  if (!(a > 0.f)) return true;
+  return hash_float(ctx.p.x, ctx.p.y, ctx.p.z) > a;
+}
+
 ParamSpec alpha_param() {
   return param::float_texture("alpha", 1)
       .describe("cutout: 0 no surface, 1 opaque, between: passes that fraction of rays");

@@ -46,6 +46,8 @@ class TriangleMesh : public Shape {
   ShapeSample sample_area(Vec2 u) const override;
   Bounds3 bounds() const override { return bounds_; }
   size_t primitive_count() const override { return indices_.size() / 3; }
+  bool alpha_masked(const TextureEvalContext& ctx) const override { return alpha_.masks(ctx); }
+  bool invisible() const override { return alpha_.invisible(); }
 
   size_t vertex_count() const { return vertex_count_; }
   int dropped_triangles() const { return dropped_; }

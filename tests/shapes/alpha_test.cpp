@@ -1,8 +1,9 @@
 // Alpha cutouts (pbrt-v4's "alpha", shapes/shape_alpha.h): through the renderer, a quad in front
 // of an emitter hides it with alpha 1, is not there with alpha 0, passes a fraction 1 - alpha of
 // the camera rays in between (a binomial mean, 4 sigma), follows a texture's pattern exactly,
-// and casts no shadow where it is cut out; the quadrics likewise (a sphere, whose two crossings
-// a ray passes or not together, since one hash decides both; a disk and a cylinder cut out).
+// and casts no shadow where it is cut out; an area light on a cut-out shape emits only where the
+// shape is, and one of constant alpha 0 is an invisible emitter that still lights; the quadrics likewise (a sphere,
+// whose two crossings a ray passes or not together, since one hash decides both; a disk and a cylinder cut out).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,6 +109,47 @@ TEST(AlphaCutout, QuadricsCutOutToo) {
     EXPECT_NEAR(mean(render(shape_before_emitter(s + R"( "float alpha" 0.3)", 64))), 0.7, 4 * std::sqrt(0.7 * 0.3 / n))
         << s;
   }
+}
+
+// A camera halfway between a diffuse floor (z = 0, albedo 1/2) and a 1 x 1 quad light facing it
+// at z = 1, looking straight down at the floor's centre through a narrow view; the light's
+// alpha is given. With a 2 x 2 checkerboard alpha, a quarter turn about the axis swaps the cut
+// and the kept squares and leaves the floor's centre where it is, so the centre receives
+// exactly half the irradiance of the whole light (the patch seen is +-0.02 wide, where the
+// change is second order: below 1e-3).
+std::string floor_under_light(const std::string& alpha) {
+  return fmt::format(R"(
+    LookAt 0 0 0.5  0 0 0  0 1 0
+    Camera "perspective" "float fov" 5
+    Film "rgb" "integer xresolution" 16 "integer yresolution" 16
+    Sampler "independent" "integer pixelsamples" 64
+    PixelFilter "box"
+    Integrator "path" "integer maxdepth" 1
+    WorldBegin
+    Texture "checks" "float" "checkerboard" "float uscale" 2 "float vscale" 2 "float tex1" 1 "float tex2" 0
+    Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+    Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-3 -3 0  3 -3 0  3 3 0  -3 3 0]
+    AttributeBegin
+      AreaLightSource "diffuse" "rgb L" [1 1 1]
+      Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-0.5 -0.5 1  -0.5 0.5 1  0.5 0.5 1  0.5 -0.5 1]
+        "point2 uv" [0 0  0 1  1 1  1 0] {}
+    AttributeEnd
+  )",
+                     alpha);
+}
+
+TEST(AlphaCutout, AreaLightsEmitOnlyWhereTheShapeIsAndInvisibleOnesStillLight) {
+  const double whole = mean(render(floor_under_light("")));
+  EXPECT_GT(whole, 0.05);
+  // Light sampling alone reaches the floor here (maxdepth 1, diffuse): 16384 samples, most
+  // within 30 % of the mean, so 2 % is several standard errors of the ratio.
+  EXPECT_NEAR(mean(render(floor_under_light(R"("texture alpha" "checks")"))) / whole, 0.5, 0.02);
+  // Constant alpha 0: no ray meets the light, which still lights the floor fully.
+  EXPECT_NEAR(mean(render(floor_under_light(R"("float alpha" 0)"))) / whole, 1.0, 0.02);
+  // ... and is not seen: looking up at it shows nothing.
+  std::string up = floor_under_light(R"("float alpha" 0)");
+  up.replace(up.find("LookAt 0 0 0.5  0 0 0"), 21, "LookAt 0 0 0.5  0 0 1");
+  EXPECT_EQ(mean(render(up)), 0.0);
 }
 
 }  // namespace
