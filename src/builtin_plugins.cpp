@@ -26,6 +26,7 @@
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/padded_sobol_sampler.h"
+#include "samplers/pmj02bn_sampler.h"
 #include "samplers/sobol_sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "samplers/zsobol_sampler.h"
@@ -65,6 +66,7 @@ void register_builtin_plugins(Registry& r) {
   r.samplers.add("sobol", create_sobol_sampler, sobol_sampler_spec());
   r.samplers.add("zsobol", create_zsobol_sampler, zsobol_sampler_spec());
   r.samplers.add("paddedsobol", create_paddedsobol_sampler, paddedsobol_sampler_spec());
+  r.samplers.add("pmj02bn", create_pmj02bn_sampler, pmj02bn_sampler_spec());
 
   r.filters.add("box", create_box_filter, box_filter_spec());
   r.filters.add("gaussian", create_gaussian_filter, gaussian_filter_spec());

@@ -12,6 +12,7 @@
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/padded_sobol_sampler.h"
+#include "samplers/pmj02bn_sampler.h"
 #include "samplers/sobol_sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "samplers/zsobol_sampler.h"
@@ -58,7 +59,8 @@ std::unique_ptr<Sampler> make(const Case& c, uint64_t seed = 7) {
 std::vector<Case> all_cases() {
   std::vector<Case> cases = {{"independent", create_independent_sampler, ""},
                              {"stratified_jittered", create_stratified_sampler, "", true},
-                             {"stratified_centred", create_stratified_sampler, "", false}};
+                             {"stratified_centred", create_stratified_sampler, "", false},
+                             {"pmj02bn", create_pmj02bn_sampler, ""}};
   for (const char* r : {"none", "permutedigits", "owen"})
     cases.push_back({std::string("halton_") + r, create_halton_sampler, r});
   for (const char* r : {"none", "permutedigits", "fastowen", "owen"}) {
