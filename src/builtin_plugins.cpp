@@ -35,6 +35,7 @@
 #include "shapes/bilinear_mesh.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
+#include "shapes/loop_subdiv_mesh.h"
 #include "shapes/ply_mesh.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
@@ -79,6 +80,7 @@ void register_builtin_plugins(Registry& r) {
   r.shapes.add("sphere", create_sphere_shapes, sphere_shape_spec());
   r.shapes.add("disk", create_disk_shapes, disk_shape_spec());
   r.shapes.add("cylinder", create_cylinder_shapes, cylinder_shape_spec());
+  r.shapes.add("loopsubdiv", create_loopsubdiv_shapes, loopsubdiv_shape_spec());
 
   r.materials.add("diffuse", create_diffuse_material, diffuse_material_spec());
   r.materials.add("coateddiffuse", create_coateddiffuse_material, coateddiffuse_material_spec());

@@ -29,11 +29,12 @@ TEST(CommandLine, SeveralSceneErrorsArePrintedAndNothingIsWritten) {
   fs::remove(out);
   const RunResult r = run_eyetrace("render -q " + scene.string() + " -o " + out.string());
   EXPECT_EQ(r.status, 1) << r.output;
-  EXPECT_EQ(r.output, scene.string() + ":3:1: error: unsupported shape \"spher\" (did you mean \"sphere\"?); " +
-                          "eyetrace supports: bilinearmesh, cylinder, disk, plymesh, sphere, trianglemesh\n" +
-                          scene.string() +
-                          ":2:1: error: unsupported light \"pointt\" (did you mean \"point\"?); eyetrace supports: "
-                          "distant, infinite, point, spot\n2 errors\n");
+  EXPECT_EQ(r.output,
+            scene.string() + ":3:1: error: unsupported shape \"spher\" (did you mean \"sphere\"?); " +
+                "eyetrace supports: bilinearmesh, cylinder, disk, loopsubdiv, plymesh, sphere, trianglemesh\n" +
+                scene.string() +
+                ":2:1: error: unsupported light \"pointt\" (did you mean \"point\"?); eyetrace supports: "
+                "distant, infinite, point, spot\n2 errors\n");
   EXPECT_FALSE(fs::exists(out));
   fs::remove(scene);
 }
