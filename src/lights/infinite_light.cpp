@@ -33,22 +33,39 @@ float scene_radius_of(const Bounds3& b) {
 std::optional<LightLiSample> UniformInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u,
                                                              const SampledWavelengths& lambda) const {
   if (mean_ == 0.f) return std::nullopt;
-  return make_sample(ctx, L_.sample(lambda), sample_uniform_sphere(u), uniform_sphere_pdf(), scene_radius_);
+  if (!portal_)
+    return make_sample(ctx, L_.sample(lambda), sample_uniform_sphere(u), uniform_sphere_pdf(), scene_radius_);
+  const auto s = portal_->sample(ctx.p, u);
+  if (!s) return std::nullopt;
+  // The density from the direction itself, as pdf_li computes it (MIS weights must agree).
+  const float pdf = portal_->pdf(ctx.p, s->first);
+  if (!(pdf > 0.f)) return std::nullopt;
+  return make_sample(ctx, L_.sample(lambda), s->first, pdf, scene_radius_);
 }
 
-float UniformInfiniteLight::pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const {
-  return mean_ == 0.f ? 0.f : uniform_sphere_pdf();
+float UniformInfiniteLight::pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction*) const {
+  if (mean_ == 0.f) return 0.f;
+  return portal_ ? portal_->pdf(ctx.p, wi) : uniform_sphere_pdf();  // wi: unit, as a ray direction
 }
 
-float UniformInfiniteLight::power() const { return 4.f * kPi * kPi * sqr(scene_radius_) * mean_; }
+SampledSpectrum UniformInfiniteLight::Le(const Ray& ray, const SampledWavelengths& lambda) const {
+  if (portal_ && !portal_->passes(ray.o, ray.d)) return SampledSpectrum(0.f);
+  return L_.sample(lambda);
+}
+
+float UniformInfiniteLight::power() const {
+  return portal_ ? kPi * portal_->area() * mean_ : 4.f * kPi * kPi * sqr(scene_radius_) * mean_;
+}
 
 void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
 
-ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale)
+ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale,
+                                       std::optional<Portal> portal)
     : map_(std::move(map)),
       world_from_light_(world_from_light),
       light_from_world_(world_from_light.inverse()),
-      scale_(scale) {}
+      scale_(scale),
+      portal_(std::move(portal)) {}
 
 Vec3 ImageInfiniteLight::to_light(const Vec3& w) const {
   Vec3 wl = light_from_world_.vector(w);
@@ -58,32 +75,51 @@ Vec3 ImageInfiniteLight::to_light(const Vec3& w) const {
 
 std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u,
                                                            const SampledWavelengths& lambda) const {
-  float map_pdf = 0.f;  // equals the pdf below unless wi rounds into another pixel
-  std::optional<Vec3> wl = map_.sample(u, &map_pdf);
-  if (!wl) return std::nullopt;
-  Vec3 wi = world_from_light_.vector(*wl);
-  float len = glm::length(wi);
-  if (!(len > 0.f)) return std::nullopt;
-  wi /= len;
+  // With a portal, the first half of u.x picks the map's own sampling, the second the portal's.
+  const bool by_portal = portal_ && u.x >= 0.5f;
+  if (portal_) u.x = by_portal ? 2.f * u.x - 1.f : 2.f * u.x;
+  Vec3 wi(0.f);
+  if (by_portal) {
+    const auto s = portal_->sample(ctx.p, u);
+    if (!s) return std::nullopt;
+    wi = s->first;
+  } else {
+    float map_pdf = 0.f;  // equals the density below unless wi rounds into another pixel
+    std::optional<Vec3> wl = map_.sample(u, &map_pdf);
+    if (!wl) return std::nullopt;
+    wi = world_from_light_.vector(*wl);
+    float len = glm::length(wi);
+    if (!(len > 0.f)) return std::nullopt;
+    wi /= len;
+  }
   // Density and radiance from wi itself, so that pdf_li(wi) and Le along wi agree with this
   // sample to the last bit (MIS weights depend on it).
-  Vec3 back = to_light(wi);
-  float pdf = map_.pdf(back);
-  SampledSpectrum L = scale_ * rgb_emission(map_.radiance(back), lambda);
-  if (!(pdf > 0.f) || is_black(L)) return std::nullopt;
+  const float pdf = density(ctx.p, wi);
+  if (!(pdf > 0.f)) return std::nullopt;  // also: a map sample that misses the portal
+  SampledSpectrum L = scale_ * rgb_emission(map_.radiance(to_light(wi)), lambda);
+  if (is_black(L)) return std::nullopt;
   return make_sample(ctx, L, wi, pdf, scene_radius_);
 }
 
-float ImageInfiniteLight::pdf_li(const LightSampleContext&, const Vec3& wi, const SurfaceInteraction*) const {
-  return map_.pdf(to_light(wi));
+float ImageInfiniteLight::density(const Vec3& p, const Vec3& wi) const {
+  const float map_pdf = map_.pdf(to_light(wi));
+  if (!portal_) return map_pdf;
+  const float portal_pdf = portal_->pdf(p, wi);  // 0 exactly where wi misses the portal
+  return portal_pdf > 0.f ? 0.5f * (map_pdf + portal_pdf) : 0.f;
+}
+
+float ImageInfiniteLight::pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction*) const {
+  return density(ctx.p, wi);  // wi: unit, as a ray direction
 }
 
 SampledSpectrum ImageInfiniteLight::Le(const Ray& ray, const SampledWavelengths& lambda) const {
+  if (portal_ && !portal_->passes(ray.o, ray.d)) return SampledSpectrum(0.f);
   return scale_ * rgb_emission(map_.radiance(to_light(ray.d)), lambda);
 }
 
 float ImageInfiniteLight::power() const {
-  return 4.f * kPi * kPi * sqr(scene_radius_) * scale_ * channel_mean(map_.mean_radiance());
+  const float area = portal_ ? kPi * portal_->area() : 4.f * kPi * kPi * sqr(scene_radius_);
+  return area * scale_ * channel_mean(map_.mean_radiance());
 }
 
 void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
@@ -118,13 +154,18 @@ const PluginSpec& infinite_light_spec() {
   static const PluginSpec spec{
       "LightSource",
       "light from every direction at infinity: uniform, or an environment image",
-      "Latitude-longitude images are accepted; portals are not supported (the whole sphere is sampled).",
+      "Latitude-longitude images are accepted. With a portal, the environment is looked up in its own map (pbrt-v4 "
+      "resamples it into the portal's parameterisation, nearest pixel) and sampled half by the map's luminance, "
+      "half uniformly over the portal's area (pbrt-v4: by luminance in the portal's parameterisation); a portal that "
+      "is not a rectangle is an error (pbrt-v4 reports it and goes on).",
       {emission_param_spec("L", "radiance (default 1 when there is no file)"), scale_param_spec(),
        photometric_param_spec("illuminance", "the illuminance it gives an upward-facing surface"),
        param::string("filename")
            .describe("environment image, square (pbrt-v4's equal-area octahedral map) or 2:1 (latitude-longitude); not "
                      "with `L`"),
-       param::point3s("portal").describe("warns and is ignored")}};
+       param::point3s("portal").describe(
+           "four world-space corners of a rectangle (a window) through which alone the environment is seen; its "
+           "normal, (corner 3 - corner 0) x (corner 1 - corner 0), points out of the scene")}};
   return spec;
 }
 
@@ -134,18 +175,22 @@ std::unique_ptr<Light> create_infinite_light(const LightContext& ctx) {
   float scale = scale_param(params);
   std::optional<float> E = photometric_param(params, "illuminance");
   const std::string filename = params.has("filename") ? params.get_string("filename") : "";
-  if (params.has("portal"))
-    params.warn_param("portal", "portals are not supported by eyetrace; the whole environment is sampled");
+  std::optional<Portal> portal;
+  if (params.has("portal")) {
+    std::string error;
+    portal = Portal::make(params.get_point3s("portal"), &error);
+    if (!portal) params.fail("portal", error);
+  }
 
   if (filename.empty()) {
     const Spectrum Lc = L ? *L : emission_param(params, "L");  // absent: the declared default
     scale *= photometric_factor(E, kPi * Lc.luminance());
-    return std::make_unique<UniformInfiniteLight>(Lc.scaled(scale));
+    return std::make_unique<UniformInfiniteLight>(Lc.scaled(scale), std::move(portal));
   }
   if (L) params.fail("filename", "an infinite light takes \"L\" or \"filename\", not both");
   EnvironmentMap map = read_environment_map(params, resolve_scene_file(ctx.search_dir, filename));
   scale *= photometric_factor(E, map.up_illuminance());
-  return std::make_unique<ImageInfiniteLight>(std::move(map), ctx.world_from_light, scale);
+  return std::make_unique<ImageInfiniteLight>(std::move(map), ctx.world_from_light, scale, std::move(portal));
 }
 
 }  // namespace eyetrace

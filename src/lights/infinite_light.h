@@ -7,9 +7,10 @@
 // Parameters: "scale" (1); "illuminance" rescales so that the luminous irradiance on a
 // patch facing the map's +z is the value given (pi L for a constant map; for image maps
 // pbrt-v4 weighs pixels by 2 pi / N instead of 4 pi / N and so renders them twice as bright
-// as asked, eyetrace integrates the map as it is); "portal" is not supported (a warning;
-// the whole map is sampled).
-// Sampling: constant maps uniformly over the sphere (as pbrt-v4); image maps by luminance.
+// as asked, eyetrace integrates the map as it is); "portal" (four world-space corners of a
+// rectangle, lights/portal.h): the environment is seen only through it.
+// Sampling: constant maps uniformly over the sphere (as pbrt-v4); image maps by luminance;
+// with a portal, constant maps by area on the portal, image maps half and half.
 #pragma once
 #include <memory>
 
@@ -17,33 +18,38 @@
 #include "core/transform.h"
 #include "lights/environment_map.h"
 #include "lights/light_params.h"
+#include "lights/portal.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 
 class UniformInfiniteLight : public Light {
  public:
-  explicit UniformInfiniteLight(const Spectrum& L) : L_(L), mean_(channel_mean(L)) {}
+  explicit UniformInfiniteLight(const Spectrum& L, std::optional<Portal> portal = std::nullopt)
+      : L_(L), mean_(channel_mean(L)), portal_(std::move(portal)) {}
 
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
-  SampledSpectrum Le(const Ray&, const SampledWavelengths& lambda) const override { return L_.sample(lambda); }
+  SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const override;
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
-  // Flux through the scene's bounding disc from the whole sphere: 4 pi^2 r^2 L.
+  // Flux through the scene's bounding disc from the whole sphere: 4 pi^2 r^2 L; through a
+  // portal, pi A L.
   float power() const override;
   void preprocess(const Bounds3& scene_bounds) override;
 
  private:
   Spectrum L_;
   float mean_;  // of L_ as RGB: the light sampler's weight
+  std::optional<Portal> portal_;
   float scene_radius_ = 0.f;
 };
 
 class ImageInfiniteLight : public Light {
  public:
-  ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale);
+  ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale,
+                     std::optional<Portal> portal = std::nullopt);
 
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
@@ -58,10 +64,13 @@ class ImageInfiniteLight : public Light {
 
  private:
   Vec3 to_light(const Vec3& w) const;
+  // The map's own luminance density of the world direction wi, mixed with the portal's.
+  float density(const Vec3& p, const Vec3& wi) const;
 
   EnvironmentMap map_;
   Transform world_from_light_, light_from_world_;
   float scale_;
+  std::optional<Portal> portal_;
   float scene_radius_ = 0.f;
 };
 

@@ -342,14 +342,85 @@ TEST(ImageInfiniteLight, WrongAspectAndDoubleEmissionAreErrors) {
   EXPECT_NE(both.find("not both"), std::string::npos) << both;
 }
 
-TEST(ImageInfiniteLight, PortalIsWarnedAboutAndIgnored) {
-  int before = warning_count();
-  set_warnings_enabled(false);
-  auto light = make_infinite({string_param("filename", write_equal_area_sky(8)),
-                              num_param("point3", "portal", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0})});
-  set_warnings_enabled(true);
-  EXPECT_EQ(warning_count(), before + 1);
-  EXPECT_TRUE(light->is_infinite());
+// A square window of side 2a at height h above the origin, its normal (+z) pointing out.
+Param square_portal(float a, float h) {
+  return num_param("point3", "portal", {-a, -a, h, -a, a, h, a, a, h, a, -a, h});
+}
+
+// Through a portal the sky is a square emitter of the sky's radiance: the irradiance on an
+// upward patch below its centre is pi L times the square's form factor (the same formula as
+// the square area light's), and the power sampling weighs the light by is pi A L.
+TEST(InfiniteLightPortal, UniformSkyThroughASquareWindowGivesTheFormFactorIrradiance) {
+  const float a = 0.8f, h = 1.3f, L = 2.f;
+  auto light = make_infinite({rgb_param("L", L, L, L), square_portal(a, h)});
+  Estimate e = irradiance_estimate(*light, Vec3(0, 0, 1), 200000, 3);
+  const double X = double(a) / h, root = std::sqrt(1.0 + X * X);
+  const double expected = kPi * L * 4.0 / (2.0 * kPi) * 2.0 * X / root * std::atan(X / root);
+  EXPECT_NEAR(e.mean, expected, 4.0 * e.std_error) << "stderr " << e.std_error;
+  EXPECT_NEAR(light->power(), kPi * 4.0 * a * a * L, 1e-4);
+}
+
+// An image sky through a window: the light's estimate (half map sampling, half portal area
+// sampling) against a deterministic quadrature over the window of L cos cos' / d^2.
+TEST(InfiniteLightPortal, ImageSkyThroughAWindowMatchesAQuadratureOverTheWindow) {
+  const float a = 0.6f, h = 0.9f;
+  auto light = make_infinite({string_param("filename", write_equal_area_sky(32)), square_portal(a, h)});
+  const int n = 120;
+  double quadrature = 0.0;
+  const double cell = double(2 * a) / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Vec3 q(-a + float((i + 0.5) * cell), -a + float((j + 0.5) * cell), h);
+      const double d2 = glm::dot(q, q), cos = h / std::sqrt(d2);
+      const Vec3 w = glm::normalize(q);
+      const float Lum = test::luminance_of(
+          [&](const SampledWavelengths& l) {
+            return light->Le(Ray{Vec3(0.f), w}, l);
+          },
+          16);
+      quadrature += Lum * cos * cos / d2 * cell * cell;
+    }
+  Estimate e = irradiance_estimate(*light, Vec3(0, 0, 1), 200000, 5);
+  EXPECT_NEAR(e.mean, quadrature, 4.0 * e.std_error + 2e-3 * quadrature) << "stderr " << e.std_error;
+}
+
+TEST(InfiniteLightPortal, SamplesAgreeWithPdfLiAndLeAndTheSkyIsSeenOnlyThroughThePortal) {
+  for (bool image : {false, true}) {
+    auto light = make_infinite({image ? string_param("filename", write_equal_area_sky(16)) : rgb_param("L", 1, 2, 3),
+                                square_portal(0.5f, 1.f)});
+    const LightSampleContext ctx{Vec3(0.f), Vec3(0, 0, 1)};
+    Uniform rng(31);
+    int through = 0;
+    for (int i = 0; i < 5000; ++i) {
+      auto s = light->sample_li(ctx, rng.next2(), test::wavelengths());
+      if (!s) continue;
+      ++through;
+      ASSERT_GT(s->pdf, 0.f);
+      ASSERT_FLOAT_EQ(light->pdf_li(ctx, s->wi, nullptr), s->pdf);
+      ASSERT_TRUE(test::same(light->Le(Ray{Vec3(0), s->wi}, test::wavelengths()), s->L, 0.f));
+      ASSERT_LT(std::max(std::abs(s->wi.x), std::abs(s->wi.y)) / s->wi.z, 0.5f + 1e-5f);  // through the window
+    }
+    EXPECT_GT(through, 2000) << image;
+    const auto lambda = test::wavelengths();
+    EXPECT_FALSE(is_black(light->Le(Ray{Vec3(0.f), Vec3(0, 0, 1)}, lambda))) << image;
+    EXPECT_TRUE(is_black(light->Le(Ray{Vec3(0.f), glm::normalize(Vec3(1, 0, 1))}, lambda))) << image;  // past its edge
+    EXPECT_TRUE(is_black(light->Le(Ray{Vec3(0.f, 0.f, 2.f), Vec3(0, 0, 1)}, lambda))) << image;        // from outside
+    EXPECT_EQ(light->pdf_li(ctx, glm::normalize(Vec3(1, 0, 1)), nullptr), 0.f) << image;
+  }
+}
+
+TEST(InfiniteLightPortal, APortalThatIsNotARectangleIsAnErrorNamingIt) {
+  for (const std::vector<double>& corners :
+       {std::vector<double>{0, 0, 1, 1, 0, 1, 1, 1, 1}, std::vector<double>{0, 0, 1, 0, 1, 1, 1, 1.5, 1, 1, 0, 1}}) {
+    std::string e;
+    try {
+      make_infinite({rgb_param("L", 1, 1, 1), num_param("point3", "portal", corners)});
+    } catch (const SceneError& err) {
+      e = err.what();
+    }
+    EXPECT_NE(e.find("\"portal\""), std::string::npos) << e;
+    EXPECT_NE(e.find("test.pbrt:3:7"), std::string::npos) << e;
+  }
 }
 
 }  // namespace
