@@ -62,7 +62,7 @@ class HairBxDF {
   float h_, gamma_o_, cos_gamma_o_, eta_;
   SampledSpectrum sigma_a_;
   std::array<float, kPMax + 1> v_;                    // longitudinal variances
-  float s_;                                           // azimuthal logistic scale
+  float s_, inv_logistic_mass_;                       // azimuthal logistic scale; 1 / its mass in [-pi, pi]
   std::array<float, kPMax + 1> sin_tilt_, cos_tilt_;  // each lobe's scale tilt
 };
 
