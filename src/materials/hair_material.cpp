@@ -73,7 +73,9 @@ const PluginSpec& hair_material_spec() {
   static const PluginSpec spec{
       "Material",
       "a hair fibre: Chiang et al. 2016's BSDF, the fibre along dpdu and h = 2v - 1 across it",
-      "Like pbrt-v4 (no bump or normal map). `color`, pbrt-v4's older name of `reflectance`, is accepted too.",
+      "M_p's ln I0 for arguments over 12 is its asymptotic series to 1/x^3, where pbrt-v4 halves the 1/(8x) term (up "
+      "to "
+      "0.5 % lower, docs/scene-format.md). As in pbrt-v4: no bump or normal map, and `color` is read as `reflectance`.",
       {param::spectrum_texture("sigma_a")
            .with_unit("1/radius")
            .describe("absorption coefficient inside the fibre (unbounded); overrides the others"),
