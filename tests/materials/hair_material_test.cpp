@@ -23,19 +23,19 @@ struct Mean {
 
 // A unit quad facing the camera, u along y and v along x, in a uniform white sky; line 8 holds
 // the material. Each pixel's value is the sky's radiance times the fibre's furnace albedo.
-Mean furnace(const std::string& material, int spp = 16) {
+Mean furnace(const std::string& material, int spp = 16, const std::string& textures = "") {
   const Image img = test::render_text(fmt::format(R"(LookAt 0 0 5  0 0 0  0 1 0
 Camera "perspective" "float fov" 8
 Film "rgb" "integer xresolution" 16 "integer yresolution" 16
 Sampler "independent" "integer pixelsamples" {}
 Integrator "path" "integer maxdepth" 5
-WorldBegin
+WorldBegin {}
 LightSource "infinite" "rgb L" [1 1 1]
 Material "hair" {}
 Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 -1 0  -1 1 0  1 1 0  1 -1 0]
   "point2 uv" [0 0  1 0  1 1  0 1]
 )",
-                                                  spp, material),
+                                                  spp, textures, material),
                                       "hair.pbrt");
   double sum = 0, sum2 = 0;
   for (size_t i = 0; i < img.pixels.size(); i += 3) {
@@ -71,6 +71,17 @@ TEST(HairMaterial, ColorIsReflectancesOlderName) {
   EXPECT_EQ(furnace(R"("rgb color" [0.6 0.4 0.2])").value, r);
   EXPECT_LT(r, 0.99);  // one fibre's albedo: the colour is what many fibres' scattering makes of it
   EXPECT_GT(furnace(R"("rgb reflectance" [0.9 0.9 0.9])").value, r);
+}
+
+// Every parameter may be a texture, as in pbrt-v4: constant textures render as the numbers.
+TEST(HairMaterial, ParametersMayBeTextures) {
+  const std::string textures = R"(Texture "e" "float" "constant" "float value" 0.8
+    Texture "b" "float" "constant" "float value" 0.45
+    Texture "s" "spectrum" "constant" "rgb value" [0.2 0.4 0.6])";
+  EXPECT_EQ(furnace(R"("texture eumelanin" "e" "texture beta_m" "b")", 16, textures).value,
+            furnace(R"("float eumelanin" 0.8 "float beta_m" 0.45)").value);
+  EXPECT_EQ(furnace(R"("texture sigma_a" "s" "texture eta" "b")", 16, textures).value,
+            furnace(R"("rgb sigma_a" [0.2 0.4 0.6] "float eta" 0.45)").value);
 }
 
 std::string error_of(const std::string& material) {
