@@ -12,7 +12,7 @@ namespace {
 
 // I0, the modified Bessel function of the first kind of order 0, by its power series
 // sum (x/2)^(2i) / (i!)^2, summed until a term no longer changes the float sum (used for
-// x <= 1/v <= 10 here: at most about 25 terms).
+// x <= 12 here: at most about 30 terms).
 float bessel_i0(float x) {
   static constexpr auto kInvSquares = [] {
     std::array<float, 40> t{};
@@ -59,16 +59,16 @@ float logistic(float x, float s) {
 }
 float logistic_cdf(float x, float s) { return 1.f / (1.f + std::exp(-x / s)); }
 
-// Its inverse CDF. u at either end of the range gives -s ln(inf) or -s ln(0): infinities,
-// which the clamp turns into -pi and pi.
+// The inverse CDF of the logistic restricted to [-pi, pi]. u at either end of the range gives -s ln(inf) or -s ln(0):
+// infinities, which the clamp turns into -pi and pi.
 float sample_trimmed_logistic(float u, float s) {
   const float lo = logistic_cdf(-kPi, s), hi = logistic_cdf(kPi, s);
   u = lo + u * (hi - lo);
   return std::clamp(-s * std::log(1.f / u - 1.f), -kPi, kPi);
 }
 
-// Where lobe p leaves the fibre, in azimuth relative to wo: each internal chord turns the ray
-// by pi - 2 gamma_t, the entry and exit refractions by gamma_t - gamma_o each.
+// Where lobe p leaves the fibre, in azimuth relative to wo: R is the mirror reflection,
+// -2 gamma_o, and each further chord through the section adds pi + 2 gamma_t.
 float exit_azimuth(int p, float gamma_o, float gamma_t) { return 2.f * p * gamma_t - 2.f * gamma_o + p * kPi; }
 
 // N_p: the logistic about the exit azimuth, restricted to [-pi, pi] (the difference taken
