@@ -19,6 +19,7 @@
 #include "materials/dielectric_material.h"
 #include "materials/diffuse_material.h"
 #include "materials/diffuse_transmission_material.h"
+#include "materials/hair_material.h"
 #include "materials/interface_material.h"
 #include "materials/mix_material.h"
 #include "materials/thin_dielectric_material.h"
@@ -91,6 +92,7 @@ void register_builtin_plugins(Registry& r) {
   r.materials.add("mix", create_mix_material, mix_material_spec());
   r.materials.add("diffusetransmission", create_diffusetransmission_material, diffusetransmission_material_spec());
   r.materials.add("thindielectric", create_thindielectric_material, thindielectric_material_spec());
+  r.materials.add("hair", create_hair_material, hair_material_spec());
 
   r.float_textures.add("constant", create_constant_float_texture, constant_texture_spec());
   r.float_textures.add("scale", create_scale_float_texture, scale_texture_spec());
