@@ -190,6 +190,8 @@ TEST(PbrtV4Reference, AreaLightsOnCutOutShapesAndAnInvisibleEmitter) { expect_ma
 // Loop subdivision: eyetrace's boundary limit mask (1/6, 2/3, 1/6) moves the open grid's boundary
 // vertices by a fraction of a percent of their spacing from pbrt-v4's (1/5, 3/5, 1/5): within the noise.
 TEST(PbrtV4Reference, LoopSubdivisionClosedAndWithABoundary) { expect_matches_pbrt_v4("loopsubdiv"); }
+// An image sky seen only through a window's portal (pbrt-v4 samples it in its own parameterisation).
+TEST(PbrtV4Reference, PortalOnAWindowOfAClosedRoom) { expect_matches_pbrt_v4("portal"); }
 // pbrt-v4's bidirectional path tracer against eyetrace's path tracer standing in for it.
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
 // pbrt-v4's pmj02bn tables are not in the oracle's source snapshot (PROVENANCE): eyetrace's
