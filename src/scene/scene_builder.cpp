@@ -17,7 +17,15 @@ struct FilmSettings {
   std::string filename = "pbrt.exr";
   float scale = 1.f;
   SpectralBuckets buckets;  // count 0: an RGB film
+  FilmResponse response;
 };
+
+// Every camera PixelSensor knows, comma separated.
+std::string camera_names() {
+  std::string names;
+  for (const std::string& n : PixelSensor::camera_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
 
 // The parameters every film takes (pbrt-v4's FilmBaseParameters, PixelSensor and RGB film).
 std::vector<ParamSpec> film_base_params() {
@@ -33,10 +41,16 @@ std::vector<ParamSpec> film_base_params() {
           .above(0)
           .describe("multiplies the image (pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it)"),
       param::boolean("savefp16", true).describe("ignored"),
-      param::real("maxcomponentvalue").describe("ignored, with a warning"),
+      param::real("maxcomponentvalue")
+          .above(0)
+          .describe("each sample's sensor RGB (× iso/100 × exposuretime) scaled so that its largest component is at "
+                    "most this (pbrt-v4's clamp; unset: no clamp)"),
       param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
-      param::string("sensor", "cie1931").describe("other values are ignored, with a warning"),
-      param::real("whitebalance", 0).describe("other values are ignored, with a warning"),
+      param::string("sensor", "cie1931").describe("cie1931 (XYZ) or a camera of pbrt-v4's: " + camera_names()),
+      param::real("whitebalance", 0)
+          .at_least(0)
+          .with_unit("K")
+          .describe("colour temperature to balance for (Bradford); 0: none for cie1931, 6500 for a camera"),
   };
 }
 
@@ -46,8 +60,8 @@ const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
       "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16` and `diagonal` are accepted and "
-      "ignored; `maxcomponentvalue`, a `sensor` other than `cie1931` and a `whitebalance` other than 0, which would "
-      "change the image in pbrt-v4, are ignored with a warning.",
+      "ignored. pbrt-v4 takes the exposure time from the camera's shutter interval; eyetrace from `exposuretime`. "
+      "The sensor's XYZ matrix is fitted over 380-780 nm of D-series illuminant (pbrt-v4: 300-830 nm).",
       film_base_params()};
   return spec;
 }
@@ -84,14 +98,22 @@ bool has_extension(const std::string& path, const std::string& ext) {
   return e == ext;
 }
 
-// What pbrt-v4's film would do to the image that eyetrace does not: said, so that
-// `eyetrace check` lists it.
-void warn_ignored_film_params(const PluginParams& p) {
-  if (p.has("maxcomponentvalue")) p.warn_param("maxcomponentvalue", "clamping sample values is not supported; ignored");
-  if (p.get_string("sensor") != "cie1931")
-    p.warn_param("sensor", fmt::format("sensor \"{}\" is not supported; the image is CIE 1931 XYZ to linear sRGB",
-                                       p.get_string("sensor")));
-  if (p.get_float("whitebalance") != 0.f) p.warn_param("whitebalance", "white balancing is not supported; ignored");
+// The pixel sensor and clamp (pbrt-v4's PixelSensor::Create and RGBFilm::Create): cie1931 is
+// white balanced only when given a temperature, a camera at 6500 K unless given one.
+FilmResponse read_film_response(const PluginParams& p) {
+  FilmResponse r;
+  r.imaging_ratio = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  if (p.has("maxcomponentvalue")) r.max_component = p.get_float("maxcomponentvalue");
+  const std::string name = p.get_string("sensor");
+  const double kelvin = p.get_float("whitebalance");
+  if (name == "cie1931") {
+    if (kelvin > 0.0) r.sensor = std::make_shared<PixelSensor>(PixelSensor::cie1931(kelvin));
+    return r;
+  }
+  std::optional<PixelSensor> camera = PixelSensor::camera(name, kelvin > 0.0 ? kelvin : 6500.0);
+  if (!camera) p.fail("sensor", fmt::format("unknown sensor \"{}\"; known: cie1931, {}", name, camera_names()));
+  r.sensor = std::make_shared<PixelSensor>(std::move(*camera));
+  return r;
 }
 
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
@@ -124,7 +146,7 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
-  warn_ignored_film_params(p);
+  f.response = read_film_response(p);
   f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");
@@ -428,7 +450,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   attempt([&] {
     const SceneEntity& pf = desc.filter;
     auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
-    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets);
+    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets, f.response);
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
   const SceneEntity& in = desc.integrator;
