@@ -39,6 +39,11 @@ Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter,
   bucket_sums_.assign(bounds.area() * 2 * size_t(buckets_.count), 0.0);
 }
 
+void Film::enable_gbuffer(const Transform& output_from_world) {
+  if (buckets_.spectral()) throw std::invalid_argument("Film: a spectral film cannot also be a gbuffer film");
+  gbuffer_ = std::make_unique<GBuffer>(bounds_.area(), output_from_world);
+}
+
 RGB Film::sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
   Vec3 s = response_.sensor ? response_.sensor->responses(L, lambda) : sampled_to_xyz(L, lambda);
   // pbrt-v4 clamps the sensor RGB after the imaging ratio; the film applies that ratio at the
@@ -160,10 +165,14 @@ Image Film::blank_image() const {
   Image img;
   img.width = bounds_.width();
   img.height = bounds_.height();
-  img.channels = 3 + buckets_.count;
+  img.channels = 3 + buckets_.count + (gbuffer_ ? GBuffer::kChannels : 0);
   if (buckets_.spectral()) {
     img.channel_names = {"R", "G", "B"};
     for (int b = 0; b < buckets_.count; ++b) img.channel_names.push_back(buckets_.channel_name(b));
+  }
+  if (gbuffer_) {
+    img.channel_names = {"R", "G", "B"};
+    for (const std::string& n : GBuffer::channel_names()) img.channel_names.push_back(n);
   }
   img.pixels.resize(size_t(img.width) * img.height * img.channels);
   return img;
@@ -182,6 +191,7 @@ void Film::pixel_channels(IVec2 pixel, float* out) const {
     const float s = bucket_value(pixel, b);
     out[3 + b] = std::isfinite(s) ? s : 0.f;
   }
+  if (gbuffer_) gbuffer_->channels(index(pixel), pixels_[index(pixel)].weight, scale_, out + 3);
 }
 
 std::map<std::string, std::string> Film::image_metadata() const {

@@ -40,6 +40,7 @@
 #include "core/filter.h"
 #include "core/math.h"
 #include "core/spectrum.h"
+#include "render/gbuffer.h"
 #include "render/image_io.h"
 #include "render/pixel_sensor.h"
 
@@ -96,6 +97,10 @@ class Film {
   const Filter& filter() const { return *filter_; }
   const SpectralBuckets& buckets() const { return buckets_; }
   const FilmResponse& response() const { return response_; }
+  // Makes this a gbuffer film (pbrt-v4's "gbuffer"; render/gbuffer.h): its image gets the
+  // auxiliary channels, positions and normals in output_from_world's space.
+  void enable_gbuffer(const Transform& output_from_world);
+  bool gbuffer() const { return gbuffer_ != nullptr; }
   // A sample's linear sRGB (before the film's scale): through the sensor, clamped.
   RGB sample_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
     if (!response_.sensor && !response_.clamps()) return sampled_to_rgb(L, lambda);
@@ -105,9 +110,14 @@ class Film {
   // Adds radiance L with filter weight w to `pixel` (absolute raster coordinates).
   // Returns false (and counts it) when w, or L at a wavelength with non-zero density, or any
   // colour or bucket term it gives, is not finite: nothing of such a sample is kept.
-  bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+  // `visible`: what the sample's camera ray saw, for a gbuffer film (null: nothing recorded).
+  bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w,
+                  const VisibleSurface* visible = nullptr) {
     if (buckets_.spectral()) return add_spectral_sample(pixel, L, lambda, w);
-    return add_sample(pixel, sample_rgb(L, lambda), w);
+    const RGB rgb = sample_rgb(L, lambda);
+    if (!add_sample(pixel, rgb, w)) return false;
+    if (gbuffer_ && visible) gbuffer_->add(index(pixel), *visible, lambda, rgb, w);
+    return true;
   }
   // An RGB sample: adds to R, G, B and the weight, nothing to the buckets (the renderer uses it
   // for zero radiance only: a lost camera ray).
@@ -131,11 +141,12 @@ class Film {
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;
-  // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, named.
+  // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, or
+  // (gbuffer film) the auxiliary channels, named.
   Image image() const;
   // image() in parts: the image's size and channels with every value 0; the values of the
   // pixels in `region` (absolute raster coordinates, inside bounds()) written into it; one
-  // pixel's 3 + buckets().count channels written to `out`.
+  // pixel's channels (3 + buckets().count, or 3 + GBuffer::kChannels) written to `out`.
   Image blank_image() const;
   void fill_image(const PixelBounds& region, Image& image) const;
   void pixel_channels(IVec2 pixel, float* out) const;
@@ -184,6 +195,7 @@ class Film {
   float scale_;
   SpectralBuckets buckets_;
   FilmResponse response_;
+  std::unique_ptr<GBuffer> gbuffer_;
   std::vector<Pixel> pixels_;
   std::vector<double> bucket_sums_;  // per pixel, in pixel order: buckets_.count sums, then as many splat sums
   std::atomic<uint64_t> nonfinite_{0};

@@ -12,6 +12,8 @@ namespace eyetrace {
 namespace {
 
 struct FilmSettings {
+  bool gbuffer = false;
+  bool gbuffer_world = false;  // positions and normals in world space (else camera space)
   IVec2 resolution{1280, 720};
   PixelBounds bounds;
   std::string filename = "pbrt.exr";
@@ -59,8 +61,8 @@ std::vector<ParamSpec> film_base_params() {
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
-      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16` and `diagonal` are accepted and "
-      "ignored. pbrt-v4 takes the exposure time from the camera's shutter interval; eyetrace from `exposuretime`. "
+      "`savefp16` and `diagonal` are accepted and ignored. pbrt-v4 takes the exposure time from the camera's shutter "
+      "interval; eyetrace from `exposuretime`. "
       "The sensor's XYZ matrix is fitted over 380-780 nm of D-series illuminant (pbrt-v4: 300-830 nm).",
       film_base_params()};
   return spec;
@@ -87,6 +89,20 @@ const PluginSpec& spectral_film_spec() {
                                    .with_unit("nm")
                                    .describe("long end of the last bucket; above lambdamin"),
                            }};
+  return spec;
+}
+
+const PluginSpec& gbuffer_film_spec() {
+  static const PluginSpec spec{
+      "Film",
+      "the `rgb` film's R, G, B plus pbrt-v4's auxiliary channels: Albedo, P, N, Ns, u, v, Variance, "
+      "RelativeVariance (src/render/gbuffer.h)",
+      "No `dzdx`, `dzdy` channels (they need ray differentials, which eyetrace does not trace). Variance is of the "
+      "output colour, pbrt-v4's of the sensor RGB. EXR only; always float32 (`savefp16` ignored). Cannot be "
+      "checkpointed, resumed or rendered over several MPI processes.",
+      film_base_params() + std::vector<ParamSpec>{param::string("coordinatesystem", "camera")
+                                                      .in({"camera", "world"})
+                                                      .describe("the space of P, N and Ns")}};
   return spec;
 }
 
@@ -119,10 +135,15 @@ FilmResponse read_film_response(const PluginParams& p) {
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
-  if (film.name == "gbuffer") warn(film.loc, "film \"gbuffer\" is rendered as an \"rgb\" film");
-  const bool spectral = film.name == "spectral";
-  const PluginParams p(film.params, spectral ? spectral_film_spec() : film_spec(), film.name);
+  const bool spectral = film.name == "spectral", gbuffer = film.name == "gbuffer";
+  const PluginParams p(film.params,
+                       spectral  ? spectral_film_spec()
+                       : gbuffer ? gbuffer_film_spec()
+                                 : film_spec(),
+                       film.name);
   FilmSettings f;
+  f.gbuffer = gbuffer;
+  if (gbuffer) f.gbuffer_world = p.get_string("coordinatesystem") == "world";
   f.resolution = IVec2(p.get_int("xresolution"), p.get_int("yresolution"));
   if (o.resolution) {  // --resolution: checked here, the scene's values by the table
     f.resolution = *o.resolution;
@@ -155,14 +176,16 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
     if (!(f.buckets.lambda_min < f.buckets.lambda_max))
       p.fail(p.has("lambdamax") ? "lambdamax" : "lambdamin",
              fmt::format("lambdamin {} nm must be below lambdamax {} nm", f.buckets.lambda_min, f.buckets.lambda_max));
-    // As pbrt-v4: the spectral film writes EXR only; the image that would be written is checked,
-    // the command line's if it replaces the scene's.
+  }
+  if (spectral || gbuffer) {
+    // As pbrt-v4: the spectral and gbuffer films write EXR only; the image that would be written
+    // is checked, the command line's if it replaces the scene's.
     if (!o.output.empty() && !has_extension(o.output, ".exr"))
       throw_parameter_error({}, "--output",
-                            fmt::format("\"{}\": the spectral film (Film \"spectral\" at {}) writes EXR only", o.output,
-                                        film.loc.to_string()));
+                            fmt::format("\"{}\": the {} film (Film \"{}\" at {}) writes EXR only", o.output, film.name,
+                                        film.name, film.loc.to_string()));
     if (o.output.empty() && !has_extension(f.filename, ".exr"))
-      p.fail("filename", fmt::format("\"{}\": the spectral film writes EXR only (use a .exr name)", f.filename));
+      p.fail("filename", fmt::format("\"{}\": the {} film writes EXR only (use a .exr name)", f.filename, film.name));
   }
   return f;
 }
@@ -380,9 +403,11 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
 }
 
 void check_memory(const FilmSettings& f, const RenderOverrides& o) {
-  // The film holds 4 doubles per pixel and the output image 3 floats, and a spectral film one
-  // double and one float more per bucket.
-  uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12 + 12 * uint64_t(f.buckets.count));
+  // The film holds 4 doubles per pixel and the output image 3 floats, a spectral film one
+  // double and one float more per bucket, a gbuffer film 24 doubles and 20 floats more.
+  uint64_t bytes =
+      uint64_t(f.bounds.area()) * (32 + 12 + 12 * uint64_t(f.buckets.count) +
+                                   (f.gbuffer ? 8 * GBuffer::kAccumulators + 4 * uint64_t(GBuffer::kChannels) : 0));
   if (o.max_memory_bytes && bytes > o.max_memory_bytes)
     throw_error(fmt::format("a {}x{} film needs about {:.1f} GiB, more than the limit of {:.1f} GiB (--max-memory)",
                             f.bounds.width(), f.bounds.height(), bytes / 1073741824.0,
@@ -451,6 +476,8 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     const SceneEntity& pf = desc.filter;
     auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
     setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets, f.response);
+    // pbrt-v4's "camera" space is the camera's own (its CameraTransform's RenderFromCamera, inverted).
+    if (f.gbuffer) setup.film->enable_gbuffer(f.gbuffer_world ? Transform() : desc.camera.world_from_camera.inverse());
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
   const SceneEntity& in = desc.integrator;

@@ -144,6 +144,24 @@ TEST(CheckCommand, BadFilmSensorWhiteBalanceAndClampAreErrors) {
   }
 }
 
+// The gbuffer film renders (its EXR has the auxiliary channels) but refuses a checkpoint or a
+// resume, whose render state would not hold its auxiliary sums.
+TEST(CheckCommand, GBufferFilmRendersAndRefusesCheckpoints) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "gb.pbrt",
+                                  "Film \"gbuffer\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+                                  "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+                                  "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+  EXPECT_EQ(run_eyetrace("check " + scene).status, 0);
+  const RunResult ok = run_eyetrace("render " + scene + " --quiet -o " + dir.file("gb.exr"));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  for (const char* option : {" --checkpoint 10", " --resume"}) {
+    const RunResult r = run_eyetrace("render " + scene + " --quiet -o " + dir.file("gb2.exr") + option);
+    EXPECT_EQ(r.status, 1) << option << ": " << r.output;
+    EXPECT_NE(r.output.find("the gbuffer film cannot be checkpointed"), std::string::npos) << r.output;
+  }
+}
+
 // A shape whose mesh is missing still has its material checked.
 TEST(CheckCommand, MaterialOfAShapeWithAMissingMeshIsChecked) {
   TempDir dir("eyetrace-check");

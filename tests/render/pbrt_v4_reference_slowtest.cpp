@@ -2,7 +2,7 @@
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
 // diffusetransmission, thindielectric, partial cylinders, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, a camera sensor with white balance and ISO,
-// maxcomponentvalue) is rendered here by eyetrace with two seeds and compared
+// maxcomponentvalue, the gbuffer film's channels) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
 // everything whose default could differ (box pixel filter, the independent sampler, the path
@@ -277,6 +277,58 @@ TEST(PbrtV4Reference, ATwoPercentChangeIsCaught) {
   const Comparison c = compare(images("bump"), 1.02);
   for (int ch = 0; ch < 3; ++ch) EXPECT_GT(std::abs(c.mean_a[ch] / c.mean_b[ch] - 1), 0.01) << ch;
   EXPECT_GT(c.rel_mse - c.expected_rel_mse, 4 * c.excess_stderr);
+}
+
+// The named channels of `im`, in that order (an empty name: a channel of zeros).
+Image select_channels(const Image& im, const std::vector<std::string>& names) {
+  std::map<std::string, int> at;
+  for (int c = 0; c < im.channels; ++c)
+    at[im.channel_names.empty() ? std::string(1, "RGB"[c]) : im.channel_names[c]] = c;
+  Image out;
+  out.width = im.width;
+  out.height = im.height;
+  out.channels = int(names.size());
+  out.channel_names = names;
+  out.pixels.assign(size_t(out.width) * out.height * out.channels, 0.f);
+  for (int c = 0; c < out.channels; ++c) {
+    EXPECT_TRUE(at.count(names[c])) << names[c];
+    if (!at.count(names[c])) continue;
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x < im.width; ++x) out.at(x, y, c) = im.at(x, y, at[names[c]]);
+  }
+  return out;
+}
+
+// The gbuffer film: R, G, B compared as every scene's, and the auxiliary channels pbrt-v4
+// writes and eyetrace too (all but dzdx, dzdy; Variance is of other quantities, render/gbuffer.h)
+// by their image means: within 1 % of the channel's mean magnitude. Positions, normals and
+// (u, v) vary only within a pixel, so their means carry almost no noise; the albedo is pbrt-v4's
+// 16-sample estimate in both, exact for diffuse surfaces, its colour a Monte Carlo estimate.
+TEST(PbrtV4Reference, GBufferFilmAuxiliaryChannels) {
+  const std::vector<std::string> aux = {"Albedo.R", "Albedo.G", "Albedo.B", "P.X",  "P.Y",  "P.Z", "N.X",
+                                        "N.Y",      "N.Z",      "Ns.X",     "Ns.Y", "Ns.Z", "u",   "v"};
+  const Image a = render_eyetrace("gbuffer", 1, false), b = read_image(kDataDir + "gbuffer-seed1.exr");
+  const Image rgb_a1 = select_channels(a, {"R", "G", "B"});
+  ImagePairs p{rgb_a1, select_channels(render_eyetrace("gbuffer", 2, false), {"R", "G", "B"}),
+               select_channels(b, {"R", "G", "B"}),
+               select_channels(read_image(kDataDir + "gbuffer-seed2.exr"), {"R", "G", "B"})};
+  const Comparison c = compare(p, 1.0);
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.mean_a[ch], c.mean_b[ch], 0.01 * c.mean_b[ch]) << ch;
+  EXPECT_LT(c.rel_mse - c.expected_rel_mse, 4 * c.excess_stderr);
+  const Image xa = select_channels(a, aux), xb = select_channels(b, aux);
+  for (int ch = 0; ch < int(aux.size()); ++ch) {
+    double ma = 0, mb = 0, mag = 0;
+    for (int y = 0; y < xa.height; ++y)
+      for (int x = 0; x < xa.width; ++x) {
+        ma += xa.at(x, y, ch);
+        mb += xb.at(x, y, ch);
+        mag += std::abs(xb.at(x, y, ch));
+      }
+    const double n = double(xa.width) * xa.height;
+    EXPECT_NEAR(ma / n, mb / n, 0.01 * mag / n) << aux[ch];
+    std::printf("gbuffer %-9s eyetrace %9.5f pbrt-v4 %9.5f (difference %.2e of the mean magnitude)\n", aux[ch].c_str(),
+                ma / n, mb / n, std::abs(ma - mb) / mag);
+  }
 }
 
 TEST(PbrtV4Reference, MaxComponentValueIsWhatMakesTheClampSceneMatch) {
