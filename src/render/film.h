@@ -32,6 +32,7 @@
 // (L / the integral of y-bar), is the maximum.
 #pragma once
 #include <atomic>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>

@@ -1,6 +1,7 @@
 #include "render/pixel_sensor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/named_spectra.h"
@@ -27,7 +28,7 @@ double output_white(double lambda_nm) { return white_illuminant(float(lambda_nm)
 
 // Solves A X = B in the least-squares sense for the 3x3 X (rows of A, B: the swatches), by the
 // normal equations as pbrt-v4's LinearLeastSquares, and returns the matrix M with b = M a for
-// each row (X transposed). Throws if A^T A is singular.
+// each row (X transposed).
 glm::dmat3 least_squares(const double a[kSwatchCount][3], const double b[kSwatchCount][3]) {
   glm::dmat3 ata(0.0), atb(0.0);  // [col][row]
   for (int i = 0; i < 3; ++i)
@@ -36,7 +37,8 @@ glm::dmat3 least_squares(const double a[kSwatchCount][3], const double b[kSwatch
         ata[j][i] += a[r][i] * a[r][j];
         atb[j][i] += a[r][i] * b[r][j];
       }
-  if (std::abs(glm::determinant(ata)) < 1e-300) throw std::runtime_error("sensor matrix fit: singular system");
+  // A singular system (no light to fit under) gives a NaN matrix, which finite() reports.
+  if (!(std::abs(glm::determinant(ata)) > 1e-300)) return glm::dmat3(std::nan(""));
   return glm::transpose(glm::inverse(ata) * atb);
 }
 
@@ -117,6 +119,13 @@ std::vector<std::string> PixelSensor::camera_names() {
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+bool PixelSensor::finite() const {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(xyz_from_responses_d_[j][i])) return false;
+  return true;
 }
 
 float PixelSensor::response(int c, float lambda_nm) const {

@@ -47,6 +47,11 @@ class PixelSensor {
   // The same matrix in double precision (row i, column j is m[j][i], glm's column-major order).
   const glm::dmat3& xyz_from_responses() const { return xyz_from_responses_d_; }
 
+  // Whether the matrix is finite: a white balance temperature so low (below about 25 K, where
+  // Planck's law underflows) that its illuminant has no power in the visible range leaves
+  // nothing to fit or adapt to.
+  bool finite() const;
+
   // Response c (0 r, 1 g, 2 b) at lambda; for cie1931, the colour-matching functions.
   float response(int c, float lambda_nm) const;
 

@@ -122,13 +122,17 @@ FilmResponse read_film_response(const PluginParams& p) {
   if (p.has("maxcomponentvalue")) r.max_component = p.get_float("maxcomponentvalue");
   const std::string name = p.get_string("sensor");
   const double kelvin = p.get_float("whitebalance");
+  std::optional<PixelSensor> sensor;
   if (name == "cie1931") {
-    if (kelvin > 0.0) r.sensor = std::make_shared<PixelSensor>(PixelSensor::cie1931(kelvin));
-    return r;
+    if (kelvin > 0.0) sensor = PixelSensor::cie1931(kelvin);
+  } else {
+    sensor = PixelSensor::camera(name, kelvin > 0.0 ? kelvin : 6500.0);
+    if (!sensor) p.fail("sensor", fmt::format("unknown sensor \"{}\"; known: cie1931, {}", name, camera_names()));
   }
-  std::optional<PixelSensor> camera = PixelSensor::camera(name, kelvin > 0.0 ? kelvin : 6500.0);
-  if (!camera) p.fail("sensor", fmt::format("unknown sensor \"{}\"; known: cie1931, {}", name, camera_names()));
-  r.sensor = std::make_shared<PixelSensor>(std::move(*camera));
+  if (sensor && !sensor->finite())
+    p.fail("whitebalance",
+           fmt::format("{} K: a light this cold has no power in the visible range to balance for", kelvin));
+  if (sensor) r.sensor = std::make_shared<PixelSensor>(std::move(*sensor));
   return r;
 }
 

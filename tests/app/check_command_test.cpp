@@ -133,6 +133,7 @@ TEST(CheckCommand, BadFilmSensorWhiteBalanceAndClampAreErrors) {
        ":1:12: error: parameter \"sensor\": unknown sensor \"nikon_d900\"; known: "
        "cie1931, canon_eos_100d,"},
       {"\"float whitebalance\" -10", ":1:12: error: parameter \"whitebalance\""},
+      {"\"float whitebalance\" 20", ":1:12: error: parameter \"whitebalance\": 20 K: a light this cold"},
       {"\"float maxcomponentvalue\" 0", ":1:12: error: parameter \"maxcomponentvalue\""},
   };
   for (const auto& c : cases) {

@@ -115,5 +115,16 @@ TEST(PixelSensor, WhiteBalanceKeepsTheLuminanceOfTheBalanceIlluminant) {
   }
 }
 
+// Below about 25 K Planck's law underflows in double precision at every visible wavelength
+// (h c / (lambda k T) > 709 at 830 nm): there is no light to balance for, and the sensor says so
+// (the scene builder then names the parameter) instead of producing a NaN matrix silently.
+TEST(PixelSensor, AColdWhiteBalanceWithNoVisibleLightIsReported) {
+  EXPECT_FALSE(PixelSensor::cie1931(20.0).finite());
+  EXPECT_FALSE(PixelSensor::camera("nikon_d810", 20.0)->finite());
+  EXPECT_TRUE(PixelSensor::cie1931(1000.0).finite());
+  EXPECT_TRUE(PixelSensor::camera("nikon_d810", 1000.0)->finite());
+  EXPECT_TRUE(PixelSensor::cie1931(0.0).finite());
+}
+
 }  // namespace
 }  // namespace eyetrace
