@@ -129,6 +129,7 @@ void register_builtin_plugins(Registry& r) {
 
   r.built_in.push_back({"film", "rgb", &film_spec()});
   r.built_in.push_back({"film", "spectral", &spectral_film_spec()});
+  r.built_in.push_back({"film", "gbuffer", &gbuffer_film_spec()});
 }
 
 std::vector<PluginListing> Registry::listing() const {

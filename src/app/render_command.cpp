@@ -273,6 +273,12 @@ std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   RenderSetup& setup = job->setup;
   job->output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(job->output);
+  // A gbuffer film's auxiliary sums are not part of the render state that checkpoints store and
+  // MPI ranks exchange (render/gbuffer.h): refused rather than written half.
+  if (setup.film->gbuffer() && (a.checkpoint >= 0 || a.resume || group.size() > 1))
+    throw_error(
+        "the gbuffer film cannot be checkpointed (--checkpoint), resumed (--resume) or rendered over several "
+        "processes (mpirun); render it in one process, or use the rgb film");
   job->irradiance = retinal_irradiance(setup);
   job->fingerprint = scene_fingerprint(job->desc, image_options(a, setup), setup.files_read);
   job->spp = setup.sampler->samples_per_pixel();

@@ -50,7 +50,7 @@ SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, cons
 }
 
 SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
-                                         ScratchBuffer& arena, RayTally& tally) const {
+                                         ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible) const {
   SampledSpectrum L(0.f), beta(1.f);
   Ray ray = camera_ray;
   bool specular_bounce = false;
@@ -83,6 +83,7 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
       ray = spawn_ray(si, ray.d);
       continue;
     }
+    if (visible && depth == 0) *visible = visible_surface(si, *bsdf);
     if (depth++ == max_depth_) break;
     if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy)))
       L += beta * sample_direct(si, *bsdf, lambda, sampler, tally);

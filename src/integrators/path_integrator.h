@@ -17,7 +17,7 @@ class PathIntegrator : public Integrator {
   // `rr_threshold` (pbrt-v3's and early pbrt-v4's "rrthreshold"; 1 is today's pbrt-v4).
   PathIntegrator(const Scene& scene, int max_depth, std::string name, float rr_threshold = 1.f);
   SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
-                           RayTally& tally) const override;
+                           RayTally& tally, VisibleSurface* visible = nullptr) const override;
   std::string to_string() const override;
 
  private:

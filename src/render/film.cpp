@@ -22,17 +22,51 @@ std::string SpectralBuckets::channel_name(int b) const {
   return "S0." + lambda;
 }
 
-Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale, SpectralBuckets buckets)
+Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale, SpectralBuckets buckets,
+           FilmResponse response)
     : resolution_(resolution),
       bounds_(bounds),
       filter_(std::move(filter)),
       scale_(scale),
       buckets_(buckets),
+      response_(std::move(response)),
       pixels_(bounds.area()) {
   if (buckets_.count < 0 || buckets_.count > SpectralBuckets::kMaxCount ||
       (buckets_.spectral() && !(buckets_.lambda_min < buckets_.lambda_max)))
     throw std::invalid_argument("Film: invalid spectral buckets");
+  if (!(response_.max_component > 0.f) || !(response_.imaging_ratio > 0.f) || !std::isfinite(response_.imaging_ratio))
+    throw std::invalid_argument("Film: the maximum component and the imaging ratio must be positive");
   bucket_sums_.assign(bounds.area() * 2 * size_t(buckets_.count), 0.0);
+}
+
+void Film::enable_gbuffer(const Transform& output_from_world) {
+  if (buckets_.spectral()) throw std::invalid_argument("Film: a spectral film cannot also be a gbuffer film");
+  gbuffer_ = std::make_unique<GBuffer>(bounds_.area(), output_from_world);
+}
+
+RGB Film::sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
+  Vec3 s = response_.sensor ? response_.sensor->responses(L, lambda) : sampled_to_xyz(L, lambda);
+  // pbrt-v4 clamps the sensor RGB after the imaging ratio; the film applies that ratio at the
+  // end, so the responses are compared with max / ratio. A NaN maximum compares false and an
+  // infinite one gives NaN: both are then rejected as non-finite by the caller.
+  const float m = max_component(s) * response_.imaging_ratio;
+  if (m > response_.max_component) s *= response_.max_component / m;
+  return xyz_to_linear_srgb(response_.sensor ? response_.sensor->xyz(s) : s);
+}
+
+SampledSpectrum Film::clamped_radiance(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
+  if (!response_.clamps()) return L;
+  // pbrt-v4's SpectralFilm compares L's largest value with the maximum in its own units, in
+  // which lights have a y-bar integral of 1; ours have a y-bar integral of cie_y_integral().
+  const SampledSpectrum pdf = lambda.pdf();
+  float m = 0.f;
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (pdf[i] != 0.f) m = std::max(m, L[i]);
+  const float limit = response_.max_component * cie_y_integral();
+  if (!(m > limit)) return L;
+  SampledSpectrum c = L;
+  for (int i = 0; i < kSpectrumSamples; ++i) c[i] *= limit / m;
+  return c;
 }
 
 // A sample's bucket terms, w L_i / (pdf_i N width) per counting wavelength (bucket -1: none);
@@ -56,11 +90,11 @@ bool Film::bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lamb
 }
 
 bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
-  const RGB rgb = sampled_to_rgb(L, lambda);
+  const RGB rgb = sample_rgb(L, lambda);
   // Every term first, so that a sample with any non-finite part changes nothing.
   int bucket[kSpectrumSamples];
   double term[kSpectrumSamples];
-  if (!(bucket_terms(L, lambda, w, bucket, term) && is_finite(rgb) && std::isfinite(w))) {
+  if (!(bucket_terms(clamped_radiance(L, lambda), lambda, w, bucket, term) && is_finite(rgb) && std::isfinite(w))) {
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
@@ -79,10 +113,11 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
 }
 
 bool Film::add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda) {
-  const RGB rgb = sampled_to_rgb(L, lambda);
+  const RGB rgb = sample_rgb(L, lambda);
   int bucket[kSpectrumSamples];
   double term[kSpectrumSamples];
-  if (!(is_finite(rgb) && (!buckets_.spectral() || bucket_terms(L, lambda, 1.f, bucket, term)))) {
+  if (!(is_finite(rgb) &&
+        (!buckets_.spectral() || bucket_terms(clamped_radiance(L, lambda), lambda, 1.f, bucket, term)))) {
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
@@ -130,10 +165,14 @@ Image Film::blank_image() const {
   Image img;
   img.width = bounds_.width();
   img.height = bounds_.height();
-  img.channels = 3 + buckets_.count;
+  img.channels = 3 + buckets_.count + (gbuffer_ ? GBuffer::kChannels : 0);
   if (buckets_.spectral()) {
     img.channel_names = {"R", "G", "B"};
     for (int b = 0; b < buckets_.count; ++b) img.channel_names.push_back(buckets_.channel_name(b));
+  }
+  if (gbuffer_) {
+    img.channel_names = {"R", "G", "B"};
+    for (const std::string& n : GBuffer::channel_names()) img.channel_names.push_back(n);
   }
   img.pixels.resize(size_t(img.width) * img.height * img.channels);
   return img;
@@ -152,6 +191,7 @@ void Film::pixel_channels(IVec2 pixel, float* out) const {
     const float s = bucket_value(pixel, b);
     out[3 + b] = std::isfinite(s) ? s : 0.f;
   }
+  if (gbuffer_) gbuffer_->channels(index(pixel), pixels_[index(pixel)].weight, scale_, out + 3);
 }
 
 std::map<std::string, std::string> Film::image_metadata() const {

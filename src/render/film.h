@@ -22,8 +22,17 @@
 // The buckets share the pixel's weight sum with R, G, B, so a pixel's bucket value is its sum
 // divided by the same weight: a lost camera ray (zero radiance) darkens the buckets as it
 // darkens RGB. The R, G, B channels of a spectral film are exactly those of an RGB film.
+//
+// A sample's colour goes through the film's pixel sensor (render/pixel_sensor.h: a camera's
+// curves, white balance) when the scene names one, and is clamped as pbrt-v4's
+// "maxcomponentvalue" clamps it: the sensor's responses times the imaging ratio (what pbrt-v4
+// calls sensor RGB) scaled down so that the largest is the maximum, per sample and per splat,
+// before they become XYZ and linear sRGB. A spectral film's buckets see the radiance clamped as
+// pbrt-v4's SpectralFilm clamps it: L scaled so that its largest value, in pbrt-v4's units
+// (L / the integral of y-bar), is the maximum.
 #pragma once
 #include <atomic>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -32,7 +41,9 @@
 #include "core/filter.h"
 #include "core/math.h"
 #include "core/spectrum.h"
+#include "render/gbuffer.h"
 #include "render/image_io.h"
+#include "render/pixel_sensor.h"
 
 namespace eyetrace {
 
@@ -68,22 +79,46 @@ struct SpectralBuckets {
   std::string channel_name(int b) const;
 };
 
+// What the film does to a sample's radiance before adding it; the default is CIE 1931 XYZ to
+// linear sRGB, unclamped.
+struct FilmResponse {
+  std::shared_ptr<const PixelSensor> sensor;                     // null: cie1931 without white balance
+  float max_component = std::numeric_limits<float>::infinity();  // pbrt-v4's maxcomponentvalue
+  float imaging_ratio = 1.f;  // iso / 100 * exposure time: part of the film's scale, seen by the clamp
+  bool clamps() const { return max_component < std::numeric_limits<float>::infinity(); }
+};
+
 class Film {
  public:
   // `scale` multiplies every pixel (pbrt-v4's iso/exposure imaging ratio).
   Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter, float scale = 1.f,
-       SpectralBuckets buckets = {});
+       SpectralBuckets buckets = {}, FilmResponse response = {});
   IVec2 resolution() const { return resolution_; }
   const PixelBounds& bounds() const { return bounds_; }
   const Filter& filter() const { return *filter_; }
   const SpectralBuckets& buckets() const { return buckets_; }
+  const FilmResponse& response() const { return response_; }
+  // Makes this a gbuffer film (pbrt-v4's "gbuffer"; render/gbuffer.h): its image gets the
+  // auxiliary channels, positions and normals in output_from_world's space.
+  void enable_gbuffer(const Transform& output_from_world);
+  bool gbuffer() const { return gbuffer_ != nullptr; }
+  // A sample's linear sRGB (before the film's scale): through the sensor, clamped.
+  RGB sample_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {
+    if (!response_.sensor && !response_.clamps()) return sampled_to_rgb(L, lambda);
+    return sensor_rgb(L, lambda);
+  }
 
   // Adds radiance L with filter weight w to `pixel` (absolute raster coordinates).
   // Returns false (and counts it) when w, or L at a wavelength with non-zero density, or any
   // colour or bucket term it gives, is not finite: nothing of such a sample is kept.
-  bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w) {
+  // `visible`: what the sample's camera ray saw, for a gbuffer film (null: nothing recorded).
+  bool add_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w,
+                  const VisibleSurface* visible = nullptr) {
     if (buckets_.spectral()) return add_spectral_sample(pixel, L, lambda, w);
-    return add_sample(pixel, sampled_to_rgb(L, lambda), w);
+    const RGB rgb = sample_rgb(L, lambda);
+    if (!add_sample(pixel, rgb, w)) return false;
+    if (gbuffer_ && visible) gbuffer_->add(index(pixel), *visible, lambda, rgb, w);
+    return true;
   }
   // An RGB sample: adds to R, G, B and the weight, nothing to the buckets (the renderer uses it
   // for zero radiance only: a lost camera ray).
@@ -107,11 +142,12 @@ class Film {
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;
-  // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, named.
+  // The crop region, top row first: R, G, B, then (spectral film) one channel per bucket, or
+  // (gbuffer film) the auxiliary channels, named.
   Image image() const;
   // image() in parts: the image's size and channels with every value 0; the values of the
   // pixels in `region` (absolute raster coordinates, inside bounds()) written into it; one
-  // pixel's 3 + buckets().count channels written to `out`.
+  // pixel's channels (3 + buckets().count, or 3 + GBuffer::kChannels) written to `out`.
   Image blank_image() const;
   void fill_image(const PixelBounds& region, Image& image) const;
   void pixel_channels(IVec2 pixel, float* out) const;
@@ -148,6 +184,8 @@ class Film {
     double splat[3] = {0, 0, 0};
     double sum_y2 = 0;  // of (w Y)^2 over the pixel's own samples
   };
+  RGB sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
+  SampledSpectrum clamped_radiance(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
   bool bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lambda, float w, int* bucket,
                     double* term) const;
@@ -157,6 +195,8 @@ class Film {
   std::unique_ptr<Filter> filter_;
   float scale_;
   SpectralBuckets buckets_;
+  FilmResponse response_;
+  std::unique_ptr<GBuffer> gbuffer_;
   std::vector<Pixel> pixels_;
   std::vector<double> bucket_sums_;  // per pixel, in pixel order: buckets_.count sums, then as many splat sums
   std::atomic<uint64_t> nonfinite_{0};

@@ -95,10 +95,12 @@ class SampleBatch {
     }
     ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
     SampledWavelengths& lambda = lambdas_[i];
-    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_);
+    VisibleSurface visible;
+    VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
+    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs);
     ts_.arena.reset();
     if (lambda.secondary_terminated()) {
-      film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight);
+      film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
       return;
     }
     L *= cr->weight;
@@ -109,7 +111,7 @@ class SampleBatch {
       std::swap(one[k], L[k]);
       film_.add_splat(pixels_[i] + cr->pixel_offset[k], one, lambda);
     }
-    film_.add_sample(pixels_[i], L, lambda, filter_weight);
+    film_.add_sample(pixels_[i], L, lambda, filter_weight, vs);
   }
 
   const Integrator& integrator_;

@@ -12,6 +12,7 @@
 #include "core/ray.h"
 #include "core/sampled_spectrum.h"
 #include "core/sampler.h"
+#include "core/visible_surface.h"
 #include "render/adaptive_sampling.h"
 #include "render/render_group.h"
 #include "render/tile_progress.h"
@@ -77,9 +78,10 @@ class Integrator {
   virtual ~Integrator() = default;
 
   // Radiance arriving along `ray` at the sample's wavelengths (camera weight not included).
-  // A path that splits by wavelength terminates lambda's secondary wavelengths.
+  // A path that splits by wavelength terminates lambda's secondary wavelengths. `visible`, when
+  // given (a gbuffer film), receives the first surface the ray sees.
   virtual SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
-                                   RayTally& tally) const = 0;
+                                   RayTally& tally, VisibleSurface* visible = nullptr) const = 0;
   virtual std::string to_string() const = 0;
 
   // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel.

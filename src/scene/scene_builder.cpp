@@ -12,12 +12,22 @@ namespace eyetrace {
 namespace {
 
 struct FilmSettings {
+  bool gbuffer = false;
+  bool gbuffer_world = false;  // positions and normals in world space (else camera space)
   IVec2 resolution{1280, 720};
   PixelBounds bounds;
   std::string filename = "pbrt.exr";
   float scale = 1.f;
   SpectralBuckets buckets;  // count 0: an RGB film
+  FilmResponse response;
 };
+
+// Every camera PixelSensor knows, comma separated.
+std::string camera_names() {
+  std::string names;
+  for (const std::string& n : PixelSensor::camera_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
 
 // The parameters every film takes (pbrt-v4's FilmBaseParameters, PixelSensor and RGB film).
 std::vector<ParamSpec> film_base_params() {
@@ -33,10 +43,16 @@ std::vector<ParamSpec> film_base_params() {
           .above(0)
           .describe("multiplies the image (pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it)"),
       param::boolean("savefp16", true).describe("ignored"),
-      param::real("maxcomponentvalue").describe("ignored, with a warning"),
+      param::real("maxcomponentvalue")
+          .above(0)
+          .describe("each sample's sensor RGB (× iso/100 × exposuretime) scaled so that its largest component is at "
+                    "most this (pbrt-v4's clamp; unset: no clamp)"),
       param::real("diagonal", 35).with_unit("mm").describe("ignored (the realistic camera has its own)"),
-      param::string("sensor", "cie1931").describe("other values are ignored, with a warning"),
-      param::real("whitebalance", 0).describe("other values are ignored, with a warning"),
+      param::string("sensor", "cie1931").describe("cie1931 (XYZ) or a camera of pbrt-v4's: " + camera_names()),
+      param::real("whitebalance", 0)
+          .at_least(0)
+          .with_unit("K")
+          .describe("colour temperature to balance for (Bradford); 0: none for cie1931, 6500 for a camera"),
   };
 }
 
@@ -45,9 +61,9 @@ std::vector<ParamSpec> film_base_params() {
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
-      "`gbuffer` is accepted and rendered as `rgb`, with a warning. `savefp16` and `diagonal` are accepted and "
-      "ignored; `maxcomponentvalue`, a `sensor` other than `cie1931` and a `whitebalance` other than 0, which would "
-      "change the image in pbrt-v4, are ignored with a warning.",
+      "`savefp16` and `diagonal` are accepted and ignored. pbrt-v4 takes the exposure time from the camera's shutter "
+      "interval; eyetrace from `exposuretime`. "
+      "The sensor's XYZ matrix is fitted over 380-780 nm of D-series illuminant (pbrt-v4: 300-830 nm).",
       film_base_params()};
   return spec;
 }
@@ -76,6 +92,20 @@ const PluginSpec& spectral_film_spec() {
   return spec;
 }
 
+const PluginSpec& gbuffer_film_spec() {
+  static const PluginSpec spec{
+      "Film",
+      "the `rgb` film's R, G, B plus pbrt-v4's auxiliary channels: Albedo, P, N, Ns, u, v, Variance, "
+      "RelativeVariance (src/render/gbuffer.h)",
+      "No `dzdx`, `dzdy` channels (they need ray differentials, which eyetrace does not trace). Variance is of the "
+      "output colour, pbrt-v4's of the sensor RGB. EXR only; always float32 (`savefp16` ignored). Cannot be "
+      "checkpointed, resumed or rendered over several MPI processes.",
+      film_base_params() + std::vector<ParamSpec>{param::string("coordinatesystem", "camera")
+                                                      .in({"camera", "world"})
+                                                      .describe("the space of P, N and Ns")}};
+  return spec;
+}
+
 namespace {
 
 bool has_extension(const std::string& path, const std::string& ext) {
@@ -84,23 +114,40 @@ bool has_extension(const std::string& path, const std::string& ext) {
   return e == ext;
 }
 
-// What pbrt-v4's film would do to the image that eyetrace does not: said, so that
-// `eyetrace check` lists it.
-void warn_ignored_film_params(const PluginParams& p) {
-  if (p.has("maxcomponentvalue")) p.warn_param("maxcomponentvalue", "clamping sample values is not supported; ignored");
-  if (p.get_string("sensor") != "cie1931")
-    p.warn_param("sensor", fmt::format("sensor \"{}\" is not supported; the image is CIE 1931 XYZ to linear sRGB",
-                                       p.get_string("sensor")));
-  if (p.get_float("whitebalance") != 0.f) p.warn_param("whitebalance", "white balancing is not supported; ignored");
+// The pixel sensor and clamp (pbrt-v4's PixelSensor::Create and RGBFilm::Create): cie1931 is
+// white balanced only when given a temperature, a camera at 6500 K unless given one.
+FilmResponse read_film_response(const PluginParams& p) {
+  FilmResponse r;
+  r.imaging_ratio = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  if (p.has("maxcomponentvalue")) r.max_component = p.get_float("maxcomponentvalue");
+  const std::string name = p.get_string("sensor");
+  const double kelvin = p.get_float("whitebalance");
+  std::optional<PixelSensor> sensor;
+  if (name == "cie1931") {
+    if (kelvin > 0.0) sensor = PixelSensor::cie1931(kelvin);
+  } else {
+    sensor = PixelSensor::camera(name, kelvin > 0.0 ? kelvin : 6500.0);
+    if (!sensor) p.fail("sensor", fmt::format("unknown sensor \"{}\"; known: cie1931, {}", name, camera_names()));
+  }
+  if (sensor && !sensor->finite())
+    p.fail("whitebalance",
+           fmt::format("{} K: a light this cold has no power in the visible range to balance for", kelvin));
+  if (sensor) r.sensor = std::make_shared<PixelSensor>(std::move(*sensor));
+  return r;
 }
 
 FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
-  if (film.name == "gbuffer") warn(film.loc, "film \"gbuffer\" is rendered as an \"rgb\" film");
-  const bool spectral = film.name == "spectral";
-  const PluginParams p(film.params, spectral ? spectral_film_spec() : film_spec(), film.name);
+  const bool spectral = film.name == "spectral", gbuffer = film.name == "gbuffer";
+  const PluginParams p(film.params,
+                       spectral  ? spectral_film_spec()
+                       : gbuffer ? gbuffer_film_spec()
+                                 : film_spec(),
+                       film.name);
   FilmSettings f;
+  f.gbuffer = gbuffer;
+  if (gbuffer) f.gbuffer_world = p.get_string("coordinatesystem") == "world";
   f.resolution = IVec2(p.get_int("xresolution"), p.get_int("yresolution"));
   if (o.resolution) {  // --resolution: checked here, the scene's values by the table
     f.resolution = *o.resolution;
@@ -124,7 +171,7 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
-  warn_ignored_film_params(p);
+  f.response = read_film_response(p);
   f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");
@@ -133,14 +180,16 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
     if (!(f.buckets.lambda_min < f.buckets.lambda_max))
       p.fail(p.has("lambdamax") ? "lambdamax" : "lambdamin",
              fmt::format("lambdamin {} nm must be below lambdamax {} nm", f.buckets.lambda_min, f.buckets.lambda_max));
-    // As pbrt-v4: the spectral film writes EXR only; the image that would be written is checked,
-    // the command line's if it replaces the scene's.
+  }
+  if (spectral || gbuffer) {
+    // As pbrt-v4: the spectral and gbuffer films write EXR only; the image that would be written
+    // is checked, the command line's if it replaces the scene's.
     if (!o.output.empty() && !has_extension(o.output, ".exr"))
       throw_parameter_error({}, "--output",
-                            fmt::format("\"{}\": the spectral film (Film \"spectral\" at {}) writes EXR only", o.output,
-                                        film.loc.to_string()));
+                            fmt::format("\"{}\": the {} film (Film \"{}\" at {}) writes EXR only", o.output, film.name,
+                                        film.name, film.loc.to_string()));
     if (o.output.empty() && !has_extension(f.filename, ".exr"))
-      p.fail("filename", fmt::format("\"{}\": the spectral film writes EXR only (use a .exr name)", f.filename));
+      p.fail("filename", fmt::format("\"{}\": the {} film writes EXR only (use a .exr name)", f.filename, film.name));
   }
   return f;
 }
@@ -353,9 +402,11 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
 }
 
 void check_memory(const FilmSettings& f, const RenderOverrides& o) {
-  // The film holds 4 doubles per pixel and the output image 3 floats, and a spectral film one
-  // double and one float more per bucket.
-  uint64_t bytes = uint64_t(f.bounds.area()) * (32 + 12 + 12 * uint64_t(f.buckets.count));
+  // The film holds 4 doubles per pixel and the output image 3 floats, a spectral film one
+  // double and one float more per bucket, a gbuffer film 24 doubles and 20 floats more.
+  uint64_t bytes =
+      uint64_t(f.bounds.area()) * (32 + 12 + 12 * uint64_t(f.buckets.count) +
+                                   (f.gbuffer ? 8 * GBuffer::kAccumulators + 4 * uint64_t(GBuffer::kChannels) : 0));
   if (o.max_memory_bytes && bytes > o.max_memory_bytes)
     throw_error(fmt::format("a {}x{} film needs about {:.1f} GiB, more than the limit of {:.1f} GiB (--max-memory)",
                             f.bounds.width(), f.bounds.height(), bytes / 1073741824.0,
@@ -423,7 +474,9 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   attempt([&] {
     const SceneEntity& pf = desc.filter;
     auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
-    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets);
+    setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets, f.response);
+    // pbrt-v4's "camera" space is the camera's own (its CameraTransform's RenderFromCamera, inverted).
+    if (f.gbuffer) setup.film->enable_gbuffer(f.gbuffer_world ? Transform() : desc.camera.world_from_camera.inverse());
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
   const SceneEntity& in = desc.integrator;

@@ -47,6 +47,7 @@ struct RenderSetup {
 // rendered as rgb) and "spectral" (the same plus its wavelength buckets).
 const PluginSpec& film_spec();
 const PluginSpec& spectral_film_spec();
+const PluginSpec& gbuffer_film_spec();
 
 RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrides& overrides);
 

@@ -111,20 +111,56 @@ TEST(CheckCommand, JsonMarksMissingFiles) {
 }
 
 // Film parameters pbrt-v4 would change the image with, and eyetrace ignores, are warnings.
-TEST(CheckCommand, IgnoredFilmParametersAreWarnings) {
+// The film's sensor, white balance and clamp are used, not ignored: nothing to report.
+TEST(CheckCommand, FilmSensorWhiteBalanceAndClampAreUsed) {
   TempDir dir("eyetrace-check");
   const std::string scene = write(dir, "film.pbrt",
                                   "Film \"rgb\" \"string sensor\" \"nikon_d850\" \"float whitebalance\" 5000\n"
                                   "  \"float maxcomponentvalue\" 20 \"bool savefp16\" false\n"
-                                  "WorldBegin\nShape \"sphere\"\n");
+                                  "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
   const RunResult r = run_eyetrace("check " + scene);
-  EXPECT_EQ(r.status, 3) << r.output;
-  EXPECT_NE(r.output.find(scene + ":1:12: warning: parameter \"sensor\": sensor \"nikon_d850\" is not supported"),
-            std::string::npos)
-      << r.output;
-  EXPECT_NE(r.output.find(scene + ":1:41: warning: parameter \"whitebalance\""), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(scene + ":2:3: warning: parameter \"maxcomponentvalue\""), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(": 0 errors (0 missing files), 3 warnings"), std::string::npos) << r.output;
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, scene + ": 0 errors (0 missing files), 0 warnings: ok\n");
+}
+
+// An unknown sensor, a negative white balance and a maximum of 0 are errors at their parameter.
+TEST(CheckCommand, BadFilmSensorWhiteBalanceAndClampAreErrors) {
+  TempDir dir("eyetrace-check");
+  const struct {
+    std::string film, where;
+  } cases[] = {
+      {"\"string sensor\" \"nikon_d900\"",
+       ":1:12: error: parameter \"sensor\": unknown sensor \"nikon_d900\"; known: "
+       "cie1931, canon_eos_100d,"},
+      {"\"float whitebalance\" -10", ":1:12: error: parameter \"whitebalance\""},
+      {"\"float whitebalance\" 20", ":1:12: error: parameter \"whitebalance\": 20 K: a light this cold"},
+      {"\"float maxcomponentvalue\" 0", ":1:12: error: parameter \"maxcomponentvalue\""},
+  };
+  for (const auto& c : cases) {
+    const std::string scene =
+        write(dir, "bad.pbrt", "Film \"rgb\" " + c.film + "\nWorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+    const RunResult r = run_eyetrace("check " + scene);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(scene + c.where), std::string::npos) << r.output;
+  }
+}
+
+// The gbuffer film renders (its EXR has the auxiliary channels) but refuses a checkpoint or a
+// resume, whose render state would not hold its auxiliary sums.
+TEST(CheckCommand, GBufferFilmRendersAndRefusesCheckpoints) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "gb.pbrt",
+                                  "Film \"gbuffer\" \"integer xresolution\" 8 \"integer yresolution\" 8\n"
+                                  "Sampler \"independent\" \"integer pixelsamples\" 4\n"
+                                  "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+  EXPECT_EQ(run_eyetrace("check " + scene).status, 0);
+  const RunResult ok = run_eyetrace("render " + scene + " --quiet -o " + dir.file("gb.exr"));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  for (const char* option : {" --checkpoint 10", " --resume"}) {
+    const RunResult r = run_eyetrace("render " + scene + " --quiet -o " + dir.file("gb2.exr") + option);
+    EXPECT_EQ(r.status, 1) << option << ": " << r.output;
+    EXPECT_NE(r.output.find("the gbuffer film cannot be checkpointed"), std::string::npos) << r.output;
+  }
 }
 
 // A shape whose mesh is missing still has its material checked.

@@ -34,6 +34,87 @@ TEST(Film, WeightedMeanAndNonFiniteSamplesDiscarded) {
   EXPECT_EQ(film.pixel_value(IVec2(0, 0)), RGB(0.f));
 }
 
+// pbrt-v4's maxcomponentvalue (RGBFilm::AddSample): a sample's sensor RGB times the imaging
+// ratio is scaled so that its largest component is the value. For the cie1931 sensor the sensor
+// RGB is XYZ. The film, with scale = imaging ratio 2 and maximum 1.5: a bright sample's pixel is
+// its unclamped colour times k, one k for all channels, with k * max(XYZ) * 2 = 1.5 exactly; a
+// dim sample is untouched, bit for bit.
+SampledSpectrum constant_spectrum(float v) {
+  SampledSpectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = v;
+  return s;
+}
+
+TEST(Film, MaxComponentValueScalesTheLargestSensorComponentToTheValue) {
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.3f);
+  FilmResponse clamp;
+  clamp.max_component = 1.5f;
+  clamp.imaging_ratio = 2.f;
+  Film film(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>(), 2.f, {}, clamp);
+  Film plain(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>(), 2.f);
+  for (Film* f : {&film, &plain}) {
+    EXPECT_TRUE(f->add_sample(IVec2(0, 0), constant_spectrum(10.f), lambda, 1.f));
+    EXPECT_TRUE(f->add_sample(IVec2(1, 0), constant_spectrum(0.1f), lambda, 1.f));
+  }
+  const Vec3 xyz = sampled_to_xyz(constant_spectrum(10.f), lambda);
+  ASSERT_GT(max_component(xyz) * 2.f, 1.5f);
+  const RGB bright = film.pixel_value(IVec2(0, 0)), unclamped = plain.pixel_value(IVec2(0, 0));
+  const double k = double(bright.g) / unclamped.g;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(bright[c] / unclamped[c], k, 1e-6 * k) << c;
+  EXPECT_NEAR(k * max_component(xyz) * 2.0, 1.5, 1e-6);
+  EXPECT_EQ(film.pixel_value(IVec2(1, 0)), plain.pixel_value(IVec2(1, 0)));
+  // A splat is clamped the same way.
+  film.add_splat(IVec2(1, 0), constant_spectrum(10.f), lambda);
+  plain.add_splat(IVec2(1, 0), constant_spectrum(10.f), lambda);
+  const RGB diff = film.pixel_value(IVec2(1, 0)) - plain.pixel_value(IVec2(1, 0));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(diff[c], (bright[c] - unclamped[c]), 1e-5 * unclamped[c]) << c;
+}
+
+// With a camera the clamp acts on the camera's responses (before its XYZ matrix), and a
+// non-finite sample is still rejected, never clamped into a finite value.
+TEST(Film, MaxComponentValueClampsTheCamerasResponsesAndRejectsNonFinite) {
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.6f);
+  FilmResponse r;
+  r.sensor = std::make_shared<PixelSensor>(*PixelSensor::camera("sony_ilce_9", 5000.0));
+  r.max_component = 0.5f;
+  Film film(IVec2(1, 1), PixelBounds{IVec2(0), IVec2(1)}, std::make_unique<UnitBox>(), 1.f, {}, r);
+  SampledSpectrum L = constant_spectrum(4.f);
+  L[1] = 9.f;
+  ASSERT_TRUE(film.add_sample(IVec2(0, 0), L, lambda, 1.f));
+  const Vec3 resp = r.sensor->responses(L, lambda);
+  ASSERT_GT(max_component(resp), 0.5f);
+  const RGB want = xyz_to_linear_srgb(r.sensor->xyz(resp * (0.5f / max_component(resp))));
+  const RGB got = film.pixel_value(IVec2(0, 0));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5f * std::abs(want[c]) + 1e-7f) << c;
+  L[2] = std::numeric_limits<float>::infinity();
+  EXPECT_FALSE(film.add_sample(IVec2(0, 0), L, lambda, 1.f));
+  L[2] = std::nanf("");
+  EXPECT_FALSE(film.add_sample(IVec2(0, 0), L, lambda, 1.f));
+  EXPECT_EQ(film.nonfinite_samples(), 2u);
+  EXPECT_EQ(film.pixel_value(IVec2(0, 0)), got);
+}
+
+// pbrt-v4's SpectralFilm also clamps the radiance its buckets see: L scaled so that its largest
+// value, in pbrt-v4's units (ours over the integral of y-bar), is the maximum. A constant L of
+// 1000 with maximum 2 gives buckets 2 * integral(y-bar) / 1000 of the unclamped ones.
+TEST(Film, MaxComponentValueClampsASpectralFilmsBuckets) {
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.45f);
+  FilmResponse r;
+  r.max_component = 2.f;
+  const SpectralBuckets buckets{8, 400.f, 700.f};
+  Film film(IVec2(1, 1), PixelBounds{IVec2(0), IVec2(1)}, std::make_unique<UnitBox>(), 1.f, buckets, r);
+  Film plain(IVec2(1, 1), PixelBounds{IVec2(0), IVec2(1)}, std::make_unique<UnitBox>(), 1.f, buckets);
+  for (Film* f : {&film, &plain}) ASSERT_TRUE(f->add_sample(IVec2(0, 0), constant_spectrum(1000.f), lambda, 1.f));
+  const double ratio = 2.0 * cie_y_integral() / 1000.0;
+  int nonzero = 0;
+  for (int b = 0; b < buckets.count; ++b) {
+    const float v = plain.bucket_value(IVec2(0, 0), b);
+    if (v != 0.f) ++nonzero;
+    EXPECT_NEAR(film.bucket_value(IVec2(0, 0), b), v * ratio, 1e-5 * v) << b;
+  }
+  EXPECT_GT(nonzero, 0);
+}
+
 TEST(ImageIO, ExrRoundTripsExactlyAndPngIsSrgb) {
   auto dir = std::filesystem::temp_directory_path() / "eyetrace_image_io_test";
   std::filesystem::create_directories(dir);

@@ -1,0 +1,92 @@
+#include "render/gbuffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/spectrum.h"
+
+namespace eyetrace {
+
+namespace {
+// Offsets of the sums in a pixel's accumulators.
+enum : size_t { kP = 0, kN = 3, kNs = 6, kUv = 9, kAlbedo = 11, kWeight = 14, kCount = 15, kMean = 16, kM2 = 19 };
+}  // namespace
+
+const std::vector<std::string>& GBuffer::channel_names() {
+  static const std::vector<std::string> names = {"Albedo.R",
+                                                 "Albedo.G",
+                                                 "Albedo.B",
+                                                 "P.X",
+                                                 "P.Y",
+                                                 "P.Z",
+                                                 "N.X",
+                                                 "N.Y",
+                                                 "N.Z",
+                                                 "Ns.X",
+                                                 "Ns.Y",
+                                                 "Ns.Z",
+                                                 "u",
+                                                 "v",
+                                                 "Variance.R",
+                                                 "Variance.G",
+                                                 "Variance.B",
+                                                 "RelativeVariance.R",
+                                                 "RelativeVariance.G",
+                                                 "RelativeVariance.B"};
+  return names;
+}
+
+GBuffer::GBuffer(size_t pixels, const Transform& output_from_world)
+    : sums_(pixels * kAccumulators, 0.0), output_from_world_(output_from_world) {}
+
+void GBuffer::add(size_t pixel, const VisibleSurface& vs, const SampledWavelengths& lambda, const RGB& rgb, float w) {
+  if (!vs.set) return;
+  double* s = &sums_[pixel * kAccumulators];
+  const Vec3 p = output_from_world_.point(vs.p);
+  const Vec3 n = output_from_world_.normal(vs.n), ns = output_from_world_.normal(vs.ns);
+  // The albedo as a reflectance under the colour space's white (white_illuminant: luminance 1),
+  // so that albedo 1 is (1, 1, 1).
+  SampledSpectrum lit = vs.albedo;
+  for (int i = 0; i < kSpectrumSamples; ++i) lit[i] *= white_illuminant(lambda[i]);
+  const RGB albedo = sampled_to_rgb(lit, lambda);
+  for (int c = 0; c < 3; ++c) {
+    s[kP + c] += double(w) * p[c];
+    s[kN + c] += double(w) * n[c];
+    s[kNs + c] += double(w) * ns[c];
+    s[kAlbedo + c] += double(w) * albedo[c];
+  }
+  s[kUv] += double(w) * vs.uv.x;
+  s[kUv + 1] += double(w) * vs.uv.y;
+  s[kWeight] += w;
+  // Welford's update of the mean and the sum of squared deviations.
+  const double count = (s[kCount] += 1.0);
+  for (int c = 0; c < 3; ++c) {
+    const double d = double(rgb[c]) - s[kMean + c];
+    s[kMean + c] += d / count;
+    s[kM2 + c] += d * (double(rgb[c]) - s[kMean + c]);
+  }
+}
+
+void GBuffer::channels(size_t pixel, double film_weight, float scale, float* out) const {
+  const double* s = &sums_[pixel * kAccumulators];
+  auto finite = [](double v) { return std::isfinite(v) ? float(v) : 0.f; };
+  for (int c = 0; c < 3; ++c) out[c] = film_weight > 0 ? finite(s[kAlbedo + c] / film_weight) : 0.f;
+  const double w = s[kWeight];
+  for (int c = 0; c < 3; ++c) out[3 + c] = w > 0 ? finite(s[kP + c] / w) : 0.f;
+  for (int k = 0; k < 2; ++k) {  // N, then Ns: the sum's direction, 0 when it has none
+    const double* v = &s[k == 0 ? kN : kNs];
+    const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int c = 0; c < 3; ++c) out[6 + 3 * k + c] = len > 0 ? finite(v[c] / len) : 0.f;
+  }
+  for (int k = 0; k < 2; ++k) out[12 + k] = w > 0 ? finite(s[kUv + k] / w) : 0.f;
+  const double count = s[kCount];
+  for (int c = 0; c < 3; ++c) {
+    // In the image's units: colours times the film's scale.
+    const double mean = double(scale) * s[kMean + c];
+    const double var = count > 1 ? double(scale) * double(scale) * s[kM2 + c] / (count - 1) : 0.0;
+    out[14 + c] = finite(var);
+    out[17 + c] = (count < 1 || mean == 0) ? 0.f : finite(var / mean);
+  }
+}
+
+}  // namespace eyetrace

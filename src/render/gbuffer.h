@@ -1,0 +1,47 @@
+// The auxiliary channels of pbrt-v4's GBufferFilm (src/pbrt/film.cpp), per pixel, from what
+// each sample's camera ray first saw (core/visible_surface.h):
+//   Albedo.R/G/B  the BSDF's albedo under the colour space's white, weighted by the filter and
+//                 divided by all of the pixel's weight (pbrt-v4 does the same: rays that saw
+//                 nothing darken it)
+//   P.X/Y/Z, u, v the position and surface (u, v), averaged over the samples that saw a surface
+//   N.X/Y/Z, Ns.X/Y/Z  geometric and shading normal, facing the camera: the normalised sum
+//   Variance.R/G/B, RelativeVariance.R/G/B  of the samples' colour (unweighted, samples that saw
+//                 a surface only): the sample variance and that over the mean (pbrt-v4's
+//                 VarianceEstimator)
+// in camera space ("coordinatesystem" "camera", pbrt-v4's default) or world space.
+// Differences from pbrt-v4: no dzdx and dzdy channels (pbrt-v4's depth derivatives come from
+// ray differentials, which eyetrace's camera rays do not carry); the variance is of the
+// output colour (linear sRGB times the film's scale), pbrt-v4's of the sensor RGB before its
+// output matrix (for the default cie1931 sensor, of X, Y, Z).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "core/sampled_spectrum.h"
+#include "core/transform.h"
+#include "core/visible_surface.h"
+
+namespace eyetrace {
+
+class GBuffer {
+ public:
+  static constexpr int kChannels = 20;
+  static const std::vector<std::string>& channel_names();  // in the order channels() writes them
+  // Sums per pixel: p 3, n 3, ns 3, uv 2, albedo 3, surface weight, count, mean 3, m2 3. Not
+  // part of the film's accumulators (checkpoints, MPI), which the gbuffer film therefore refuses.
+  static constexpr size_t kAccumulators = 24;
+
+  GBuffer(size_t pixels, const Transform& output_from_world);
+  // A sample of weight w and colour `rgb` (linear sRGB before the film's scale) whose camera ray
+  // saw `vs` (nothing when vs.set is false).
+  void add(size_t pixel, const VisibleSurface& vs, const SampledWavelengths& lambda, const RGB& rgb, float w);
+  // The pixel's kChannels values; film_weight is the pixel's whole weight, scale the film's.
+  void channels(size_t pixel, double film_weight, float scale, float* out) const;
+
+ private:
+  std::vector<double> sums_;  // kAccumulators per pixel
+  Transform output_from_world_;
+};
+
+}  // namespace eyetrace
