@@ -22,6 +22,11 @@
 // that 16 chords stray from the curve by more than width / 100 (see build_pieces) are
 // split first. pbrt-v4's "splitdepth" only splits its BVH primitives: read and unused here.
 // Area lights on curves are refused (pbrt-v4 aborts when sampling one).
+// One difference that cannot be helped here: Embree ignores a curve hit closer to the ray's
+// origin than the curve's width (its self-intersection avoidance, a build-time constant of the
+// library), where pbrt-v4 takes any hit in front of the origin; hairs nearer each other than a
+// width do not shadow each other. On 20,000 hairs of width 0.01 to 0.002 over a floor that made
+// the image 0.4 % brighter than pbrt-v4's (up to 2 % where the hair is densest).
 #pragma once
 #include <memory>
 #include <vector>

@@ -197,6 +197,39 @@ TEST(Curve, ProjectedAreaOfAFlatCurveIsWidthTimesLength) {
   EXPECT_GT(make_curve("\"float width\" 0.02 \"point3 P\" [-1 0 0  -1 2.5 0  1 2.5 0  1 0 0]")->primitive_count(), 1u);
 }
 
+TEST(Curve, RandomRaysGiveFiniteInteractionsOnTheBand) {
+  // Random rays from every side at a bent B-spline of each type (the ribbon twisting through
+  // three normals): every hit is finite, uv within [0, 1], n unit and across the tangent
+  // (except the cylinder's, which is bent about it).
+  const std::string points =
+      "\"string basis\" \"bspline\" \"point3 P\" [0 0 0  1 2 0  2 -1 1  3 0 3  2 2 2] \"float width0\" 0.3 "
+      "\"float width1\" 0.05 ";
+  for (const std::string type : {"flat", "cylinder", "ribbon"}) {
+    const std::string extra = type == "ribbon" ? "\"normal N\" [0 0 1  1 0 0  0 1 1]" : "";
+    OneShape s(make_curve(points + "\"string type\" \"" + type + "\" " + extra));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.f, 1.f), box(-0.5f, 3.5f);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const Vec3 target(box(rng), box(rng) - 1.f, box(rng) - 0.5f);
+      const Vec3 d = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3f));
+      auto si = s.hit(target - 10.f * d, d);
+      if (!si) continue;
+      ++hits;
+      for (int k = 0; k < 3; ++k)
+        ASSERT_TRUE(std::isfinite(si->p[k]) && std::isfinite(si->n[k]) && std::isfinite(si->dpdu[k]) &&
+                    std::isfinite(si->dpdv[k]));
+      ASSERT_GE(si->uv.x, 0.f);
+      ASSERT_LE(si->uv.x, 1.f);
+      ASSERT_GE(si->uv.y, 0.f);
+      ASSERT_LE(si->uv.y, 1.f);
+      ASSERT_NEAR(glm::length(si->n), 1.f, 1e-4f);
+      if (type != "cylinder") ASSERT_NEAR(glm::dot(si->n, glm::normalize(si->dpdu)), 0.f, 1e-3f);
+    }
+    EXPECT_GT(hits, 200) << type;
+  }
+}
+
 TEST(Curve, AlphaCutsOutTheCurve) {
   OneShape gone(make_curve(kStraight + "\"float width\" 0.2 \"float alpha\" 0"));
   EXPECT_FALSE(gone.hit(Vec3(0.3f, 0, 5), Vec3(0, 0, -1)));
@@ -243,6 +276,22 @@ TEST(Curve, BadInputNamesFileLineAndParameter) {
     EXPECT_NE(msg.find("curve.pbrt:3"), std::string::npos) << b.text << " -> " << msg;
     EXPECT_NE(msg.find(b.param), std::string::npos) << b.text << " -> " << msg;
     EXPECT_NE(msg.find(b.words), std::string::npos) << b.text << " -> " << msg;
+  }
+}
+
+// A documented difference (curve.h): Embree ignores curve hits closer to the ray's origin than
+// twice the radius (its EMBREE_CURVE_SELF_INTERSECTION_AVOIDANCE_FACTOR, 2 in Debian's build),
+// where pbrt-v4 takes any hit in front of the origin. Pinned here so a change of the library shows.
+TEST(Curve, EmbreeIgnoresHitsWithinAWidthOfTheOrigin) {
+  OneShape s(make_curve(kStraight + "\"float width\" 0.02"));
+  EXPECT_TRUE(s.hit(Vec3(0.2f, 0.001f, 0.03f), Vec3(0, 0, -1)));
+  EXPECT_FALSE(s.hit(Vec3(0.2f, 0.001f, 0.01f), Vec3(0, 0, -1)));
+  EXPECT_FALSE(s.hit(Vec3(0.2f, 0.001f, 0.001f), Vec3(0, 0, -1)));
+  // At grazing angles to the curve the band is still the full width wide.
+  for (float beta : {45.f, 10.f, 5.f}) {
+    const Vec3 d(std::cos(radians(beta)), 0, -std::sin(radians(beta)));
+    EXPECT_TRUE(s.hit(Vec3(0, 0.0099f, 0) - 3.f * d, d)) << beta;
+    EXPECT_FALSE(s.hit(Vec3(0, 0.0101f, 0) - 3.f * d, d)) << beta;
   }
 }
 
