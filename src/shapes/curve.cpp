@@ -76,60 +76,75 @@ Curve::Curve(const std::vector<CurveSegment>& segments, CurveType type, const Tr
   build_pieces();
 }
 
+namespace {
+
+// A piece of a segment, from parameter u0 to u1, with its own control points.
+struct SubCurve {
+  BezierSegment cp;
+  float u0, u1;
+};
+
+// The segment split in halves until each piece needs at most kMaxChords chords within eps
+// (halving the parameter interval quarters the second differences); *rate becomes the most
+// chords any piece needs.
+std::vector<SubCurve> split_for_chords(const BezierSegment& cp, float eps, int* rate) {
+  std::vector<SubCurve> stack{{cp, 0.f, 1.f}}, done;
+  while (!stack.empty()) {
+    const SubCurve t = stack.back();
+    stack.pop_back();
+    const int n = chords_needed(t.cp, eps);
+    if (n <= kMaxChords || t.u1 - t.u0 < 1.f / 1024.f) {
+      *rate = std::max(*rate, std::min(n, kMaxChords));
+      done.push_back(t);
+      continue;
+    }
+    auto [l, r] = split_half(t.cp);
+    const float um = 0.5f * (t.u0 + t.u1);
+    stack.push_back({r, um, t.u1});
+    stack.push_back({l, t.u0, um});
+  }
+  return done;
+}
+
+// Integral of the width (2 r, linear from r0 to r1) times |dp/du| over a piece: Simpson's rule
+// on 8 intervals.
+double band_area(const BezierSegment& cp, float r0, float r1) {
+  constexpr int kN = 8;
+  double area = 0.0;
+  for (int i = 0; i <= kN; ++i) {
+    const float u = float(i) / kN;
+    const double weight = i == 0 || i == kN ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    area += weight * 2.0 * (r0 + u * (r1 - r0)) * glm::length(bezier_derivative(cp, u)) / (3.0 * kN);
+  }
+  return area;
+}
+
+}  // namespace
+
 void Curve::build_pieces() {
   int rate = 1;
+  double area = 0.0;
   for (unsigned si = 0; si < segments_.size(); ++si) {
     const CurveSegment& s = segments_[si];
     // Chords within a hundredth of the wider end's width of the curve: pbrt-v4 refines to a
     // twentieth but then tests the true cubic; at a twentieth, chords moved the silhouettes and
     // shadow edges by a measurable amount against pbrt-v4 (7 standard errors at 1024 spp).
     const float eps = std::max(s.width0, s.width1) * 0.01f;
-    // Split in halves until each piece needs at most kMaxChords chords (halving the parameter
-    // interval quarters the second differences).
-    struct Todo {
-      BezierSegment cp;
-      float u0, u1;
-    };
-    std::vector<Todo> stack{{s.cp, 0.f, 1.f}};
-    std::vector<Todo> done;
-    while (!stack.empty()) {
-      Todo t = stack.back();
-      stack.pop_back();
-      int n = chords_needed(t.cp, eps);
-      if (n <= kMaxChords || t.u1 - t.u0 < 1.f / 1024.f) {
-        rate = std::max(rate, std::min(n, kMaxChords));
-        done.push_back(t);
-        continue;
-      }
-      auto [l, r] = split_half(t.cp);
-      const float um = 0.5f * (t.u0 + t.u1);
-      stack.push_back({r, um, t.u1});
-      stack.push_back({l, t.u0, um});
-    }
-    double seg_area = 0.0;
-    for (const Todo& t : done) {
-      const unsigned base = unsigned(vertices_.size());
+    for (const SubCurve& t : split_for_chords(s.cp, eps, &rate)) {
       const float r0 = 0.5f * (s.width0 + t.u0 * (s.width1 - s.width0));
       const float r1 = 0.5f * (s.width0 + t.u1 * (s.width1 - s.width0));
+      indices_.push_back(unsigned(vertices_.size()));
       // A radius linear in u is, in Bezier form, control radii at thirds.
       for (int k = 0; k < 4; ++k) {
         vertices_.push_back(Vec4(t.cp[k], r0 + (r1 - r0) * float(k) / 3.f));
         bounds_.extend(t.cp[k] - Vec3(std::max(r0, r1)));
         bounds_.extend(t.cp[k] + Vec3(std::max(r0, r1)));
       }
-      indices_.push_back(base);
       pieces_.push_back(Piece{si, t.u0, t.u1});
-      // Area: width times arc length, by 8-interval Simpson over the piece.
-      constexpr int kN = 8;
-      for (int i = 0; i <= kN; ++i) {
-        const float u = float(i) / kN;
-        const double w = i == 0 || i == kN ? 1.0 : (i % 2 ? 4.0 : 2.0);
-        const double width = 2.0 * (r0 + u * (r1 - r0));
-        seg_area += w * width * glm::length(bezier_derivative(t.cp, u)) / (3.0 * kN);
-      }
+      area += band_area(t.cp, r0, r1);
     }
-    area_ += float(seg_area);
   }
+  area_ = float(area);
   tessellation_ = rate;
 }
 
