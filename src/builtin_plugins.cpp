@@ -34,6 +34,7 @@
 #include "scene/registry.h"
 #include "scene/scene_builder.h"
 #include "shapes/bilinear_mesh.h"
+#include "shapes/curve.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
 #include "shapes/loop_subdiv_mesh.h"
@@ -82,6 +83,7 @@ void register_builtin_plugins(Registry& r) {
   r.shapes.add("disk", create_disk_shapes, disk_shape_spec());
   r.shapes.add("cylinder", create_cylinder_shapes, cylinder_shape_spec());
   r.shapes.add("loopsubdiv", create_loopsubdiv_shapes, loopsubdiv_shape_spec());
+  r.shapes.add("curve", create_curve_shapes, curve_shape_spec());
 
   r.materials.add("diffuse", create_diffuse_material, diffuse_material_spec());
   r.materials.add("coateddiffuse", create_coateddiffuse_material, coateddiffuse_material_spec());

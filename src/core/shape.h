@@ -39,6 +39,9 @@ class Shape {
   // A constant alpha of 0: no ray ever meets the shape, yet pbrt-v4 lets an area light on it
   // emit everywhere, reached by light sampling only (its "invisible emitters").
   virtual bool invisible() const { return false; }
+  // Why this shape cannot carry an area light, or null when it can (the scene builder turns a
+  // refusal into an error at the shape's directive).
+  virtual const char* emitter_refusal() const { return nullptr; }
 };
 
 }  // namespace eyetrace

@@ -325,6 +325,8 @@ class Builder {
           warn(s.loc, "area lights inside object instances are not supported (as in pbrt-v4); the shape does not emit");
         } else {
           const TransformedEntity& a = desc_.area_lights.at(s.area_light);
+          if (const char* why = prim.shape->emitter_refusal())
+            throw_error(s.loc, fmt::format("Shape \"{}\" cannot be an area light: {}", s.name, why));
           AreaLightContext actx{a.params, *prim.shape, s.reverse_orientation, *setup_.textures, desc_.search_dir};
           auto light = reg_.area_lights.at(a.name, a.loc)(actx);
           prim.area_light = light.get();

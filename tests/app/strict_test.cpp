@@ -31,7 +31,7 @@ TEST(CommandLine, SeveralSceneErrorsArePrintedAndNothingIsWritten) {
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(r.output,
             scene.string() + ":3:1: error: unsupported shape \"spher\" (did you mean \"sphere\"?); " +
-                "eyetrace supports: bilinearmesh, cylinder, disk, loopsubdiv, plymesh, sphere, trianglemesh\n" +
+                "eyetrace supports: bilinearmesh, curve, cylinder, disk, loopsubdiv, plymesh, sphere, trianglemesh\n" +
                 scene.string() +
                 ":2:1: error: unsupported light \"pointt\" (did you mean \"point\"?); eyetrace supports: "
                 "distant, infinite, point, spot\n2 errors\n");

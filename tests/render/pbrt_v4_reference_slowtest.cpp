@@ -1,6 +1,6 @@
 // eyetrace against pbrt-v4 itself, feature by feature: each scene of tests/data/pbrt-v4/
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
-// diffusetransmission, thindielectric, partial cylinders, the directionmix, noise and dots
+// diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, hair, a camera sensor with white balance and ISO,
 // maxcomponentvalue, the gbuffer film's channels) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
@@ -215,6 +215,10 @@ TEST(PbrtV4Reference, MaxComponentValueClampsEverySampleOfABrightEmitter) {
 }
 TEST(PbrtV4Reference, CoatedConductorSmoothCoatOnSmoothMetal) { expect_matches_pbrt_v4("coatedconductor-smooth"); }
 TEST(PbrtV4Reference, HairOnStripsWithMelaninReflectanceAndSigmaA) { expect_matches_pbrt_v4("hair"); }
+// A flat Bezier curve of tapering width, a wide "cylinder" B-spline and a twisting quadratic
+// "ribbon" over a floor, lit from the side (their shadows too): pbrt-v4's ray-facing bands,
+// its bent cylinder normal and its narrowed ribbon, as shapes/curve.h reproduces them.
+TEST(PbrtV4Reference, CurvesFlatCylinderAndRibbonOverAFloor) { expect_matches_pbrt_v4("curves"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way
