@@ -196,6 +196,10 @@ TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4
 // pmj02bn render of the mix scene is compared with pbrt-v4's independent-sampler images of it.
 TEST(PbrtV4Reference, Pmj02bnSamplerOnTheMixScene) { expect_matches_pbrt_v4("mix-pmj02bn", nullptr, false, "mix"); }
 TEST(PbrtV4Reference, CoatedConductorSmoothCoatOnSmoothMetal) { expect_matches_pbrt_v4("coatedconductor-smooth"); }
+// Integrator "volpath": the camera in chromatic fog, an interface sphere of denser fog, a diffuse
+// floor and sphere and an area light. eyetrace's shadow rays carry the exact transmittance where
+// pbrt-v4 ratio-tracks it: the same expectation, different noise.
+TEST(PbrtV4Reference, VolpathCameraInChromaticFogWithAnInterfaceSphereOfDenserFog) { expect_matches_pbrt_v4("fog"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way
