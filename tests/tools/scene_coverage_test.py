@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """tools/scene-coverage on a small stand-in for a pbrt-v4-scenes checkout: five of the 98
 scene paths with scenes whose outcome is known (clean, blocked by an unsupported sampler,
-missing an included file, ignoring media, naming a material of a missing file), the other 93
+missing an included file, ignoring a grid medium, naming a material of a missing file), the other 93
 absent. Checks each row's status and the counts.
 
     scene_coverage_test.py EYETRACE WORKDIR
@@ -20,7 +20,7 @@ def main(eyetrace, work):
         "smoke-plume/plume.pbrt": 'WorldBegin\nLightSource "point"\nShape "sphere"\n',
         "lte-orb/lte-orb-silver.pbrt": 'Sampler "pmj02bn"\nWorldBegin\nShape "sphere"\n',
         "killeroos/killeroo-simple.pbrt": 'WorldBegin\nInclude "geometry/killeroo.pbrt"\n',
-        "kroken/camera-1.pbrt": 'WorldBegin\nMakeNamedMedium "m" "string type" "homogeneous"\n',
+        "kroken/camera-1.pbrt": 'WorldBegin\nMakeNamedMedium "m" "string type" "cloud"\n',
         # The named material would be defined in the missing materials.pbrt.
         "sportscar/sportscar-sky.pbrt": 'WorldBegin\nInclude "materials.pbrt"\nNamedMaterial "paint"\n',
     }
