@@ -354,6 +354,9 @@ void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::world_begin(Tokenizer&, const SourceLoc& loc) {
   require_options(loc, "WorldBegin");
   in_world_ = true;
+  // Without a Camera directive (a camera given on the command line, as for the eye models) the
+  // camera sits where one declared here would: in the outside medium current now.
+  if (!desc_.has_camera) desc_.camera.media = state_.media;
   state_.ctm = {Transform(), Transform()};
   state_.singular_at.reset();
   state_.active = {true, true};
