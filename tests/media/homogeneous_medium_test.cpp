@@ -121,6 +121,24 @@ Shape "sphere"
   EXPECT_FALSE(s.scene->has_media());  // the grid is vacuum: nothing to trace
 }
 
+TEST(MediumInterface, IntegratorsOtherThanVolpathWarnThatTheyIgnoreMedia) {
+  const std::string text = R"(Film "rgb" "integer xresolution" 4 "integer yresolution" 4
+Integrator "{}"
+MakeNamedMedium "fog" "string type" "homogeneous"
+WorldBegin
+MediumInterface "fog" ""
+Material "interface"
+Shape "sphere"
+)";
+  for (const char* name : {"path", "volpath", "bdpt"}) {
+    const int before = warning_count();
+    build_render_setup(parse_scene_string(fmt::format(fmt::runtime(text), name), "i.pbrt", "."), {});
+    // bdpt also warns that path stands in for it.
+    const int expected = std::string(name) == "volpath" ? 0 : std::string(name) == "bdpt" ? 2 : 1;
+    EXPECT_EQ(warning_count() - before, expected) << name;
+  }
+}
+
 TEST(MediumInterface, TheCameraSitsInTheOutsideMediumCurrentAtCamera) {
   const std::string text = R"(MakeNamedMedium "fog" "string type" "homogeneous"
 MediumInterface "" "fog"
