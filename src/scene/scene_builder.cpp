@@ -377,9 +377,9 @@ class Builder {
   const bool keep_going_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
-  std::map<std::string, const Medium*> media_;  // null: vacuum (an unsupported type)
-  std::set<std::string> materials_in_progress_;
-  std::set<const Material*> interfaces_;  // the "interface" materials made  // being made (a mix naming materials)
+  std::map<std::string, const Medium*> media_;   // null: vacuum (an unsupported type)
+  std::set<std::string> materials_in_progress_;  // being made (a mix naming materials)
+  std::set<const Material*> interfaces_;         // the "interface" materials made
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
   DiagnosticList errors_;
 };
