@@ -11,7 +11,9 @@
 //    breaks the equality;
 //  - with absorption (albedo < 1) the sphere is darker: energy never grows;
 //  - wavelengths a medium does not touch (sigma_t = 0) pass unchanged, also in a medium with
-//    no boundary, and no estimate is NaN or infinite.
+//    no boundary, and no estimate is NaN or infinite;
+//  - a point light in absorbing fog: the exact shadow-ray transmittance times the camera ray's;
+//  - the eye camera's rays leave into the camera's medium.
 // Scenes without media render with "path" (the same code): tests/integrators/default_integrator_test.cpp.
 #include <gtest/gtest.h>
 
@@ -192,6 +194,40 @@ TEST(VolPathIntegrator, WavelengthsWithoutExtinctionPassUnchangedThroughUnbounde
   const Stats foggy = render("MediumInterface \"\" \"fog\"\n" + view + fog + "WorldBegin\n" + sky);
   EXPECT_NEAR(foggy.mean[3], open.mean[3], 5 * foggy.se[3] + 1e-6);
   for (int c = 4; c < 6; ++c) EXPECT_LT(foggy.mean[c], open.mean[c]) << "bucket " << c - 3;
+}
+
+// A point light (a delta light: light sampling alone, weight 1) 1 unit above a diffuse disk, seen
+// from 2 units away, all in absorbing fog: the radiance is the clear scene's times
+// exp(-sigma (1 + 2)) per wavelength, the shadow ray's transmittance (exact) times the camera
+// ray's (sampled).
+TEST(VolPathIntegrator, PointLightInAbsorbingFogIsAttenuatedAlongBothSegments) {
+  const std::string fog =
+      "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"spectrum sigma_a\" [400 0.1 499.99 0.1 500.01 0.3 "
+      "599.99 0.3 600.01 0.6 700 0.6] \"rgb sigma_s\" [0 0 0]\n";
+  const double sigma[3] = {0.1, 0.3, 0.6};
+  auto scene = [&](const std::string& medium, int spp) {
+    return fog + "MediumInterface \"\" \"" + medium + "\"\n" +
+           fmt::format(R"(LookAt 1.41421356 0 1.41421356  0 0 0  0 1 0
+Camera "perspective" "float fov" 0.2
+{}
+Sampler "independent" "integer pixelsamples" {}
+PixelFilter "box"
+Integrator "volpath" "integer maxdepth" 5
+WorldBegin
+LightSource "point" "point3 from" [0 0 1] "rgb I" [1 1 1]
+Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+Shape "disk" "float radius" 1
+)",
+                       kSpectralFilm, spp);
+  };
+  const Stats clear = render(scene("", 4));
+  const Stats foggy = render(scene("fog", 64));
+  for (int b = 0; b < 3; ++b) {
+    const int c = 3 + b;
+    ASSERT_GT(clear.mean[c], 0.0);
+    const double expected = clear.mean[c] * std::exp(-sigma[b] * 3.0);
+    EXPECT_NEAR(foggy.mean[c], expected, 5 * foggy.se[c] + 1e-6) << "bucket " << b;
+  }
 }
 
 // The eye's rays leave its cornea into the medium the camera sits in: an absorber of 0.1 per
