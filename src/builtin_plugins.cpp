@@ -23,6 +23,7 @@
 #include "materials/interface_material.h"
 #include "materials/mix_material.h"
 #include "materials/thin_dielectric_material.h"
+#include "media/homogeneous_medium.h"
 #include "optics/eye_models.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
@@ -123,6 +124,8 @@ void register_builtin_plugins(Registry& r) {
   r.lights.add("infinite", create_infinite_light, infinite_light_spec());
   r.area_lights.add("diffuse", create_diffuse_area_light, diffuse_area_light_spec());
 
+  r.media.add("homogeneous", create_homogeneous_medium, homogeneous_medium_spec());
+
   r.integrators.add("path", create_path_integrator, path_integrator_spec());
   r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());
   r.integrators.add("direct", create_direct_integrator, direct_integrator_spec());
@@ -148,6 +151,7 @@ std::vector<PluginListing> Registry::listing() const {
   add(spectrum_textures);
   add(lights);
   add(area_lights);
+  add(media);
   add(integrators);
   out.insert(out.end(), built_in.begin(), built_in.end());
   return out;

@@ -6,6 +6,7 @@ namespace eyetrace {
 
 class Material;
 class Light;
+struct MediumInterface;
 
 struct SurfaceInteraction {
   Vec3 p{0.f};
@@ -21,6 +22,9 @@ struct SurfaceInteraction {
   float time = 0.f;
   const Material* material = nullptr;  // null: an interface that only bounds a medium; pass through
   const Light* area_light = nullptr;   // the emitter on this surface, or null
+  // The media on its two sides where the surface bounds a medium (inside != outside); null
+  // where it does not, and a ray crossing it stays in the medium it was in (pbrt-v4).
+  const MediumInterface* medium_interface = nullptr;
   // Screen-space footprint for texture filtering (0 = point sampling).
   float footprint = 0.f;
 };

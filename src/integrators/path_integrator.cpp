@@ -4,6 +4,7 @@
 
 #include "core/material.h"
 #include "core/sampling.h"
+#include "integrators/volpath_integrator.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -165,7 +166,9 @@ const PluginSpec& path_integrator_spec() {
 
 const PluginSpec& volpath_integrator_spec() {
   static const PluginSpec spec =
-      make_path_spec(5, "as `path` (no participating media)", "Renders exactly as `path`, with a warning.");
+      make_path_spec(5, "`path` with homogeneous participating media (spectral MIS, Henyey-Greenstein scattering)",
+                     "Shadow rays carry the exact transmittance of homogeneous media (pbrt-v4 ratio-tracks it); a "
+                     "scene without media is rendered by `path`, which then gives the same image.");
   return spec;
 }
 
@@ -184,11 +187,10 @@ std::unique_ptr<Integrator> create_direct_integrator(const IntegratorContext& ct
 }
 
 std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& ctx) {
-  // "volpath" is also pbrt-v4's default for a scene without an Integrator line (never parsed:
-  // line 0); only a scene that asks for it by name is told that it gets "path".
-  if (ctx.params.loc().line > 0)
-    warn(ctx.params.loc(), "integrator \"volpath\": participating media are not supported; rendering with \"path\"");
-  return make_path(ctx, volpath_integrator_spec(), "volpath", "path");
+  // Without media volpath's estimator is path's: the same code renders it, at the same speed.
+  if (!ctx.scene.has_media()) return make_path(ctx, volpath_integrator_spec(), "volpath", "volpath");
+  const PathParams p = read_path_params(ctx, volpath_integrator_spec(), "volpath");
+  return std::make_unique<VolPathIntegrator>(ctx.scene, p.max_depth, p.rr_threshold);
 }
 
 }  // namespace eyetrace

@@ -140,6 +140,7 @@ Scene::~Scene() {
 void Scene::add_primitive(Primitive prim) {
   if (committed_) throw std::logic_error("Scene::add_primitive after commit()");
   if (!prim.shape) throw std::invalid_argument("Scene::add_primitive: null shape");
+  has_media_ = has_media_ || prim.media.is_transition();
   unsigned id = prim.shape->attach(device_, root_);
   check_embree(device_, "adding a shape to the Embree scene");
   bounds_.extend(prim.shape->bounds());
@@ -155,6 +156,7 @@ void Scene::add_primitive(Primitive prim) {
 void Scene::define_instance(const std::string& name, std::vector<Primitive> prims) {
   if (committed_) throw std::logic_error("Scene::define_instance after commit()");
   if (groups_.count(name)) throw_error(fmt::format("object \"{}\" is defined twice", name));
+  for (const Primitive& p : prims) has_media_ = has_media_ || p.media.is_transition();
   auto group = std::make_unique<InstanceGroup>();
   group->scene = rtcNewScene(device_);
   rtcSetSceneFlags(group->scene, RTC_SCENE_FLAG_ROBUST);
@@ -199,6 +201,11 @@ void Scene::add_instance(const std::string& name, const Transform& world_from_in
   geom_kind_[id] = 1;
   geom_index_[id] = placements_.size();
   placements_.push_back(Placement{group, world_from_instance});
+}
+
+void Scene::set_camera_medium(const Medium* medium) {
+  camera_medium_ = medium;
+  has_media_ = has_media_ || medium;
 }
 
 void Scene::add_light(std::unique_ptr<Light> light) {
@@ -258,6 +265,7 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction* si) const {
   si->wo = -glm::normalize(ray.d);
   si->material = prim->material;
   si->area_light = prim->area_light;
+  si->medium_interface = prim->media.is_transition() ? &prim->media : nullptr;
   return true;
 }
 

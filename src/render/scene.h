@@ -13,6 +13,7 @@
 #include "core/interaction.h"
 #include "core/light.h"
 #include "core/material.h"
+#include "core/medium.h"
 #include "core/shape.h"
 #include "core/texture.h"
 #include "core/transform.h"
@@ -31,6 +32,7 @@ struct Primitive {
   std::unique_ptr<Shape> shape;
   const Material* material = nullptr;
   const Light* area_light = nullptr;
+  MediumInterface media;  // vacuum on both sides unless a MediumInterface was in effect
 };
 
 class Scene {
@@ -55,6 +57,8 @@ class Scene {
   bool has_instance(const std::string& name) const;
   void add_instance(const std::string& name, const Transform& world_from_instance);
   void add_light(std::unique_ptr<Light> light);
+  // The medium the camera sits in (pbrt-v4: the outside medium current at the Camera directive).
+  void set_camera_medium(const Medium* medium);
   // Builds the BVH and runs light preprocessing. Call once, after everything is added.
   void commit();
 
@@ -71,6 +75,9 @@ class Scene {
   const std::vector<const Light*>& lights() const { return lights_; }
   const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
   Bounds3 bounds() const { return bounds_; }
+  const Medium* camera_medium() const { return camera_medium_; }
+  // Whether any ray can travel through a medium: the camera sits in one or a surface bounds one.
+  bool has_media() const { return has_media_; }
   size_t primitive_count() const;  // triangles + analytic shapes, instances counted once
   RTCDevice device() const { return device_; }
   // The committed Embree scene, for benchmarks that time Embree's traversal alone.
@@ -91,6 +98,8 @@ class Scene {
   std::vector<size_t> geom_index_;
   Bounds3 bounds_;
   bool committed_ = false;
+  const Medium* camera_medium_ = nullptr;
+  bool has_media_ = false;
   std::atomic<RayRecord*> record_{nullptr};
   mutable std::mutex record_lock_;
 };

@@ -14,6 +14,7 @@
 #include "core/filter.h"
 #include "core/light.h"
 #include "core/material.h"
+#include "core/medium.h"
 #include "core/sampler.h"
 #include "core/shape.h"
 #include "core/texture.h"
@@ -84,6 +85,12 @@ struct AreaLightContext {
   std::string search_dir;
 };
 
+// A medium's parameters and the transform current at its MakeNamedMedium (grids are placed by it).
+struct MediumContext {
+  const ParameterList& params;
+  Transform world_from_medium;
+};
+
 struct IntegratorContext {
   const ParameterList& params;
   const Scene& scene;
@@ -98,6 +105,7 @@ using SpectrumTextureFactory = std::function<std::unique_ptr<SpectrumTexture>(co
 using LightFactory = std::function<std::unique_ptr<Light>(const LightContext&)>;
 using AreaLightFactory = std::function<std::unique_ptr<Light>(const AreaLightContext&)>;
 using FilterFactory = std::function<std::unique_ptr<Filter>(const ParameterList&)>;
+using MediumFactory = std::function<std::unique_ptr<Medium>(const MediumContext&)>;
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const IntegratorContext&)>;
 
 // One kind of plugin: name -> factory and declared parameters, in registration order.
@@ -150,6 +158,7 @@ struct Registry {
   PluginTable<SpectrumTextureFactory> spectrum_textures{"spectrum texture"};
   PluginTable<LightFactory> lights{"light"};
   PluginTable<AreaLightFactory> area_lights{"area light"};
+  PluginTable<MediumFactory> media{"medium"};
   PluginTable<IntegratorFactory> integrators{"integrator"};
   // Directives that are built in rather than plugins but declare their parameters too (Film).
   std::vector<PluginListing> built_in;

@@ -209,6 +209,8 @@ class Builder {
       if (!attempt([&] { build_texture(t); }) && keep_going_) add_stand_in(t);
     if (!keep_going_) errors_.throw_if_any();
     if (keep_going_) check_every_material();
+    for (const auto& [name, m] : desc_.media) attempt([&] { build_medium(name, m); });
+    attempt([&] { setup_.scene->set_camera_medium(medium(desc_.camera.media.outside, desc_.camera.media.loc)); });
     for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
     std::set<std::string> used;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
@@ -264,6 +266,37 @@ class Builder {
     setup_.scene->add_light(std::move(light));
   }
 
+  // pbrt-v4's grid media are not built: rays cross their boundaries as if through vacuum.
+  void build_medium(const std::string& name, const TransformedEntity& m) {
+    media_[name] = nullptr;
+    if (m.name == "uniformgrid" || m.name == "rgbgrid" || m.name == "cloud" || m.name == "nanovdb") {
+      m.params.mark_all_used();
+      warn(m.loc,
+           fmt::format("medium type \"{}\" is not supported; MakeNamedMedium \"{}\" ignored (vacuum)", m.name, name));
+      return;
+    }
+    MediumContext ctx{m.params, m.world_from_object};
+    auto made = reg_.media.at(m.name, m.loc)(ctx);
+    media_[name] = setup_.scene->own(std::move(made));
+  }
+
+  // A name from MediumInterface ("" is vacuum); `loc` is that directive's.
+  const Medium* medium(const std::string& name, const SourceLoc& loc) const {
+    if (name.empty()) return nullptr;
+    auto it = media_.find(name);
+    if (it != media_.end()) return it->second;
+    if (desc_.media.count(name)) return nullptr;  // defined, but failed: its error is already reported
+    fail(loc, "MediumInterface: no medium named \"{}\" has been defined with MakeNamedMedium{}", name,
+         parsing_hint(name));
+  }
+
+  std::string parsing_hint(const std::string& name) const {
+    std::vector<std::string> names;
+    for (const auto& kv : desc_.media) names.push_back(kv.first);
+    std::string m = closest_match(name, names);
+    return m.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", m);
+  }
+
   void build_texture(const TextureEntity& t) {
     TextureContext ctx{t.params, t.world_from_object, *setup_.textures, desc_.search_dir};
     if (t.value_type == "float") {
@@ -309,6 +342,7 @@ class Builder {
     const std::string& name = e->name.empty() || e->name == "none" ? std::string("interface") : e->name;
     auto m = reg_.materials.at(name, e->loc)(ctx);
     const Material* raw = m ? setup_.scene->own(std::move(m)) : nullptr;
+    if (name == "interface") interfaces_.insert(raw);
     materials_[key] = raw;
     return raw;
   }
@@ -316,10 +350,14 @@ class Builder {
   std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light) {
     ShapeContext ctx{s.params, s.world_from_object, s.reverse_orientation, desc_.search_dir, setup_.textures.get()};
     auto shapes = reg_.shapes.at(s.name, s.loc)(ctx);
+    // A shape with the interface material has no surface: its primitives carry no material, which
+    // tells the integrators (and volpath's shadow rays) to pass through it.
     const Material* mat = material(s.material, s.loc);
+    if (interfaces_.count(mat)) mat = nullptr;
+    const MediumInterface media{medium(s.media.inside, s.media.loc), medium(s.media.outside, s.media.loc)};
     std::vector<Primitive> prims;
     for (auto& shape : shapes) {
-      Primitive prim{std::move(shape), mat, nullptr};
+      Primitive prim{std::move(shape), mat, nullptr, media};
       if (s.area_light >= 0) {
         if (!allow_area_light) {
           warn(s.loc, "area lights inside object instances are not supported (as in pbrt-v4); the shape does not emit");
@@ -390,7 +428,9 @@ class Builder {
   const bool keep_going_;
   const Registry& reg_ = Registry::builtin();
   std::map<std::string, const Material*> materials_;
+  std::map<std::string, const Medium*> media_;   // null: vacuum (an unsupported type)
   std::set<std::string> materials_in_progress_;  // being made (a mix naming materials)
+  std::set<const Material*> interfaces_;         // the "interface" materials made
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
   DiagnosticList errors_;
 };
@@ -486,6 +526,9 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     attempt([&] {
       IntegratorContext ictx{in.params, *setup.scene};
       setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
+      // As pbrt-v4 warns: only volpath traces media (eyetrace's bdpt stands in with path).
+      if (setup.scene->has_media() && in.name != "volpath")
+        warn(in.loc, fmt::format("integrator \"{}\" ignores participating media; \"volpath\" traces them", in.name));
     });
   else if (o.keep_going)  // no scene to make it for: its name and parameters are still checked
     attempt([&] {

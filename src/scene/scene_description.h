@@ -17,8 +17,15 @@ struct SceneEntity {
   SourceLoc loc;
 };
 
+// The names of a MediumInterface ("" is vacuum) and where it was given, for errors about them.
+struct MediumNames {
+  std::string inside, outside;
+  SourceLoc loc;
+};
+
 struct CameraEntity : SceneEntity {
   Transform world_from_camera;
+  MediumNames media;  // the camera sits in `outside` (pbrt-v4)
 };
 
 struct TransformedEntity : SceneEntity {
@@ -36,6 +43,7 @@ struct MaterialRef {
 struct ShapeEntity : TransformedEntity {
   MaterialRef material;
   int area_light = -1;  // index into SceneDescription::area_lights, -1 if the shape emits nothing
+  MediumNames media;
 };
 
 struct TextureEntity : TransformedEntity {
@@ -70,7 +78,8 @@ struct SceneDescription {
   std::vector<TextureEntity> textures;                 // in file order (later may use earlier)
   std::vector<ShapeEntity> shapes;
   std::vector<TransformedEntity> lights;
-  std::vector<TransformedEntity> area_lights;  // AreaLightSource, referenced by shapes
+  std::vector<TransformedEntity> area_lights;      // AreaLightSource, referenced by shapes
+  std::map<std::string, TransformedEntity> media;  // MakeNamedMedium; name: the medium's type
   std::map<std::string, InstanceDefinition> instances;
   std::vector<InstanceUse> instance_uses;
 

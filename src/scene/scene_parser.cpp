@@ -311,6 +311,7 @@ void SceneParser::camera(Tokenizer& tok, const SourceLoc& loc) {
   static_cast<SceneEntity&>(desc_.camera) = std::move(e);
   desc_.camera.world_from_camera = camera_from_world.inverse();
   desc_.has_camera = true;
+  desc_.camera.media = state_.media;
   // pbrt-v4: the named coordinate system "camera" is the camera's world_from_camera.
   coordinate_systems_["camera"] = {state_.ctm[0].inverse(), state_.ctm[1].inverse()};
 }
@@ -353,6 +354,9 @@ void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::world_begin(Tokenizer&, const SourceLoc& loc) {
   require_options(loc, "WorldBegin");
   in_world_ = true;
+  // Without a Camera directive (a camera given on the command line, as for the eye models) the
+  // camera sits where one declared here would: in the outside medium current now.
+  if (!desc_.has_camera) desc_.camera.media = state_.media;
   state_.ctm = {Transform(), Transform()};
   state_.singular_at.reset();
   state_.active = {true, true};
@@ -457,6 +461,7 @@ void SceneParser::shape(Tokenizer& tok, const SourceLoc& loc) {
   s.reverse_orientation = state_.reverse_orientation;
   s.material = state_.material;
   s.area_light = state_.area_light;
+  s.media = state_.media;
   if (!current_object_) {
     desc_.shapes.push_back(std::move(s));
     return;
@@ -508,17 +513,26 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
 
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "MakeNamedMedium", "medium name");
-  read_parameter_list(tok, loc, desc_.search_dir);
-  warn(loc, fmt::format("participating media are not supported; MakeNamedMedium \"{}\" ignored", name));
+  ParameterList params = read_parameter_list(tok, loc, desc_.search_dir);
+  if (auto it = desc_.media.find(name); it != desc_.media.end())
+    fail(loc, "MakeNamedMedium: medium \"{}\" is already defined at {}", name, it->second.loc.to_string());
+  if (!params.has("type"))
+    fail(loc, "MakeNamedMedium \"{}\": missing the \"string type\" parameter (e.g. \"homogeneous\")", name);
+  TransformedEntity m;
+  m.name = params.get_string("type", "");  // marks it used
+  m.params = std::move(params);
+  m.loc = loc;
+  m.world_from_object = current_transform(loc, "MakeNamedMedium");
+  desc_.media[name] = std::move(m);
 }
 
+// Names only: pbrt-v4 resolves them when the scene is built, so a medium may be defined after
+// its first use; the builder reports unknown names at this directive's line.
 void SceneParser::medium_interface(Tokenizer& tok, const SourceLoc& loc) {
   std::string inside = read_name(tok, "MediumInterface", "medium name");
   std::string outside = inside;
   if (tok.peek().kind == TokenKind::String) outside = tok.next().string_value();
-  if (!inside.empty() || !outside.empty())
-    warn(loc,
-         fmt::format("participating media are not supported; MediumInterface \"{}\" \"{}\" ignored", inside, outside));
+  state_.media = MediumNames{inside, outside, loc};
 }
 
 }  // namespace eyetrace::parsing

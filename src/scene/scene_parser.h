@@ -32,6 +32,7 @@ struct GraphicsState {
   // before): the shapes under it are dropped with a warning, anything else there is an error.
   std::optional<SourceLoc> singular_at;
   int area_light = -1;
+  MediumNames media;  // the current MediumInterface
   std::vector<Param> shape_attributes, light_attributes, material_attributes, texture_attributes;
 };
 

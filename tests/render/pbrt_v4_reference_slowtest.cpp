@@ -219,6 +219,13 @@ TEST(PbrtV4Reference, HairOnStripsWithMelaninReflectanceAndSigmaA) { expect_matc
 // "ribbon" over a floor, lit from the side (their shadows too): pbrt-v4's ray-facing bands,
 // its bent cylinder normal and its narrowed ribbon, as shapes/curve.h reproduces them.
 TEST(PbrtV4Reference, CurvesFlatCylinderAndRibbonOverAFloor) { expect_matches_pbrt_v4("curves"); }
+// Integrator "volpath": the camera in chromatic fog, an interface sphere of denser fog, a diffuse
+// floor and sphere and an area light. eyetrace's shadow rays carry the exact transmittance where
+// pbrt-v4 ratio-tracks it: the same expectation, different noise.
+TEST(PbrtV4Reference, VolpathCameraInChromaticFogWithAnInterfaceSphereOfDenserFog) { expect_matches_pbrt_v4("fog"); }
+// The same with the denser fog emitting: pbrt-v4 reads "Le" as an area light's "L" (normalised
+// by its luminance), and weights emission at collisions by r_e.
+TEST(PbrtV4Reference, VolpathEmissiveMediumInsideAnInterfaceSphere) { expect_matches_pbrt_v4("fog-glow"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way

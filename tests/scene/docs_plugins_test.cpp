@@ -123,7 +123,7 @@ std::map<std::string, NameSet> registered_by_directive(const Registry& r) {
           {"PixelFilter", keys_of(r.filters)},   {"Shape", keys_of(r.shapes)},
           {"Material", keys_of(r.materials)},    {"Texture", textures},
           {"LightSource", keys_of(r.lights)},    {"AreaLightSource", keys_of(r.area_lights)},
-          {"Integrator", keys_of(r.integrators)}};
+          {"MakeNamedMedium", keys_of(r.media)}, {"Integrator", keys_of(r.integrators)}};
 }
 
 // "Directive name" for every registered plugin not in the first column of its directive's table.

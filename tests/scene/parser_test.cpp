@@ -316,7 +316,8 @@ WorldBegin)");
   EXPECT_EQ(d.materials.size(), 1u);
 }
 
-TEST(Parser, MediaAreIgnoredWithWarnings) {
+// Media are kept by name (resolved by the builder); only Attribute "medium" is ignored, warned.
+TEST(Parser, MediaAreParsedAndAttributeMediumIsIgnoredWithAWarning) {
   int before = warning_count();
   SceneDescription d = parse(R"(MakeNamedMedium "fog_for_parser_test" "string type" "homogeneous"
 WorldBegin
@@ -325,7 +326,11 @@ Attribute "medium" "float sigma_a" 1
 Shape "sphere"
 )");
   EXPECT_EQ(d.shapes.size(), 1u);
-  EXPECT_EQ(warning_count() - before, 3);
+  EXPECT_EQ(warning_count() - before, 1);
+  ASSERT_EQ(d.media.count("fog_for_parser_test"), 1u);
+  EXPECT_EQ(d.media.at("fog_for_parser_test").name, "homogeneous");
+  EXPECT_EQ(d.shapes[0].media.inside, "fog_for_parser_test");
+  EXPECT_EQ(d.shapes[0].media.outside, "");
 }
 
 TEST(Parser, DirectiveTextFromTheCommandLine) {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """tools/scene-coverage on a small stand-in for a pbrt-v4-scenes checkout: five of the 98
-scene paths with scenes whose outcome is known (clean, blocked by an unsupported sampler,
-missing an included file, ignoring media, naming a material of a missing file), the other 93
+scene paths with scenes whose outcome is known (clean, blocked by an unsupported material,
+missing an included file, ignoring a grid medium, naming a material of a missing file), the other 93
 absent. Checks each row's status and the counts.
 
     scene_coverage_test.py EYETRACE WORKDIR
@@ -18,9 +18,9 @@ def main(eyetrace, work):
     shutil.rmtree(work, ignore_errors=True)
     scenes = {
         "smoke-plume/plume.pbrt": 'WorldBegin\nLightSource "point"\nShape "sphere"\n',
-        "lte-orb/lte-orb-silver.pbrt": 'Sampler "pmj02bn"\nWorldBegin\nShape "sphere"\n',
+        "lte-orb/lte-orb-silver.pbrt": 'WorldBegin\nMaterial "subsurface"\nShape "sphere"\n',
         "killeroos/killeroo-simple.pbrt": 'WorldBegin\nInclude "geometry/killeroo.pbrt"\n',
-        "kroken/camera-1.pbrt": 'WorldBegin\nMakeNamedMedium "m" "string type" "homogeneous"\n',
+        "kroken/camera-1.pbrt": 'WorldBegin\nMakeNamedMedium "m" "string type" "cloud"\n',
         # The named material would be defined in the missing materials.pbrt.
         "sportscar/sportscar-sky.pbrt": 'WorldBegin\nInclude "materials.pbrt"\nNamedMaterial "paint"\n',
     }
@@ -34,14 +34,14 @@ def main(eyetrace, work):
     text = open(out).read()
     expected_rows = [
         "| `smoke-plume/plume.pbrt` | renders | — | — | 0 |",
-        '| `lte-orb/lte-orb-silver.pbrt` | blocked | sampler "pmj02bn" | — | 0 |',
+        '| `lte-orb/lte-orb-silver.pbrt` | blocked | material "subsurface" | — | 0 |',
         "| `killeroos/killeroo-simple.pbrt` | missing data only | — | — | 1 |",
         "| `kroken/camera-1.pbrt` | renders, ignoring features | — | participating media (ignored) | 0 |",
         "| `sportscar/sportscar-sky.pbrt` | missing data only | — | — | 1 |",
         "| `villa/villa-daylight.pbrt` | not checked (file not at hand) | — | — | 0 |",
         "| renders | 1 |", "| renders, ignoring features | 1 |", "| missing data only | 2 |", "| blocked | 1 |",
         "| not checked | 93 |",
-        '| sampler "pmj02bn" | 1: lte-orb-silver.pbrt |',
+        '| material "subsurface" | 1: lte-orb-silver.pbrt |',
     ]
     missing = [r for r in expected_rows if r not in text.splitlines()]
     if missing:
