@@ -183,7 +183,8 @@ TEST(Sweep, AnInterruptedSweepLeavesNoHalfWrittenFileAndARerunFinishesIt) {
   auto rows = read_csv(dir.file("out/s.csv"));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[1][3], "done");
-  EXPECT_EQ(rows[2][3], "interrupted") << read_text(dir.file("out/s.csv"));
+  // The signal lands in the second render, or (on a loaded machine) just before it starts.
+  EXPECT_TRUE(rows[2][3] == "interrupted" || rows[2][3] == "not run") << read_text(dir.file("out/s.csv"));
   EXPECT_EQ(rows[3][3], "not run");
   for (const auto& entry : fs::directory_iterator(dir.file("out")))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
