@@ -65,8 +65,8 @@ const PluginSpec& perspective_camera_spec() {
           param::real("frameaspectratio")
               .above(0)
               .describe("aspect for the default screen window instead of the image's"),
-          param::real("shutteropen", 0).describe("other values warn (no motion blur)"),
-          param::real("shutterclose", 1).describe("other values warn (no motion blur)"),
+          param::real("shutteropen", 0).describe("with shutterclose, the film's exposure time (no motion blur)"),
+          param::real("shutterclose", 1).describe("with shutteropen, the film's exposure time (no motion blur)"),
       }};
   return spec;
 }
@@ -89,9 +89,9 @@ static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const
   }
   if (p.has("frameaspectratio") && sw.empty())
     s.screen_window = default_screen_window(ctx.resolution, p.get_float("frameaspectratio"));
-  // Motion blur is not supported: shutter times are accepted only as the instant default.
+  // The shutter interval sets the film's exposure (scene_builder.cpp), but nothing moves in it.
   if (p.get_float("shutteropen") != 0.f || p.get_float("shutterclose") != 1.f)
-    warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; ignored");
+    warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; the interval sets only the exposure time");
   return s;
 }
 

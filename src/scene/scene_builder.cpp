@@ -37,7 +37,7 @@ std::vector<ParamSpec> film_base_params() {
       param::reals("cropwindow").size(4).range(0, 1).describe("x0 x1 y0 y1, fractions of the image"),
       param::integers("pixelbounds").size(4).describe("x0 x1 y0 y1, pixels (a crop window takes precedence)"),
       param::string("filename", "pbrt.exr").describe("output image (a command-line output replaces it)"),
-      param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposuretime"),
+      param::real("iso", 100).above(0).describe("the image is scaled by iso/100 × exposure time"),
       param::real("exposuretime", 1).above(0).with_unit("s"),
       param::real("scale", 1)
           .above(0)
@@ -61,8 +61,8 @@ std::vector<ParamSpec> film_base_params() {
 const PluginSpec& film_spec() {
   static const PluginSpec spec{
       "Film", "the image: its size, crop window, output file and exposure",
-      "`savefp16` and `diagonal` are accepted and ignored. pbrt-v4 takes the exposure time from the camera's shutter "
-      "interval; eyetrace from `exposuretime`. "
+      "`savefp16` and `diagonal` are accepted and ignored. The exposure time is the camera's shutter interval "
+      "(`shutterclose` - `shutteropen`, as pbrt-v4) times `exposuretime` (eyetrace's own, pbrt-v4 has none). "
       "The sensor's XYZ matrix is fitted over 380-780 nm of D-series illuminant (pbrt-v4: 300-830 nm).",
       film_base_params()};
   return spec;
@@ -114,11 +114,30 @@ bool has_extension(const std::string& path, const std::string& ext) {
   return e == ext;
 }
 
+// pbrt-v4 takes the exposure time from the camera's shutter, shutterclose - shutteropen (its
+// BasicScene reads them from the camera's parameters for the film); eyetrace's own Film
+// "exposuretime" multiplies it. A shutter that never opens is an error, as in pbrt-v4.
+float shutter_seconds(const SceneEntity& camera) {
+  auto value = [&](const char* name, float def) {
+    const Param* p = camera.params.find(name);
+    return p && p->numbers.size() == 1 ? float(p->numbers[0]) : def;
+  };
+  const float seconds = value("shutterclose", 1.f) - value("shutteropen", 0.f);
+  if (!(seconds > 0.f)) {
+    const Param* close = camera.params.find("shutterclose");
+    fail(close ? close->loc : camera.loc,
+         "parameter \"shutterclose\": the shutter never opens (shutterclose - shutteropen = {}): the image would be "
+         "black",
+         seconds);
+  }
+  return seconds;
+}
+
 // The pixel sensor and clamp (pbrt-v4's PixelSensor::Create and RGBFilm::Create): cie1931 is
 // white balanced only when given a temperature, a camera at 6500 K unless given one.
-FilmResponse read_film_response(const PluginParams& p) {
+FilmResponse read_film_response(const PluginParams& p, float shutter) {
   FilmResponse r;
-  r.imaging_ratio = p.get_float("iso") / 100.f * p.get_float("exposuretime");
+  r.imaging_ratio = p.get_float("iso") / 100.f * p.get_float("exposuretime") * shutter;
   if (p.has("maxcomponentvalue")) r.max_component = p.get_float("maxcomponentvalue");
   const std::string name = p.get_string("sensor");
   const double kelvin = p.get_float("whitebalance");
@@ -136,7 +155,12 @@ FilmResponse read_film_response(const PluginParams& p) {
   return r;
 }
 
-FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
+// The camera the render uses: the command line's, else the scene's.
+const SceneEntity& scene_camera(const SceneDescription& desc, const RenderOverrides& o) {
+  return o.camera ? *o.camera : static_cast<const SceneEntity&>(desc.camera);
+}
+
+FilmSettings read_film(const SceneEntity& film, const SceneEntity& camera, const RenderOverrides& o) {
   if (film.name != "rgb" && film.name != "gbuffer" && film.name != "spectral")
     fail(film.loc, "unsupported film \"{}\"; eyetrace supports: rgb, spectral", film.name);
   const bool spectral = film.name == "spectral", gbuffer = film.name == "gbuffer";
@@ -171,8 +195,9 @@ FilmSettings read_film(const SceneEntity& film, const RenderOverrides& o) {
   }
   if (f.bounds.area() == 0) p.fail("cropwindow", "the crop window covers no pixel");
   f.filename = p.get_string("filename");
-  f.response = read_film_response(p);
-  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * p.get_float("scale");
+  const float shutter = shutter_seconds(camera);
+  f.response = read_film_response(p, shutter);
+  f.scale = p.get_float("iso") / 100.f * p.get_float("exposuretime") * shutter * p.get_float("scale");
   if (spectral) {
     f.buckets.count = p.get_int("nbuckets");
     f.buckets.lambda_min = p.get_float("lambdamin");
@@ -437,7 +462,7 @@ class Builder {
 
 std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOverrides& o, IVec2 resolution) {
   const Registry& reg = Registry::builtin();
-  const SceneEntity& cam = o.camera ? *o.camera : static_cast<const SceneEntity&>(desc.camera);
+  const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
@@ -479,7 +504,7 @@ std::optional<uint64_t> apply_options(const SceneDescription& desc) {
 }  // namespace
 
 std::unique_ptr<Camera> build_camera(const SceneDescription& desc, const RenderOverrides& o) {
-  FilmSettings f = read_film(desc.film, o);
+  FilmSettings f = read_film(desc.film, scene_camera(desc, o), o);
   return make_camera(desc, o, f.resolution);
 }
 
@@ -500,7 +525,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     }
   };
   FilmSettings f;
-  if (!attempt([&] { f = read_film(desc.film, o); })) {
+  if (!attempt([&] { f = read_film(desc.film, scene_camera(desc, o), o); })) {
     if (!o.keep_going) errors.throw_if_any();
     f.bounds = crop_to_pixels(f.resolution, Vec4(0.f, 1.f, 0.f, 1.f));
   }
