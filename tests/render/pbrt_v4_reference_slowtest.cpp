@@ -199,6 +199,8 @@ TEST(PbrtV4Reference, AreaLightsOnCutOutShapesAndAnInvisibleEmitter) { expect_ma
 TEST(PbrtV4Reference, LoopSubdivisionClosedAndWithABoundary) { expect_matches_pbrt_v4("loopsubdiv"); }
 // An image sky seen only through a window's portal (pbrt-v4 samples it in its own parameterisation).
 TEST(PbrtV4Reference, PortalOnAWindowOfAClosedRoom) { expect_matches_pbrt_v4("portal"); }
+// The camera's shutter interval (0.4 s) with ISO 200 sets the film's exposure, as pbrt-v4 reads it.
+TEST(PbrtV4Reference, CameraShutterIntervalIsTheExposureTime) { expect_matches_pbrt_v4("shutter"); }
 // pbrt-v4's bidirectional path tracer against eyetrace's path tracer standing in for it.
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
 // pbrt-v4's pmj02bn tables are not in the oracle's source snapshot (PROVENANCE): eyetrace's
