@@ -102,10 +102,9 @@ std::optional<LightLiSample> ImageInfiniteLight::sample_li(const LightSampleCont
 }
 
 float ImageInfiniteLight::density(const Vec3& p, const Vec3& wi) const {
-  const float map_pdf = map_.pdf(to_light(wi));
-  if (!portal_) return map_pdf;
+  if (!portal_) return map_.pdf(to_light(wi));
   const float portal_pdf = portal_->pdf(p, wi);  // 0 exactly where wi misses the portal
-  return portal_pdf > 0.f ? 0.5f * (map_pdf + portal_pdf) : 0.f;
+  return portal_pdf > 0.f ? 0.5f * (map_.pdf(to_light(wi)) + portal_pdf) : 0.f;
 }
 
 float ImageInfiniteLight::pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction*) const {

@@ -84,10 +84,7 @@ std::vector<std::unique_ptr<Shape>> create_bilinearmesh_shapes(const ShapeContex
 
   MeshData mesh = bilinear_patches_to_triangles(positions, indices, normals, uvs);
   std::vector<std::unique_ptr<Shape>> shapes;
-  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                            MeshSource{ctx.params});
-  tri->set_alpha(read_alpha(ctx, params));
-  shapes.push_back(std::move(tri));
+  shapes.push_back(make_mesh_shape(std::move(mesh), ctx, params, MeshSource{ctx.params}));
   return shapes;
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/float_error.h"
+#include "shapes/hit_filter.h"
 
 namespace eyetrace {
 
@@ -254,19 +255,12 @@ bool Curve::passes(unsigned piece, float u, const Vec3& o, const Vec3& d, float 
   return alpha_.passes(ctx, o, d);
 }
 
-// As TriangleMesh::alpha_filter (a ribbon's width and alpha): clearing valid[i] makes Embree
-// skip the candidate.
+// Every candidate hit of a ribbon or a curve with alpha (shapes/hit_filter.h).
 void Curve::filter(const RTCFilterFunctionNArguments* args) {
   const auto* curve = static_cast<const Curve*>(args->geometryUserPtr);
-  const unsigned n = args->N;
-  for (unsigned i = 0; i < n; ++i) {
-    if (args->valid[i] == 0) continue;
-    const Vec3 o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
-    const Vec3 d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
-    if (!curve->passes(RTCHitN_primID(args->hit, n, i), RTCHitN_u(args->hit, n, i), o, d,
-                       RTCRayN_tfar(args->ray, n, i)))
-      args->valid[i] = 0;
-  }
+  filter_hits(args, [curve](unsigned piece, float u, float, const Vec3& o, const Vec3& d, float t) {
+    return curve->passes(piece, u, o, d, t);
+  });
 }
 
 const PluginSpec& curve_shape_spec() {

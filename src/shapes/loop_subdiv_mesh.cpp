@@ -41,10 +41,7 @@ std::vector<std::unique_ptr<Shape>> create_loopsubdiv_shapes(const ShapeContext&
         e.what());
   }
   std::vector<std::unique_ptr<Shape>> shapes;
-  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                            MeshSource{ctx.params});
-  tri->set_alpha(read_alpha(ctx, params));
-  shapes.push_back(std::move(tri));
+  shapes.push_back(make_mesh_shape(std::move(mesh), ctx, params, MeshSource{ctx.params}));
   return shapes;
 }
 

@@ -53,9 +53,7 @@ std::vector<std::unique_ptr<Shape>> create_plymesh_shapes(const ShapeContext& ct
   source.p = source.indices = source.n = source.uv = "filename";
   source.context = fmt::format("\"{}\": ", path.string());
   std::vector<std::unique_ptr<Shape>> shapes;
-  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source);
-  tri->set_alpha(read_alpha(ctx, params));
-  shapes.push_back(std::move(tri));
+  shapes.push_back(make_mesh_shape(std::move(mesh), ctx, params, source));
   return shapes;
 }
 

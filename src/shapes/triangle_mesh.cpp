@@ -4,6 +4,7 @@
 
 #include "core/float_error.h"
 #include "core/sampling.h"
+#include "shapes/hit_filter.h"
 
 namespace eyetrace {
 
@@ -142,21 +143,12 @@ bool TriangleMesh::alpha_passes(unsigned tri, float b1, float b2, const Vec3& o,
   return alpha_.passes(ctx, o, d);
 }
 
-// Embree calls this for every candidate hit of a mesh with alpha (one ray at a time here:
-// rtcIntersect1 / rtcOccluded1, N = 1, but written for any N); clearing valid[i] makes Embree
-// ignore the hit and look on. The ray is in the space the mesh lives in (instance space for an
-// instanced mesh), its tfar the candidate's distance.
+// Every candidate hit of a mesh with alpha (shapes/hit_filter.h).
 void TriangleMesh::alpha_filter(const RTCFilterFunctionNArguments* args) {
   const auto* mesh = static_cast<const TriangleMesh*>(args->geometryUserPtr);
-  const unsigned n = args->N;
-  for (unsigned i = 0; i < n; ++i) {
-    if (args->valid[i] == 0) continue;
-    const Vec3 o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
-    const Vec3 d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
-    if (!mesh->alpha_passes(RTCHitN_primID(args->hit, n, i), RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i), o,
-                            d, RTCRayN_tfar(args->ray, n, i)))
-      args->valid[i] = 0;
-  }
+  filter_hits(args, [mesh](unsigned tri, float b1, float b2, const Vec3& o, const Vec3& d, float t) {
+    return mesh->alpha_passes(tri, b1, b2, o, d, t);
+  });
 }
 
 TriangleMesh::Corner TriangleMesh::corners(unsigned tri) const {
@@ -292,6 +284,13 @@ const PluginSpec& trianglemesh_shape_spec() {
   return spec;
 }
 
+std::unique_ptr<TriangleMesh> make_mesh_shape(MeshData mesh, const ShapeContext& ctx, const PluginParams& params,
+                                              const MeshSource& source) {
+  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation, source);
+  tri->set_alpha(read_alpha(ctx, params));
+  return tri;
+}
+
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx) {
   const PluginParams params(ctx.params, trianglemesh_shape_spec(), "trianglemesh");
   MeshData mesh;
@@ -302,9 +301,7 @@ std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContex
   if (params.has("S")) params.warn_param("S", "tangents are ignored; shading frames come from \"N\" and \"uv\"");
   std::vector<int> face_indices = params.get_ints("faceIndices");
   std::vector<std::unique_ptr<Shape>> shapes;
-  auto tri = std::make_unique<TriangleMesh>(std::move(mesh), ctx.world_from_object, ctx.reverse_orientation,
-                                            MeshSource{ctx.params});
-  tri->set_alpha(read_alpha(ctx, params));
+  auto tri = make_mesh_shape(std::move(mesh), ctx, params, MeshSource{ctx.params});
   if (!face_indices.empty() && face_indices.size() != tri->primitive_count() + size_t(tri->dropped_triangles()))
     params.fail("faceIndices", fmt::format("{} face indices given for {} triangles", face_indices.size(),
                                            tri->primitive_count() + tri->dropped_triangles()));

@@ -93,6 +93,12 @@ class TriangleMesh : public Shape {
   int dropped_ = 0;
 };
 
+// A mesh shape as every plugin that makes triangles builds it: in the world through ctx's
+// transform and orientation, cut out by the shape's "alpha"; `source` names the parameters
+// validation errors point at.
+std::unique_ptr<TriangleMesh> make_mesh_shape(MeshData mesh, const ShapeContext& ctx, const PluginParams& params,
+                                              const MeshSource& source);
+
 // pbrt-v4 "trianglemesh": "point3 P", "integer indices" (optional for exactly 3 vertices),
 // "normal N", "point2 uv", "vector3 S" (ignored with a warning), "integer faceIndices".
 std::vector<std::unique_ptr<Shape>> create_trianglemesh_shapes(const ShapeContext& ctx);

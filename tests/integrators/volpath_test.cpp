@@ -19,6 +19,7 @@
 
 #include <cmath>
 
+#include "../support/render_text.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
@@ -36,19 +37,12 @@ Stats render(const std::string& text) {
   s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
   EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
   const Image img = s.film->image();
+  for (float v : img.pixels) EXPECT_TRUE(std::isfinite(v));
   Stats st;
-  const size_t n = size_t(img.width) * img.height;
   for (int c = 0; c < img.channels; ++c) {
-    double sum = 0, sum2 = 0;
-    for (size_t i = 0; i < n; ++i) {
-      const double v = img.pixels[i * img.channels + c];
-      EXPECT_TRUE(std::isfinite(v));
-      sum += v;
-      sum2 += v * v;
-    }
-    const double mean = sum / n;
-    st.mean.push_back(mean);
-    st.se.push_back(std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1)));
+    const test::MeanAndError e = test::channel_mean_and_error(img, c);
+    st.mean.push_back(e.mean);
+    st.se.push_back(e.std_error);
   }
   return st;
 }

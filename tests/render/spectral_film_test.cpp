@@ -20,6 +20,7 @@
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
+#include "../support/render_text.h"
 #include "../support/unit_box_filter.h"
 
 namespace eyetrace {
@@ -195,18 +196,10 @@ BucketMeans render_buckets(const std::string& text) {
   BucketMeans m;
   m.buckets = s.film->buckets();
   const Image img = s.film->image();
-  const double n = double(img.width) * img.height;
   for (int b = 0; b < m.buckets.count; ++b) {
-    double sum = 0, sum2 = 0;
-    for (int y = 0; y < img.height; ++y)
-      for (int x = 0; x < img.width; ++x) {
-        const double v = img.at(x, y, 3 + b);
-        sum += v;
-        sum2 += v * v;
-      }
-    const double mean = sum / n;
-    m.mean.push_back(mean);
-    m.std_error.push_back(std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1)));
+    const test::MeanAndError e = test::channel_mean_and_error(img, 3 + b);
+    m.mean.push_back(e.mean);
+    m.std_error.push_back(e.std_error);
   }
   return m;
 }

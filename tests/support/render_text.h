@@ -1,6 +1,8 @@
 // Renders scene text through the whole renderer (parser, builder, integrator, film) and returns
 // the film's image, and the image means the render-level tests compare with analytic values.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -35,6 +37,24 @@ inline double channel_mean(const Image& img, int c, int x0 = 0, int x1 = -1) {
   for (int y = 0; y < img.height; ++y)
     for (int x = x0; x < x1; ++x) sum += img.at(x, y, c);
   return sum / (double(x1 - x0) * img.height);
+}
+
+// Channel c's mean over every pixel and that mean's standard error, from the pixels' spread
+// (for tests whose pixels are independent estimates of one value).
+struct MeanAndError {
+  double mean = 0, std_error = 0;
+};
+inline MeanAndError channel_mean_and_error(const Image& img, int c) {
+  const double n = double(img.width) * img.height;
+  double sum = 0, sum2 = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const double v = img.at(x, y, c);
+      sum += v;
+      sum2 += v * v;
+    }
+  const double mean = sum / n;
+  return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1))};
 }
 
 }  // namespace eyetrace::test
