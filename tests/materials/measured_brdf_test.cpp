@@ -34,11 +34,13 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 // Sets element i of a float32 field.
 void set_float(TensorField& f, size_t i, float v) { std::memcpy(f.bytes.data() + 4 * i, &v, 4); }
 
-TEST(MeasuredBRDF, TheCommittedFileIsAccepted) { EXPECT_EQ(error_after([](TensorFile&) {}), ""); }
+TEST(MeasuredBRDF, TheCommittedFileIsAccepted) {
+  EXPECT_EQ(error_after([](TensorFile&) {}), "");
+}
 
 TEST(MeasuredBRDF, EachMissingFieldIsNamed) {
-  for (const char* name : {"description", "jacobian", "theta_i", "phi_i", "wavelengths", "ndf", "sigma", "vndf",
-                           "luminance", "spectra"}) {
+  for (const char* name :
+       {"description", "jacobian", "theta_i", "phi_i", "wavelengths", "ndf", "sigma", "vndf", "luminance", "spectra"}) {
     const std::string e = error_after([&](TensorFile& f) { f.fields.erase(name); });
     EXPECT_TRUE(has(e, std::string("no field \"") + name + "\"")) << name << ": " << e;
   }

@@ -49,7 +49,8 @@ double analytic_albedo_at_normal(double lambda) {
 }
 
 TEST(MeasuredMaterial, HeadOnInAWhiteSkyReturnsTheAlbedo) {
-  const Image img = test::render_text(scene("\"measured\" \"string filename\" \"" + kFile + "\"", 256), "measured.pbrt");
+  const Image img =
+      test::render_text(scene("\"measured\" \"string filename\" \"" + kFile + "\"", 256), "measured.pbrt");
   // A white diffuse quad (albedo exactly 1 at every wavelength) gives the film's response to the
   // sky; each channel's ratio is the albedo weighted by that channel's response. The albedo
   // rises almost linearly with lambda (0.25 at 450 nm, 0.34 at 550, 0.38 at 600), so the mean

@@ -7,8 +7,8 @@
 
 #include <random>
 
-#include "../support/tensor_file_writer.h"
 #include "../support/temp_files.h"
+#include "../support/tensor_file_writer.h"
 #include "materials/measured_brdf.h"
 #include "materials/measured_bxdf.h"
 
