@@ -21,6 +21,7 @@
 #include "materials/diffuse_transmission_material.h"
 #include "materials/hair_material.h"
 #include "materials/interface_material.h"
+#include "materials/measured_material.h"
 #include "materials/mix_material.h"
 #include "materials/thin_dielectric_material.h"
 #include "media/homogeneous_medium.h"
@@ -96,6 +97,7 @@ void register_builtin_plugins(Registry& r) {
   r.materials.add("diffusetransmission", create_diffusetransmission_material, diffusetransmission_material_spec());
   r.materials.add("thindielectric", create_thindielectric_material, thindielectric_material_spec());
   r.materials.add("hair", create_hair_material, hair_material_spec());
+  r.materials.add("measured", create_measured_material, measured_material_spec());
 
   r.float_textures.add("constant", create_constant_float_texture, constant_texture_spec());
   r.float_textures.add("scale", create_scale_float_texture, scale_texture_spec());

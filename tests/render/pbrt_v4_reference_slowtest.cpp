@@ -1,7 +1,7 @@
 // eyetrace against pbrt-v4 itself, feature by feature: each scene of tests/data/pbrt-v4/
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
 // diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
-// textures, the paddedsobol sampler, coatedconductor, hair, a camera sensor with white balance and ISO,
+// textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
 // maxcomponentvalue, the gbuffer film's channels) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
@@ -217,6 +217,9 @@ TEST(PbrtV4Reference, MaxComponentValueClampsEverySampleOfABrightEmitter) {
 }
 TEST(PbrtV4Reference, CoatedConductorSmoothCoatOnSmoothMetal) { expect_matches_pbrt_v4("coatedconductor-smooth"); }
 TEST(PbrtV4Reference, HairOnStripsWithMelaninReflectanceAndSigmaA) { expect_matches_pbrt_v4("hair"); }
+// The measured material on two spheres sharing one RGL tensor file (tests/data/measured: a
+// GGX conductor tabulated by tools/make_measured_bsdf), under a quad light and a sky.
+TEST(PbrtV4Reference, MeasuredMaterialFromAnRglTensorFile) { expect_matches_pbrt_v4("measured"); }
 // A flat Bezier curve of tapering width, a wide "cylinder" B-spline and a twisting quadratic
 // "ribbon" over a floor, lit from the side (their shadows too): pbrt-v4's ray-facing bands,
 // its bent cylinder normal and its narrowed ribbon, as shapes/curve.h reproduces them.

@@ -420,7 +420,7 @@ TEST(HostileInput, EmptyMeshes) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Files: recursive Include, lying PLY, textures that are not images
+// Files: recursive Include, lying PLY, broken measured BRDFs, textures that are not images
 
 TEST(HostileInput, RecursiveInclude) {
   TempDir dir("eyetrace-hostile");
@@ -485,6 +485,34 @@ TEST(HostileInput, PlyThatLiesAboutItsSize) {
     std::string message = build_error(in_world(fmt::format("Shape \"plymesh\" \"string filename\" \"{}\"\n", c.name)),
                                       {}, dir.path().string());
     EXPECT_NE(message.find("hostile.pbrt:8:17: error: parameter \"filename\""), std::string::npos)
+        << c.name << ": " << message;
+    EXPECT_NE(message.find(dir.file(c.name)), std::string::npos) << c.name << ": " << message;
+    EXPECT_NE(message.find(c.message), std::string::npos) << c.name << ": " << message;
+  }
+}
+
+// Measured-BRDF tensor files (.bsdf) cut short, of another format, or emptied.
+TEST(HostileInput, MeasuredBsdfThatIsBroken) {
+  TempDir dir("eyetrace-hostile");
+  const std::string good = read_text(EYETRACE_SOURCE_DIR "/tests/data/measured/ggx-schlick.bsdf");
+  ASSERT_GT(good.size(), 100000u);
+  struct Case {
+    const char* name;
+    std::string content;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"half.bsdf", good.substr(0, good.size() / 2), "truncated: field \"spectra\""},
+      {"header.bsdf", good.substr(0, 30), "truncated: field 0's name needs 11 bytes at offset 20, the file has 30"},
+      {"empty.bsdf", "", "truncated: the header \"tensor_file\" needs 12 bytes"},
+      {"text.bsdf", "this is not a tensor file at all\n", "not a tensor file"},
+  };
+  for (const Case& c : cases) {
+    write_file(dir.file(c.name), c.content);
+    std::string message = build_error(
+        in_world(fmt::format("Material \"measured\" \"string filename\" \"{}\"\nShape \"sphere\"\n", c.name)), {},
+        dir.path().string());
+    EXPECT_NE(message.find("hostile.pbrt:8:21: error: parameter \"filename\""), std::string::npos)
         << c.name << ": " << message;
     EXPECT_NE(message.find(dir.file(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.message), std::string::npos) << c.name << ": " << message;
