@@ -253,7 +253,10 @@ class Builder {
     for (const InstanceUse& u : desc_.instance_uses)
       attempt([&] {
         if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
-        setup_.scene->add_instance(u.name, u.world_from_instance);
+        if (u.animated)
+          setup_.scene->add_instance(u.name, motion(u.world_from_instance, u.world_from_instance_end));
+        else
+          setup_.scene->add_instance(u.name, u.world_from_instance);
       });
     for (const TransformedEntity& l : desc_.lights) attempt([&] { add_light(l); });
     errors_.throw_if_any();
@@ -372,8 +375,16 @@ class Builder {
     return raw;
   }
 
-  std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light) {
-    ShapeContext ctx{s.params, s.world_from_object, s.reverse_orientation, desc_.search_dir, setup_.textures.get()};
+  // Both transforms were checked by the parser (AnimatedTransform throws for none of them).
+  AnimatedTransform motion(const Transform& start, const Transform& end) const {
+    return AnimatedTransform(start, desc_.transform_start_time, end, desc_.transform_end_time);
+  }
+
+  // `world_from_object`: the shape's own transform, or the identity for a moving shape (made in
+  // its object space and moved as a whole, as pbrt-v4's AnimatedPrimitive does).
+  std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light,
+                                         const Transform& world_from_object) {
+    ShapeContext ctx{s.params, world_from_object, s.reverse_orientation, desc_.search_dir, setup_.textures.get()};
     auto shapes = reg_.shapes.at(s.name, s.loc)(ctx);
     // A shape with the interface material has no surface: its primitives carry no material, which
     // tells the integrators (and volpath's shadow rays) to pass through it.
@@ -418,14 +429,20 @@ class Builder {
 
   void add_shape(const ShapeEntity& s) {
     check_material_first(s);
-    for (auto& prim : make_primitives(s, true)) setup_.scene->add_primitive(std::move(prim));
+    if (s.animated) {
+      // The parser refused an area light on a moving shape (pbrt-v4 does too).
+      setup_.scene->add_moving_primitives(make_primitives(s, false, Transform()),
+                                          motion(s.world_from_object, s.world_from_object_end));
+      return;
+    }
+    for (auto& prim : make_primitives(s, true, s.world_from_object)) setup_.scene->add_primitive(std::move(prim));
   }
 
   void build_instance(const InstanceDefinition& def) {
     std::vector<Primitive> prims;
     for (const ShapeEntity& s : def.shapes) {
       check_material_first(s);
-      for (auto& prim : make_primitives(s, false)) prims.push_back(std::move(prim));
+      for (auto& prim : make_primitives(s, false, s.world_from_object)) prims.push_back(std::move(prim));
     }
     setup_.scene->define_instance(def.name, std::move(prims));
   }
@@ -464,6 +481,18 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
   const Registry& reg = Registry::builtin();
   const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
+  if (desc.camera.animated) {
+    // Only the perspective camera moves its rays; an eye camera's pupil and retina mapping
+    // are built around one fixed world_from_camera.
+    static const std::set<std::string> moving = {"perspective", "pinhole", "thinlens"};
+    if (!moving.count(cam.name))
+      fail(desc.camera.loc,
+           "Camera \"{}\": a moving camera (differing start and end transforms) is supported only by the "
+           "perspective, pinhole and thinlens cameras",
+           cam.name);
+    ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.transform_start_time,
+                                                     desc.camera.world_from_camera_end, desc.transform_end_time);
+  }
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }
