@@ -481,18 +481,9 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
   const Registry& reg = Registry::builtin();
   const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
-  if (desc.camera.animated) {
-    // Only the perspective camera moves its rays; an eye camera's pupil and retina mapping
-    // are built around one fixed world_from_camera.
-    static const std::set<std::string> moving = {"perspective", "pinhole", "thinlens"};
-    if (!moving.count(cam.name))
-      fail(desc.camera.loc,
-           "Camera \"{}\": a moving camera (differing start and end transforms) is supported only by the "
-           "perspective, pinhole and thinlens cameras",
-           cam.name);
+  if (desc.camera.animated)
     ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.transform_start_time,
                                                      desc.camera.world_from_camera_end, desc.transform_end_time);
-  }
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }

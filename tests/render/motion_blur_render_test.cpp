@@ -13,7 +13,6 @@
 #include <functional>
 #include <string>
 
-#include "core/error.h"
 #include "render/film.h"
 #include "render/integrator.h"
 #include "render/scene.h"
@@ -200,22 +199,6 @@ Translate 0 0.8 0
   EXPECT_LT(std::abs(d / double(n)), 4 * stderr_mean)
       << "still " << mean(a1) << ", turning " << mean(b) << ", standard error " << stderr_mean;
   EXPECT_GT(mean(a1), 0.05);
-}
-
-// An eye camera's pupil and retina mapping are built for one placement: moving it is refused
-// at the Camera directive; the same motion under a pinhole is accepted.
-TEST(MotionBlurRender, MovingEyeCameraIsRefusedAtTheCameraDirective) {
-  const std::string moving = "ActiveTransform EndTime\nTranslate 0 0 -1\nActiveTransform All\n";
-  const std::string rest = "\nFilm \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n";
-  try {
-    setup_for(moving + "Camera \"navarro\"" + rest);
-    ADD_FAILURE() << "expected a SceneError";
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("motion.pbrt:4:1: error: Camera \"navarro\": a moving camera"),
-              std::string::npos)
-        << e.what();
-  }
-  EXPECT_NO_THROW(setup_for(moving + "Camera \"pinhole\"" + rest));
 }
 
 }  // namespace
