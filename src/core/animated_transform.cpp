@@ -93,7 +93,23 @@ Transform AnimatedTransform::at_fraction(float u) const {
   glm::mat3 upper = (1.f - u) * a.upper + u * b.upper;
   // U's diagonal entries keep their signs between the keyframes (the constructor refuses a
   // change of handedness; Gram-Schmidt makes the first two positive), so the blend is invertible.
-  return Transform(compose(translation, rotation, upper));
+  // The inverse from the factors, U^-1 R^T T^-1 (U upper triangular with a non-zero diagonal),
+  // not by a general inversion: no determinant threshold to trip over for a tiny but valid
+  // scale, and nothing to throw inside a render thread.
+  const glm::dmat3 ud(upper);
+  glm::dmat3 u_inv(0.0);
+  for (int c = 0; c < 3; ++c) {
+    u_inv[c][c] = 1.0 / ud[c][c];
+    for (int r = c - 1; r >= 0; --r) {
+      double sum = 0.0;
+      for (int k = r + 1; k <= c; ++k) sum += ud[k][r] * u_inv[c][k];
+      u_inv[c][r] = -sum / ud[r][r];
+    }
+  }
+  const glm::dmat3 linear_inv = u_inv * glm::transpose(glm::dmat3(glm::mat3_cast(rotation)));
+  Mat4 inv = Mat4(glm::mat3(linear_inv));
+  inv[3] = Vec4(Vec3(-(linear_inv * glm::dvec3(translation))), 1.f);
+  return Transform(compose(translation, rotation, upper), inv);
 }
 
 RTCQuaternionDecomposition AnimatedTransform::embree_keyframe(int i) const {

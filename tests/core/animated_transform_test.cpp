@@ -104,8 +104,21 @@ TEST(AnimatedTransform, EmbreeKeyframesRebuildBothTransformsWithShearAndMirror) 
   expect_matrix_near(embree_matrix(a.embree_keyframe(0)), start.matrix(), 1e-5f);
   expect_matrix_near(embree_matrix(a.embree_keyframe(1)), end.matrix(), 1e-5f);
   // In between, the same blend Embree makes: lerped T and S, slerped R.
-  Transform mid = a.at_fraction(0.5f);
-  EXPECT_LT(glm::determinant(glm::mat3(mid.matrix())), 0.f);  // still mirrored, never flat
+  for (float u : {0.1f, 0.5f, 0.9f}) {
+    Transform mid = a.at_fraction(u);
+    EXPECT_LT(glm::determinant(glm::mat3(mid.matrix())), 0.f);                  // still mirrored, never flat
+    expect_matrix_near(mid.matrix() * mid.inverse_matrix(), Mat4(1.f), 1e-5f);  // the stored inverse
+  }
+}
+
+// A scale of 1e-12 gives a determinant of 1e-36, below what a general inversion accepts; the
+// interpolated transform's inverse comes from its factors.
+TEST(AnimatedTransform, TinyScaleKeepsAnExactInverse) {
+  AnimatedTransform a(scale(Vec3(1e-12f)), 0.f, translate(Vec3(1, 0, 0)) * scale(Vec3(2e-12f)), 1.f);
+  Transform mid = a.interpolate(0.5f);
+  EXPECT_NEAR(mid.matrix()[0][0], 1.5e-12f, 1e-17f);
+  EXPECT_NEAR(mid.inverse_matrix()[0][0], 1.f / 1.5e-12f, 1e6f);
+  EXPECT_NEAR(mid.inverse().point(Vec3(0.5f, 0, 0)).x, 0.f, 1e-3f);
 }
 
 TEST(AnimatedTransform, RefusesAMotionThatUnmirrors) {
