@@ -220,10 +220,21 @@ void Scene::add_instance(const std::string& name, const AnimatedTransform& world
 }
 
 void Scene::add_moving_primitives(std::vector<Primitive> prims, const AnimatedTransform& world_from_object) {
-  if (committed_) throw std::logic_error("Scene::add_moving_primitives after commit()");
-  if (prims.empty()) return;
+  int group = define_moving_group(std::move(prims));
+  if (group >= 0) place_moving_group(group, world_from_object);
+}
+
+int Scene::define_moving_group(std::vector<Primitive> prims) {
+  if (committed_) throw std::logic_error("Scene::define_moving_group after commit()");
+  if (prims.empty()) return -1;
   moving_groups_.push_back(build_group(std::move(prims), "a moving shape"));
-  place(moving_groups_.back().get(), world_from_object.start(),
+  return int(moving_groups_.size()) - 1;
+}
+
+void Scene::place_moving_group(int group, const AnimatedTransform& world_from_object) {
+  if (committed_) throw std::logic_error("Scene::place_moving_group after commit()");
+  if (group < 0 || size_t(group) >= moving_groups_.size()) throw std::out_of_range("Scene::place_moving_group");
+  place(moving_groups_[size_t(group)].get(), world_from_object.start(),
         world_from_object.is_animated() ? &world_from_object : nullptr, "a moving shape");
 }
 

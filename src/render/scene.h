@@ -62,6 +62,10 @@ class Scene {
   void add_instance(const std::string& name, const AnimatedTransform& world_from_instance);
   // A moving shape: its primitives, made in object space, placed as an unnamed moving instance.
   void add_moving_primitives(std::vector<Primitive> prims, const AnimatedTransform& world_from_object);
+  // The same in two steps, for a moving shape inside an object: built once (an index for
+  // place_moving_group, or -1 when it has no primitives), placed once per use of the object.
+  int define_moving_group(std::vector<Primitive> prims);
+  void place_moving_group(int group, const AnimatedTransform& world_from_object);
   void add_light(std::unique_ptr<Light> light);
   // The medium the camera sits in (pbrt-v4: the outside medium current at the Camera directive).
   void set_camera_medium(const Medium* medium);

@@ -487,20 +487,12 @@ void SceneParser::shape(Tokenizer& tok, const SourceLoc& loc) {
   TransformPair ctm = current_transforms(loc, "Shape", &s.animated);
   s.world_from_object = ctm[0];
   s.world_from_object_end = ctm[1];
-  if (s.animated && state_.area_light >= 0)
+  // pbrt-v4 drops the area light of a shape inside ObjectBegin (below) before it could move.
+  if (s.animated && state_.area_light >= 0 && !current_object_)
     fail(loc,
          "Shape \"{}\": animated area lights are not supported (as in pbrt-v4): its start and end transforms "
          "differ",
          s.name);
-  if (s.animated && current_object_) {
-    // Embree instances one level deep: a moving shape is itself an instance, so it cannot sit
-    // inside another. Moving the ObjectInstance instead is supported.
-    warn(loc, fmt::format("Shape \"{}\": an animated shape inside ObjectBegin \"{}\" is not supported; the "
-                          "start-time transform is used (animate the ObjectInstance instead)",
-                          s.name, *current_object_));
-    s.animated = false;
-    s.world_from_object_end = s.world_from_object;
-  }
   s.reverse_orientation = state_.reverse_orientation;
   s.material = state_.material;
   s.area_light = state_.area_light;

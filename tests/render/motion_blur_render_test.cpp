@@ -12,7 +12,9 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <tuple>
 
+#include "core/error.h"
 #include "render/film.h"
 #include "render/integrator.h"
 #include "render/scene.h"
@@ -159,6 +161,39 @@ Shape "sphere" "float radius" 1
     EXPECT_NEAR(glm::dot(si.n, (si.p - centre)), 1.f, 1e-4f) << time;  // the outward normal there
     EXPECT_NEAR(glm::length(si.p - ray.at(si.t)), 0.f, 1e-4f) << time;
     EXPECT_EQ(si.time, time);
+  }
+}
+
+// A moving shape inside an object moves at every use of the object: the sphere slides 2 along
+// object x over the shutter, placed by two still uses 3 apart in y. At time 0.5 each copy is
+// centred at object x = 1; at time 0 at x = 0.
+TEST(MotionBlurRender, MovingShapeInsideAnObjectMovesAtEachUse) {
+  WarningCollector warnings;
+  RenderSetup s = setup_for(R"(WorldBegin
+ObjectBegin "o"
+ActiveTransform EndTime
+Translate 2 0 0
+ActiveTransform All
+Shape "sphere" "float radius" 0.5
+ObjectEnd
+AttributeBegin
+Translate 0 0 5
+ObjectInstance "o"
+AttributeEnd
+Translate 0 3 5
+ObjectInstance "o"
+)");
+  EXPECT_TRUE(warnings.warnings().empty());
+  for (float y : {0.f, 3.f}) {
+    for (auto [time, x, hits] : {std::tuple{0.5f, 1.f, true}, std::tuple{0.f, 0.f, true},
+                                 std::tuple{0.5f, -0.2f, false}, std::tuple{1.f, 2.f, true}}) {
+      Ray ray{Vec3(x, y, 0.f), Vec3(0, 0, 1), kInfinity, time};
+      SurfaceInteraction si;
+      ASSERT_EQ(s.scene->intersect(ray, &si), hits) << "y " << y << " time " << time << " x " << x;
+      if (!hits) continue;
+      EXPECT_NEAR(si.t, 4.5f, 1e-4f);
+      EXPECT_NEAR(glm::length(si.n - Vec3(0, 0, -1)), 0.f, 1e-4f);
+    }
   }
 }
 

@@ -114,17 +114,19 @@ TEST(MotionBlurParse, AnimatedAreaLightIsAnErrorAtTheShape) {
       << e;
 }
 
-// Embree instances one level deep: a moving shape inside an object definition keeps its start
-// transform, warned; the ObjectInstance itself may move.
-TEST(MotionBlurParse, AnimatedShapeInsideAnObjectIsWarnedAndHeldAtItsStart) {
+// A moving shape inside an object definition keeps both transforms (the builder places it at
+// each use); its area light is dropped as for every shape in an object, before it could move.
+TEST(MotionBlurParse, AnimatedShapeInsideAnObjectKeepsBothTransforms) {
   WarningCollector warnings;
-  SceneDescription d =
-      parse("WorldBegin\nObjectBegin \"o\"\nActiveTransform EndTime\nTranslate 1 0 0\nShape \"sphere\"\nObjectEnd\n");
+  SceneDescription d = parse(
+      "WorldBegin\nAreaLightSource \"diffuse\"\nObjectBegin \"o\"\nActiveTransform EndTime\nTranslate 1 0 0\n"
+      "Shape \"sphere\"\nObjectEnd\n");
   const ShapeEntity& s = d.instances.at("o").shapes.at(0);
-  EXPECT_FALSE(s.animated);
-  EXPECT_EQ(origin_of(s.world_from_object_end), Vec3(0, 0, 0));
-  ASSERT_EQ(warnings.warnings().size(), 1u);
-  EXPECT_EQ(warnings.warnings()[0].loc.line, 5);
+  EXPECT_TRUE(s.animated);
+  EXPECT_EQ(s.area_light, -1);
+  EXPECT_EQ(origin_of(s.world_from_object_end), Vec3(1, 0, 0));
+  ASSERT_EQ(warnings.warnings().size(), 1u);  // the area light's, as for a still shape
+  EXPECT_NE(warnings.warnings()[0].message.find("area lights"), std::string::npos);
 }
 
 TEST(MotionBlurParse, MirroringOnlyAtOneEndIsAnError) {
