@@ -519,8 +519,8 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
   const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
   if (desc.camera.animated)
-    ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.transform_start_time,
-                                                     desc.camera.world_from_camera_end, desc.transform_end_time);
+    ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.camera.transform_start_time,
+                                                     desc.camera.world_from_camera_end, desc.camera.transform_end_time);
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }

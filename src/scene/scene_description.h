@@ -29,6 +29,9 @@ struct CameraEntity : SceneEntity {
   Transform world_from_camera;  // at the start time
   Transform world_from_camera_end;
   bool animated = false;
+  // The TransformTimes in effect at the Camera directive (pbrt-v4 reads them there: a later
+  // TransformTimes moves the world's shapes, not the camera).
+  float transform_start_time = 0.f, transform_end_time = 1.f;
   MediumNames media;  // the camera sits in `outside` (pbrt-v4)
 };
 

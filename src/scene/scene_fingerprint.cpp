@@ -83,7 +83,11 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
   f.add_pod(d.has_camera);
   f.add(d.camera);
   f.add(d.camera.world_from_camera);
-  if (d.camera.animated) f.add(d.camera.world_from_camera_end);
+  if (d.camera.animated) {
+    f.add(d.camera.world_from_camera_end);
+    f.add_pod(d.camera.transform_start_time);
+    f.add_pod(d.camera.transform_end_time);
+  }
   // The times matter only to what moves (and only then change the fingerprint).
   bool moves = d.camera.animated;
   for (const ShapeEntity& s : d.shapes) moves = moves || s.animated;

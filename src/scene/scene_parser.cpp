@@ -337,6 +337,8 @@ void SceneParser::camera(Tokenizer& tok, const SourceLoc& loc) {
   desc_.camera.world_from_camera = camera_from_world[0].inverse();
   desc_.camera.world_from_camera_end = camera_from_world[1].inverse();
   desc_.camera.animated = animated;
+  desc_.camera.transform_start_time = desc_.transform_start_time;
+  desc_.camera.transform_end_time = desc_.transform_end_time;
   desc_.has_camera = true;
   desc_.camera.media = state_.media;
   // pbrt-v4: the named coordinate system "camera" is the camera's world_from_camera.

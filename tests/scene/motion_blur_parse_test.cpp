@@ -87,6 +87,8 @@ ObjectInstance "o"
 )");
   EXPECT_EQ(d.transform_start_time, 1.f);
   EXPECT_TRUE(d.camera.animated);
+  EXPECT_EQ(d.camera.transform_start_time, 1.f);
+  EXPECT_EQ(d.camera.transform_end_time, 3.f);
   // camera_from_world translated the world by -4 in z: the camera sits at +4 at the end.
   EXPECT_EQ(origin_of(d.camera.world_from_camera), Vec3(0, 0, 0));
   EXPECT_EQ(origin_of(d.camera.world_from_camera_end), Vec3(0, 0, 4));
@@ -94,6 +96,18 @@ ObjectInstance "o"
   EXPECT_TRUE(d.instance_uses[0].animated);
   EXPECT_NEAR(d.instance_uses[0].world_from_instance.vector(Vec3(1, 0, 0)).y, 1.f, 1e-6f);
   EXPECT_EQ(d.instance_uses[0].world_from_instance_end.vector(Vec3(1, 0, 0)), Vec3(1, 0, 0));
+}
+
+// pbrt-v4 reads the times at the Camera directive: a TransformTimes after it changes the
+// world's times, not the camera's.
+TEST(MotionBlurParse, CameraKeepsTheTimesInEffectAtItsDirective) {
+  SceneDescription d = parse(
+      "ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\nCamera \"perspective\"\n"
+      "TransformTimes 2 5\nWorldBegin\n");
+  EXPECT_EQ(d.camera.transform_start_time, 0.f);
+  EXPECT_EQ(d.camera.transform_end_time, 1.f);
+  EXPECT_EQ(d.transform_start_time, 2.f);
+  EXPECT_EQ(d.transform_end_time, 5.f);
 }
 
 TEST(MotionBlurParse, AnimatedLightKeepsTheStartTransformWithAWarning) {
