@@ -107,7 +107,7 @@ class Scene {
   RTCScene root_ = nullptr;
   std::vector<Primitive> prims_;  // directly placed primitives; geom_index_ maps a root geometry ID here
   std::map<std::string, std::unique_ptr<InstanceGroup>> groups_;
-  std::vector<std::unique_ptr<InstanceGroup>> moving_groups_;  // add_moving_primitives'; unnamed
+  std::vector<std::unique_ptr<InstanceGroup>> moving_groups_;  // unnamed: define_moving_group's
   std::vector<Placement> placements_;                          // indexed by Embree instance geometry ID (in root)
   std::vector<std::unique_ptr<Light>> light_store_;
   std::vector<const Light*> lights_, infinite_lights_;
