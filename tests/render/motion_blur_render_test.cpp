@@ -197,6 +197,28 @@ ObjectInstance "o"
   }
 }
 
+// Under a moving use, pbrt-v4 multiplies the use's and the shape's interpolated motions; two
+// keyframes cannot hold that product, so the combination is said at the ObjectInstance's line.
+TEST(MotionBlurRender, MovingUseOfAnObjectWithMovingShapesIsWarned) {
+  WarningCollector warnings;
+  RenderSetup s = setup_for(R"(WorldBegin
+ObjectBegin "o"
+ActiveTransform EndTime
+Rotate 30 0 1 0
+ActiveTransform All
+Shape "sphere"
+ObjectEnd
+ActiveTransform EndTime
+Translate 0 1 0
+ActiveTransform All
+ObjectInstance "o"
+)");
+  const std::vector<Diagnostic> w = warnings.warnings();
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].loc.line, 11);
+  EXPECT_NE(w[0].message.find("keyframe by keyframe"), std::string::npos) << w[0].message;
+}
+
 // Mean over pixels and channels.
 double mean(const Image& im) {
   double s = 0;
