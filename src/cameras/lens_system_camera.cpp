@@ -199,7 +199,13 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const CameraSample& cs, co
   const Vec3 o(float(-r.ray.origin.x * k), float(r.ray.origin.y * k), float(-r.ray.origin.z * k));
   const Vec3 d(float(-dir.x), float(dir.y), float(-dir.z));
   const float w = static_cast<float>(weight);
-  return CameraRay{Ray{world_from_camera_.point(o), glm::normalize(world_from_camera_.vector(d)), kInfinity, cs.time},
+  Transform at_time;
+  const Transform* world_from_camera = &world_from_camera_;
+  if (motion_.is_animated()) {
+    at_time = motion_.interpolate(cs.time);
+    world_from_camera = &at_time;
+  }
+  return CameraRay{Ray{world_from_camera->point(o), glm::normalize(world_from_camera->vector(d)), kInfinity, cs.time},
                    SampledSpectrum(w), w};
 }
 
@@ -300,6 +306,7 @@ std::unique_ptr<Camera> make_camera(const CameraContext& ctx, const optics::Pres
                                     const LensSystemCamera::Settings& s, const char* system_param) {
   try {
     auto camera = std::make_unique<LensSystemCamera>(p, ctx.world_from_camera, ctx.resolution, s);
+    camera->set_motion(ctx.world_from_camera_motion);
     const WavePsfTable* table = camera->psf_table();
     if (table && table->geometric_nodes() > 0)
       warn(ctx.params.loc(),

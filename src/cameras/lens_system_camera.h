@@ -23,6 +23,7 @@
 #include "cameras/retina_mapping.h"
 #include "cameras/retina_surface.h"
 #include "cameras/wave_psf_table.h"
+#include "core/animated_transform.h"
 #include "core/camera.h"
 #include "optics/prescription.h"
 #include "optics/sequential_trace.h"
@@ -52,6 +53,10 @@ class LensSystemCamera : public Camera {
   // image centre) and FieldError (below) when the field of view cannot be mapped.
   LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera, IVec2 resolution,
                    const Settings& settings);
+  // Motion blur: the eye moves over the TransformTimes, each ray leaving it placed at the
+  // ray's time (the sample's time in [0, 1): these cameras have no shutter parameters, so the
+  // shutter is pbrt-v4's default, open from 0 to 1). The optics do not change with the motion.
+  void set_motion(const AnimatedTransform& world_from_camera) { motion_ = world_from_camera; }
 
   std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;
   void generate_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
@@ -128,6 +133,7 @@ class LensSystemCamera : public Camera {
   optics::CompiledSystem system_;
   optics::CompiledSystem aiming_system_;  // apertures opened for chief-ray aiming (chief_ray.h)
   Transform world_from_camera_;
+  AnimatedTransform motion_;  // not animated unless set_motion was given a moving one
   IVec2 resolution_;
   Settings settings_;
   glm::dvec4 screen_window_;  // pbrt's: x0 x1 y0 y1, shorter axis [-1, 1]

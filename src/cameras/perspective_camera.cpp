@@ -9,8 +9,10 @@ Vec4 default_screen_window(IVec2 res, float frame) {
   return frame > 1.f ? Vec4(-frame, frame, -1.f, 1.f) : Vec4(-1.f, 1.f, -1.f / frame, 1.f / frame);
 }
 
-PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s)
+PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s,
+                                     const AnimatedTransform& motion)
     : world_from_camera_(world_from_camera),
+      motion_(motion),
       resolution_(resolution),
       s_(s),
       tan_half_fov_(std::tan(radians(s.fov_deg) / 2.f)) {
@@ -36,7 +38,15 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs,
     origin = Vec3(lens, 0.f);
     dir = glm::normalize(focus - origin);
   }
-  Ray r{world_from_camera_.point(origin), glm::normalize(world_from_camera_.vector(dir)), kInfinity, cs.time};
+  // pbrt-v4's CameraBase::SampleTime: the time sample spread over the shutter interval.
+  const float time = (1.f - cs.time) * s_.shutter_open + cs.time * s_.shutter_close;
+  Transform at_time;
+  const Transform* world_from_camera = &world_from_camera_;
+  if (motion_.is_animated()) {
+    at_time = motion_.interpolate(time);
+    world_from_camera = &at_time;
+  }
+  Ray r{world_from_camera->point(origin), glm::normalize(world_from_camera->vector(dir)), kInfinity, time};
   return CameraRay{r, SampledSpectrum(1.f), 1.f};
 }
 
@@ -65,8 +75,12 @@ const PluginSpec& perspective_camera_spec() {
           param::real("frameaspectratio")
               .above(0)
               .describe("aspect for the default screen window instead of the image's"),
-          param::real("shutteropen", 0).describe("with shutterclose, the film's exposure time (no motion blur)"),
-          param::real("shutterclose", 1).describe("with shutteropen, the film's exposure time (no motion blur)"),
+          param::real("shutteropen", 0)
+              .describe("time the shutter opens (motion blur; with shutterclose, the "
+                        "film's exposure time)"),
+          param::real("shutterclose", 1)
+              .describe("time the shutter closes (motion blur; with shutteropen, the "
+                        "film's exposure time)"),
       }};
   return spec;
 }
@@ -89,24 +103,26 @@ static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const
   }
   if (p.has("frameaspectratio") && sw.empty())
     s.screen_window = default_screen_window(ctx.resolution, p.get_float("frameaspectratio"));
-  // The shutter interval sets the film's exposure (scene_builder.cpp), but nothing moves in it.
-  if (p.get_float("shutteropen") != 0.f || p.get_float("shutterclose") != 1.f)
-    warn(p.loc(), "shutteropen/shutterclose: motion blur is not supported; the interval sets only the exposure time");
+  // The shutter interval is also the film's exposure (scene_builder.cpp checks that it opens).
+  s.shutter_open = p.get_float("shutteropen");
+  s.shutter_close = p.get_float("shutterclose");
   return s;
 }
 
 std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx) {
-  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "perspective"));
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "perspective"),
+                                             ctx.world_from_camera_motion);
 }
 
 std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx) {
   PerspectiveCamera::Settings s = read_settings(ctx, "pinhole");
   if (s.lens_radius != 0.f) ctx.params.fail("lensradius", "a pinhole camera has no lens; use \"thinlens\"");
-  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, s);
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, s, ctx.world_from_camera_motion);
 }
 
 std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx) {
-  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "thinlens"));
+  return std::make_unique<PerspectiveCamera>(ctx.world_from_camera, ctx.resolution, read_settings(ctx, "thinlens"),
+                                             ctx.world_from_camera_motion);
 }
 
 }  // namespace eyetrace

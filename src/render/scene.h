@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/animated_transform.h"
 #include "core/interaction.h"
 #include "core/light.h"
 #include "core/material.h"
@@ -56,6 +57,15 @@ class Scene {
   void define_instance(const std::string& name, std::vector<Primitive> prims);
   bool has_instance(const std::string& name) const;
   void add_instance(const std::string& name, const Transform& world_from_instance);
+  // Motion blur: the object placed by a transform that moves during the shutter (an Embree
+  // instance with two time steps; a hit is rebuilt with the transform at the ray's time).
+  void add_instance(const std::string& name, const AnimatedTransform& world_from_instance);
+  // A moving shape: its primitives, made in object space, placed as an unnamed moving instance.
+  void add_moving_primitives(std::vector<Primitive> prims, const AnimatedTransform& world_from_object);
+  // The same in two steps, for a moving shape inside an object: built once (an index for
+  // place_moving_group, or -1 when it has no primitives), placed once per use of the object.
+  int define_moving_group(std::vector<Primitive> prims);
+  void place_moving_group(int group, const AnimatedTransform& world_from_object);
   void add_light(std::unique_ptr<Light> light);
   // The medium the camera sits in (pbrt-v4: the outside medium current at the Camera directive).
   void set_camera_medium(const Medium* medium);
@@ -74,7 +84,10 @@ class Scene {
 
   const std::vector<const Light*>& lights() const { return lights_; }
   const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
+  // Over the whole shutter for what moves.
   Bounds3 bounds() const { return bounds_; }
+  // Whether anything the rays can hit moves (a moving instance or shape).
+  bool has_motion() const { return motion_ != nullptr; }
   const Medium* camera_medium() const { return camera_medium_; }
   // Whether any ray can travel through a medium: the camera sits in one or a surface bounds one.
   bool has_media() const { return has_media_; }
@@ -86,11 +99,16 @@ class Scene {
  private:
   struct InstanceGroup;
   struct Placement;
+  std::unique_ptr<InstanceGroup> build_group(std::vector<Primitive> prims, const std::string& what);
+  void place(const InstanceGroup* group, const Transform& start, const AnimatedTransform* motion,
+             const std::string& what);
+  float embree_time(float time) const { return motion_ ? motion_->fraction(time) : 0.f; }
   RTCDevice device_ = nullptr;
   RTCScene root_ = nullptr;
   std::vector<Primitive> prims_;  // directly placed primitives; geom_index_ maps a root geometry ID here
   std::map<std::string, std::unique_ptr<InstanceGroup>> groups_;
-  std::vector<Placement> placements_;  // indexed by Embree instance geometry ID (in root)
+  std::vector<std::unique_ptr<InstanceGroup>> moving_groups_;  // unnamed: define_moving_group's
+  std::vector<Placement> placements_;                          // indexed by Embree instance geometry ID (in root)
   std::vector<std::unique_ptr<Light>> light_store_;
   std::vector<const Light*> lights_, infinite_lights_;
   std::vector<std::shared_ptr<void>> owned_;
@@ -100,6 +118,9 @@ class Scene {
   bool committed_ = false;
   const Medium* camera_medium_ = nullptr;
   bool has_media_ = false;
+  // The first moving transform added, whose TransformTimes (common to all) map a ray's time
+  // to Embree's [0, 1]; null when nothing moves.
+  std::unique_ptr<AnimatedTransform> motion_;
   std::atomic<RayRecord*> record_{nullptr};
   mutable std::mutex record_lock_;
 };

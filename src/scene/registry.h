@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/animated_transform.h"
 #include "core/camera.h"
 #include "core/filter.h"
 #include "core/light.h"
@@ -32,9 +33,11 @@ class ImageTextureCache;
 // Film geometry a camera needs: the full resolution (crop windows do not change projection).
 struct CameraContext {
   const ParameterList& params;
-  Transform world_from_camera;
+  Transform world_from_camera;  // at the start time
   IVec2 resolution;
   std::string search_dir;
+  // The camera's motion over the TransformTimes (not animated when it stands still).
+  AnimatedTransform world_from_camera_motion = {};
 };
 
 struct SamplerContext {

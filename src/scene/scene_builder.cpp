@@ -253,7 +253,11 @@ class Builder {
     for (const InstanceUse& u : desc_.instance_uses)
       attempt([&] {
         if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
-        setup_.scene->add_instance(u.name, u.world_from_instance);
+        if (u.animated)
+          setup_.scene->add_instance(u.name, motion(u.world_from_instance, u.world_from_instance_end));
+        else
+          setup_.scene->add_instance(u.name, u.world_from_instance);
+        place_moving_members(u);
       });
     for (const TransformedEntity& l : desc_.lights) attempt([&] { add_light(l); });
     errors_.throw_if_any();
@@ -372,8 +376,16 @@ class Builder {
     return raw;
   }
 
-  std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light) {
-    ShapeContext ctx{s.params, s.world_from_object, s.reverse_orientation, desc_.search_dir, setup_.textures.get()};
+  // Both transforms were checked by the parser (AnimatedTransform throws for none of them).
+  AnimatedTransform motion(const Transform& start, const Transform& end) const {
+    return AnimatedTransform(start, desc_.transform_start_time, end, desc_.transform_end_time);
+  }
+
+  // `world_from_object`: the shape's own transform, or the identity for a moving shape (made in
+  // its object space and moved as a whole, as pbrt-v4's AnimatedPrimitive does).
+  std::vector<Primitive> make_primitives(const ShapeEntity& s, bool allow_area_light,
+                                         const Transform& world_from_object) {
+    ShapeContext ctx{s.params, world_from_object, s.reverse_orientation, desc_.search_dir, setup_.textures.get()};
     auto shapes = reg_.shapes.at(s.name, s.loc)(ctx);
     // A shape with the interface material has no surface: its primitives carry no material, which
     // tells the integrators (and volpath's shadow rays) to pass through it.
@@ -418,16 +430,53 @@ class Builder {
 
   void add_shape(const ShapeEntity& s) {
     check_material_first(s);
-    for (auto& prim : make_primitives(s, true)) setup_.scene->add_primitive(std::move(prim));
+    if (s.animated) {
+      // The parser refused an area light on a moving shape (pbrt-v4 does too).
+      setup_.scene->add_moving_primitives(make_primitives(s, false, Transform()),
+                                          motion(s.world_from_object, s.world_from_object_end));
+      return;
+    }
+    for (auto& prim : make_primitives(s, true, s.world_from_object)) setup_.scene->add_primitive(std::move(prim));
   }
 
+  // The object's still shapes make its instance; each moving one is built once in its object
+  // space and placed at every use of the object (Embree instances one level deep: a moving
+  // shape, itself an instance, cannot sit inside the object's).
   void build_instance(const InstanceDefinition& def) {
     std::vector<Primitive> prims;
     for (const ShapeEntity& s : def.shapes) {
       check_material_first(s);
-      for (auto& prim : make_primitives(s, false)) prims.push_back(std::move(prim));
+      if (s.animated) {
+        int group = setup_.scene->define_moving_group(make_primitives(s, false, Transform()));
+        if (group >= 0) moving_members_[def.name].push_back({group, &s});
+        continue;
+      }
+      for (auto& prim : make_primitives(s, false, s.world_from_object)) prims.push_back(std::move(prim));
     }
     setup_.scene->define_instance(def.name, std::move(prims));
+  }
+
+  // A moving shape of the object at one use: the use's transform times the shape's, keyframe by
+  // keyframe. pbrt-v4 applies the use's transform to the shape's interpolated one; the two agree
+  // when the use is still and a rotation with a uniform scale. Under a moving use pbrt-v4
+  // multiplies two interpolations, which two keyframes cannot hold: said in a warning.
+  void place_moving_members(const InstanceUse& u) {
+    auto it = moving_members_.find(u.name);
+    if (it == moving_members_.end()) return;
+    if (u.animated)
+      warn(u.loc, fmt::format("ObjectInstance \"{}\" moves and so do shapes inside it: their motions are combined "
+                              "keyframe by keyframe (start with start, end with end), which differs from pbrt-v4's "
+                              "product of the two motions in between",
+                              u.name));
+    for (const MovingMember& m : it->second) {
+      try {
+        setup_.scene->place_moving_group(m.group, motion(u.world_from_instance * m.shape->world_from_object,
+                                                         u.world_from_instance_end * m.shape->world_from_object_end));
+      } catch (const std::domain_error& e) {
+        fail(u.loc, "ObjectInstance \"{}\": its shape at {} cannot move with it: {}", u.name, m.shape->loc.to_string(),
+             e.what());
+      }
+    }
   }
 
   // A light whose power overflows float would never be chosen by the light sampler, and its
@@ -457,6 +506,11 @@ class Builder {
   std::set<std::string> materials_in_progress_;  // being made (a mix naming materials)
   std::set<const Material*> interfaces_;         // the "interface" materials made
   std::vector<std::pair<const Light*, const SceneEntity*>> light_sources_;
+  struct MovingMember {
+    int group;  // Scene::define_moving_group's
+    const ShapeEntity* shape;
+  };
+  std::map<std::string, std::vector<MovingMember>> moving_members_;  // by object name
   DiagnosticList errors_;
 };
 
@@ -464,6 +518,9 @@ std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOv
   const Registry& reg = Registry::builtin();
   const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
+  if (desc.camera.animated)
+    ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.camera.transform_start_time,
+                                                     desc.camera.world_from_camera_end, desc.camera.transform_end_time);
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }

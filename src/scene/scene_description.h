@@ -23,8 +23,15 @@ struct MediumNames {
   SourceLoc loc;
 };
 
+// Motion blur: an entity whose transform differs between the two TransformTimes keeps both;
+// `animated` is false (and the end equals the start) when it does not move.
 struct CameraEntity : SceneEntity {
-  Transform world_from_camera;
+  Transform world_from_camera;  // at the start time
+  Transform world_from_camera_end;
+  bool animated = false;
+  // The TransformTimes in effect at the Camera directive (pbrt-v4 reads them there: a later
+  // TransformTimes moves the world's shapes, not the camera).
+  float transform_start_time = 0.f, transform_end_time = 1.f;
   MediumNames media;  // the camera sits in `outside` (pbrt-v4)
 };
 
@@ -41,6 +48,8 @@ struct MaterialRef {
 };
 
 struct ShapeEntity : TransformedEntity {
+  Transform world_from_object_end;  // world_from_object is the start time's
+  bool animated = false;
   MaterialRef material;
   int area_light = -1;  // index into SceneDescription::area_lights, -1 if the shape emits nothing
   MediumNames media;
@@ -60,7 +69,9 @@ struct InstanceDefinition {
 struct InstanceUse {
   std::string name;
   SourceLoc loc;
-  Transform world_from_instance;
+  Transform world_from_instance;  // at the start time
+  Transform world_from_instance_end;
+  bool animated = false;
 };
 
 struct SceneDescription {
@@ -72,6 +83,8 @@ struct SceneDescription {
   SceneEntity filter{"gaussian", {}, {}};
   std::string color_space = "srgb";
   std::vector<SceneEntity> options;  // Option directives, one parameter each
+  // TransformTimes: the times of the start and end transforms (pbrt-v4's defaults 0 and 1).
+  float transform_start_time = 0.f, transform_end_time = 1.f;
 
   std::vector<SceneEntity> materials;                  // anonymous, by index
   std::map<std::string, SceneEntity> named_materials;  // MakeNamedMaterial

@@ -53,6 +53,7 @@ class Fingerprint {
     add_pod(s.material.index);
     add(s.material.name);
     add_pod(s.area_light);
+    if (s.animated) add(s.world_from_object_end);  // static scenes keep their earlier fingerprints
   }
   template <typename T>
   void add_all(const std::vector<T>& v) {
@@ -82,6 +83,19 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
   f.add_pod(d.has_camera);
   f.add(d.camera);
   f.add(d.camera.world_from_camera);
+  if (d.camera.animated) {
+    f.add(d.camera.world_from_camera_end);
+    f.add_pod(d.camera.transform_start_time);
+    f.add_pod(d.camera.transform_end_time);
+  }
+  // The times matter only to what moves (and only then change the fingerprint).
+  bool moves = d.camera.animated;
+  for (const ShapeEntity& s : d.shapes) moves = moves || s.animated;
+  for (const InstanceUse& u : d.instance_uses) moves = moves || u.animated;
+  if (moves) {
+    f.add_pod(d.transform_start_time);
+    f.add_pod(d.transform_end_time);
+  }
   for (const SceneEntity* e : {&d.film, &d.sampler, &d.integrator, &d.filter}) f.add(*e);
   f.add(d.color_space);
   f.add_all(d.options);
@@ -106,6 +120,7 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
   for (const InstanceUse& u : d.instance_uses) {
     f.add(u.name);
     f.add(u.world_from_instance);
+    if (u.animated) f.add(u.world_from_instance_end);
   }
   f.add(d.search_dir);
   f.add_pod(files_read.size());

@@ -1,7 +1,7 @@
 // One handler per pbrt-v4 directive, and the graphics state they share (current transform,
 // material, area light, attributes, the AttributeBegin/End stack). Semantics follow
-// pbrt-v4's BasicSceneBuilder; where eyetrace departs from it (media, motion blur) it warns
-// by name instead of guessing.
+// pbrt-v4's BasicSceneBuilder; where eyetrace departs from it it warns by name instead of
+// guessing.
 #include "scene/scene_parser.h"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/animated_transform.h"
 #include "scene/param_reader.h"
 
 namespace eyetrace::parsing {
@@ -145,9 +146,28 @@ Transform SceneParser::current_transform(const SourceLoc& loc, const char* direc
     fail(loc,
          "{}: the current transform is singular (made so at {}); only shapes may stand under it (they are dropped)",
          directive, state_.singular_at->to_string());
+  // pbrt-v4 warns the same way for lights, textures and media (scene.cpp): they do not move.
   if (!(state_.ctm[0] == state_.ctm[1]))
-    warn(loc, fmt::format("{}: motion blur is not supported; the start-time transform is used", directive));
+    warn(loc, fmt::format("{}: an animated transform is not supported here (as in pbrt-v4); the start-time "
+                          "transform is used",
+                          directive));
   return state_.ctm[0];
+}
+
+TransformPair SceneParser::current_transforms(const SourceLoc& loc, const char* directive, bool* animated) const {
+  if (state_.singular_at)
+    fail(loc,
+         "{}: the current transform is singular (made so at {}); only shapes may stand under it (they are dropped)",
+         directive, state_.singular_at->to_string());
+  *animated = !(state_.ctm[0] == state_.ctm[1]);
+  if (*animated) {
+    try {
+      AnimatedTransform check(state_.ctm[0], desc_.transform_start_time, state_.ctm[1], desc_.transform_end_time);
+    } catch (const std::domain_error& e) {
+      fail(loc, "{}: the start and end transforms cannot be interpolated: {}", directive, e.what());
+    }
+  }
+  return state_.ctm;
 }
 
 void SceneParser::push_block(const SourceLoc& loc, const char* directive) {
@@ -297,7 +317,11 @@ void SceneParser::active_transform(Tokenizer& tok, const SourceLoc&) {
 
 void SceneParser::transform_times(Tokenizer& tok, const SourceLoc& loc) {
   require_options(loc, "TransformTimes");
-  read_numbers(tok, "TransformTimes", 2);  // only matters with motion blur, which is warned at use
+  // pbrt-v4 accepts any two numbers: equal or reversed times make the motion a jump from the
+  // start to the end transform just after the start time (AnimatedTransform::fraction).
+  std::vector<float> v = read_numbers(tok, "TransformTimes", 2);
+  desc_.transform_start_time = v[0];
+  desc_.transform_end_time = v[1];
 }
 
 // ---------------------------------------------------------------------------------------
@@ -307,9 +331,14 @@ void SceneParser::camera(Tokenizer& tok, const SourceLoc& loc) {
   require_options(loc, "Camera");
   SceneEntity e = read_entity(tok, loc, "Camera");
   note_option(loc, "Camera");
-  Transform camera_from_world = current_transform(loc, "Camera");
+  bool animated = false;
+  TransformPair camera_from_world = current_transforms(loc, "Camera", &animated);
   static_cast<SceneEntity&>(desc_.camera) = std::move(e);
-  desc_.camera.world_from_camera = camera_from_world.inverse();
+  desc_.camera.world_from_camera = camera_from_world[0].inverse();
+  desc_.camera.world_from_camera_end = camera_from_world[1].inverse();
+  desc_.camera.animated = animated;
+  desc_.camera.transform_start_time = desc_.transform_start_time;
+  desc_.camera.transform_end_time = desc_.transform_end_time;
   desc_.has_camera = true;
   desc_.camera.media = state_.media;
   // pbrt-v4: the named coordinate system "camera" is the camera's world_from_camera.
@@ -457,7 +486,15 @@ void SceneParser::shape(Tokenizer& tok, const SourceLoc& loc) {
     return;
   }
   s.params = with_attributes(std::move(s.params), state_.shape_attributes);
-  s.world_from_object = current_transform(loc, "Shape");
+  TransformPair ctm = current_transforms(loc, "Shape", &s.animated);
+  s.world_from_object = ctm[0];
+  s.world_from_object_end = ctm[1];
+  // pbrt-v4 drops the area light of a shape inside ObjectBegin (below) before it could move.
+  if (s.animated && state_.area_light >= 0 && !current_object_)
+    fail(loc,
+         "Shape \"{}\": animated area lights are not supported (as in pbrt-v4): its start and end transforms "
+         "differ",
+         s.name);
   s.reverse_orientation = state_.reverse_orientation;
   s.material = state_.material;
   s.area_light = state_.area_light;
@@ -508,7 +545,9 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
                           name, state_.singular_at->to_string()));
     return;
   }
-  desc_.instance_uses.push_back(InstanceUse{name, loc, current_transform(loc, "ObjectInstance")});
+  bool animated = false;
+  TransformPair ctm = current_transforms(loc, "ObjectInstance", &animated);
+  desc_.instance_uses.push_back(InstanceUse{name, loc, ctm[0], ctm[1], animated});
 }
 
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {

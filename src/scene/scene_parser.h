@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 
 inline constexpr size_t kMaxIncludeDepth = 64;
 
-// pbrt keeps two transforms so that ActiveTransform can animate between them; eyetrace has
-// no motion blur, but keeping both lets it warn exactly when a file relies on it.
+// pbrt keeps two transforms, at the two TransformTimes, so that ActiveTransform can animate
+// between them (motion blur).
 using TransformPair = std::array<Transform, 2>;
 
 struct GraphicsState {
@@ -84,6 +84,9 @@ class SceneParser {
   void note_option(const SourceLoc& loc, const char* directive);
   void apply(const SourceLoc& loc, const char* directive, const Transform& t, bool replace = false);
   Transform current_transform(const SourceLoc& loc, const char* directive) const;
+  // Both transforms, for the directives that may move (Shape, ObjectInstance, Camera); true in
+  // `animated` when they differ (checked to be interpolable, else an error at loc).
+  TransformPair current_transforms(const SourceLoc& loc, const char* directive, bool* animated) const;
   void push_block(const SourceLoc& loc, const char* directive);
   void pop_block(const SourceLoc& loc, const char* directive, const char* opener);
   fs::path resolve_include(const std::string& name, const SourceLoc& loc, const char* directive,

@@ -336,6 +336,28 @@ TEST(LensSystemCamera, WorldTransformIsApplied) {
   EXPECT_NE(lens->to_string().find("navarro"), std::string::npos);
 }
 
+// Motion blur: an eye moving 2 units along +z over the TransformTimes 0 1 sends the ray of a
+// sample with time 0.25 from where the still eye's ray leaves, moved by 0.5.
+TEST(LensSystemCamera, MovingEyeIsPlacedAtTheSampleTime) {
+  SceneEntity e = parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 3", "Camera", "test");
+  CameraContext ctx{e.params, Transform(), IVec2(64, 64), ""};
+  ctx.world_from_camera_motion = AnimatedTransform(Transform(), 0.f, translate(Vec3(0, 0, 2)), 1.f);
+  std::unique_ptr<Camera> moving = create_named_eye_camera("navarro")(ctx);
+  SceneEntity e2 = parse_directive_text("Camera \"navarro\" \"float pupildiameter\" 3", "Camera", "test");
+  CameraContext still{e2.params, Transform(), IVec2(64, 64), ""};
+  std::unique_ptr<Camera> cam0 = create_named_eye_camera("navarro")(still);
+  CameraSample cs;
+  cs.p_film = Vec2(20.f, 50.f);
+  cs.p_lens = Vec2(0.3f, 0.6f);
+  cs.time = 0.25f;
+  auto r = moving->generate_ray(cs), r0 = cam0->generate_ray(cs);
+  ASSERT_TRUE(r);
+  ASSERT_TRUE(r0);
+  EXPECT_NEAR(glm::length(r->ray.o - (r0->ray.o + Vec3(0, 0, 0.5f))), 0.f, 1e-6f);
+  EXPECT_NEAR(glm::length(r->ray.d - r0->ray.d), 0.f, 1e-6f);
+  EXPECT_EQ(r->ray.time, 0.25f);
+}
+
 }  // namespace
 }  // namespace eyetrace
 

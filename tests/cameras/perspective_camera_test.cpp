@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <tuple>
 
 namespace eyetrace {
 namespace {
@@ -46,6 +47,30 @@ TEST(PerspectiveCamera, LookAtPlacesTargetAtCentre) {
   EXPECT_NEAR(r->ray.d.z, 1.f, 1e-6f);
   cs.p_film = Vec2(50.5f, 10.f);
   EXPECT_GT(cam.generate_ray(cs)->ray.d.y, 0.f);
+}
+
+// Motion blur (pbrt-v4's CameraBase::SampleTime and AnimatedTransform): the time sample u
+// becomes (1 - u) shutteropen + u shutterclose, and the camera sits where its transform is at
+// that time: with TransformTimes 0 2 and the shutter 1 to 3, u = 0.25 is time 1.5 (3/4 of the
+// way), u = 0.75 is time 2.5 (past the end time: held at the end).
+TEST(PerspectiveCamera, MovingCameraRayLeavesFromItsPlaceAtTheShutterTime) {
+  PerspectiveCamera::Settings s;
+  s.shutter_open = 1.f;
+  s.shutter_close = 3.f;
+  const AnimatedTransform motion(Transform(), 0.f, translate(Vec3(4, 0, 0)) * rotate(90, Vec3(0, 1, 0)), 2.f);
+  PerspectiveCamera cam(Transform(), IVec2(32, 32), s, motion);
+  CameraSample cs;
+  cs.p_film = Vec2(16.f, 16.f);  // the image centre: the camera's own +z
+  for (auto [u, time, fraction] : {std::tuple{0.25f, 1.5f, 0.75f}, std::tuple{0.75f, 2.5f, 1.f}}) {
+    cs.time = u;
+    auto r = cam.generate_ray(cs);
+    ASSERT_TRUE(r);
+    EXPECT_FLOAT_EQ(r->ray.time, time);
+    EXPECT_NEAR(glm::length(r->ray.o - Vec3(4.f * fraction, 0, 0)), 0.f, 1e-5f);
+    // +z turned about +y by 90 fraction degrees.
+    const float a = radians(90.f * fraction);
+    EXPECT_NEAR(glm::length(r->ray.d - Vec3(std::sin(a), 0, std::cos(a))), 0.f, 1e-5f);
+  }
 }
 
 // Every thin-lens ray from one film point passes through the same point on the plane of

@@ -2,7 +2,7 @@
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
 // diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
-// maxcomponentvalue, the gbuffer film's channels) is rendered here by eyetrace with two seeds and compared
+// maxcomponentvalue, the gbuffer film's channels, motion blur) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
 // everything whose default could differ (box pixel filter, the independent sampler, the path
@@ -201,6 +201,9 @@ TEST(PbrtV4Reference, LoopSubdivisionClosedAndWithABoundary) { expect_matches_pb
 TEST(PbrtV4Reference, PortalOnAWindowOfAClosedRoom) { expect_matches_pbrt_v4("portal"); }
 // The camera's shutter interval (0.4 s) with ISO 200 sets the film's exposure, as pbrt-v4 reads it.
 TEST(PbrtV4Reference, CameraShutterIntervalIsTheExposureTime) { expect_matches_pbrt_v4("shutter"); }
+// Motion blur: a moving, growing sphere (an animated shape), a turning box (an animated
+// ObjectInstance) and a panning camera, with the shutter reaching past the end time.
+TEST(PbrtV4Reference, MotionBlurOfShapeInstanceAndCameraPastTheEndTime) { expect_matches_pbrt_v4("motion"); }
 // pbrt-v4's bidirectional path tracer against eyetrace's path tracer standing in for it.
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
 // pbrt-v4's pmj02bn tables are not in the oracle's source snapshot (PROVENANCE): eyetrace's

@@ -455,22 +455,7 @@ Shape "disk"
   expect_vec_near(d.shapes[0].world_from_object.point(Vec3(0.f)), Vec3(5, 0, 0));
 }
 
-TEST(ParserTransforms, ActiveTransformWarnsAndUsesTheStartTransform) {
-  int before = warning_count();
-  SceneDescription d = parse(R"(WorldBegin
-ActiveTransform EndTime
-Translate 1 0 0
-ActiveTransform All
-Shape "sphere"
-ActiveTransform StartTime
-Translate 1 0 0
-ActiveTransform All
-Shape "disk"
-)");
-  EXPECT_TRUE(d.shapes.at(0).world_from_object.is_identity());
-  expect_vec_near(d.shapes.at(1).world_from_object.point(Vec3(0.f)), Vec3(1, 0, 0));  // both now agree
-  EXPECT_EQ(warning_count() - before, 1);
-}
+// ActiveTransform and TransformTimes: tests/scene/motion_blur_parse_test.cpp.
 
 }  // namespace
 }  // namespace eyetrace
