@@ -4,6 +4,7 @@
 
 #include "core/material.h"
 #include "core/sampling.h"
+#include "integrators/subsurface_exit.h"
 #include "integrators/volpath_integrator.h"
 #include "render/scene.h"
 
@@ -48,6 +49,31 @@ SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, cons
   if (light->is_delta()) return f * ls->L / light_pdf;
   float w = power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi));
   return w * f * ls->L / light_pdf;
+}
+
+bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, SampledWavelengths& lambda,
+                                                   Sampler& sampler, ScratchBuffer& arena, RayTally& tally,
+                                                   SampledSpectrum& beta, SampledSpectrum& L, Ray& ray,
+                                                   float& prev_bsdf_pdf, LightSampleContext& prev_ctx) const {
+  const BSSRDF* bssrdf = entry.material->bssrdf(entry, lambda, arena);
+  if (!bssrdf) return false;
+  const std::optional<SubsurfaceExit> exit =
+      sample_subsurface_exit(scene_, *bssrdf, entry, lambda, sampler, arena, tally);
+  if (!exit) return false;
+  beta *= exit->weight;
+  // Next-event estimation at the exit, MIS-weighted against sampling Sw (as at any surface).
+  if (!lights_.empty())
+    L += beta * sample_direct(exit->si, *exit->sw, lambda, sampler, tally);
+  else
+    ++tally.shadow_rays_skipped;
+  const float uc = sampler.get_1d();
+  const std::optional<BSDFSample> ws = exit->sw->sample_f(exit->si.wo, uc, sampler.get_2d());
+  if (!ws || !(ws->pdf > 0.f) || is_black(ws->f)) return false;
+  beta *= ws->f * std::abs(glm::dot(ws->wi, exit->si.ns)) / ws->pdf;
+  prev_bsdf_pdf = ws->pdf;
+  prev_ctx = LightSampleContext{exit->si.p, exit->si.n};
+  ray = spawn_ray(exit->si, ws->wi);
+  return is_finite(beta);
 }
 
 SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
@@ -102,6 +128,13 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
     prev_ctx = LightSampleContext{si.p, si.n};
     ray = spawn_ray(si, bs->wi);
     if (!is_finite(beta)) break;
+    // Light refracted into a subsurface material leaves elsewhere: the path continues from the
+    // exit point instead (no bounce counted, as pbrt-v4).
+    if ((bs->flags & kTransmission) && si.material->has_subsurface()) {
+      if (!continue_from_subsurface_exit(si, lambda, sampler, arena, tally, beta, L, ray, prev_bsdf_pdf, prev_ctx))
+        break;
+      specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
+    }
     // Russian roulette once the path has some length and its throughput is below the
     // threshold; unbiased (survivors are reweighted). A path survives with probability q, the
     // throughput's largest component (pbrt-v4's 1 - max(0, 1 - q)), so above 1 it always does.
