@@ -51,16 +51,14 @@ SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, cons
   return w * f * ls->L / light_pdf;
 }
 
-bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, SampledWavelengths& lambda,
-                                                   Sampler& sampler, ScratchBuffer& arena, RayTally& tally,
-                                                   SampledSpectrum& beta, SampledSpectrum& L, Ray& ray,
+bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf,
+                                                   SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
+                                                   RayTally& tally, SampledSpectrum& beta, SampledSpectrum& L, Ray& ray,
                                                    float& prev_bsdf_pdf, LightSampleContext& prev_ctx) const {
-  const BSSRDF* bssrdf = entry.material->bssrdf(entry, lambda, arena);
-  if (!bssrdf) return false;
   const std::optional<SubsurfaceExit> exit =
-      sample_subsurface_exit(scene_, *bssrdf, entry, lambda, sampler, arena, tally);
+      sample_subsurface_exit(scene_, bssrdf, entry, lambda, sampler, arena, tally);
   if (!exit) return false;
-  beta *= exit->weight;
+  beta *= exit->weight(lambda);
   // Next-event estimation at the exit, MIS-weighted against sampling Sw (as at any surface).
   if (!lights_.empty())
     L += beta * sample_direct(exit->si, *exit->sw, lambda, sampler, tally);
@@ -116,8 +114,9 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
       L += beta * sample_direct(si, *bsdf, lambda, sampler, tally);
     else
       ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
-    // The next ray could only add emission it finds, and there is none to find.
-    if (depth == max_depth_ && !hittable_lights_) break;
+    // The next ray could only add emission it finds, and there is none to find (unless it
+    // refracts into a subsurface material, whose exit point samples light as pbrt-v4 does).
+    if (depth == max_depth_ && !hittable_lights_ && !si.material->has_subsurface()) break;
 
     float uc = sampler.get_1d();
     std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());
@@ -130,8 +129,11 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
     if (!is_finite(beta)) break;
     // Light refracted into a subsurface material leaves elsewhere: the path continues from the
     // exit point instead (no bounce counted, as pbrt-v4).
-    if ((bs->flags & kTransmission) && si.material->has_subsurface()) {
-      if (!continue_from_subsurface_exit(si, lambda, sampler, arena, tally, beta, L, ray, prev_bsdf_pdf, prev_ctx))
+    const BSSRDF* bssrdf =
+        (bs->flags & kTransmission) && si.material->has_subsurface() ? si.material->bssrdf(si, lambda, arena) : nullptr;
+    if (bssrdf) {
+      if (!continue_from_subsurface_exit(si, *bssrdf, lambda, sampler, arena, tally, beta, L, ray, prev_bsdf_pdf,
+                                         prev_ctx))
         break;
       specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
     }

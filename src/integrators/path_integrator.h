@@ -11,6 +11,7 @@ namespace eyetrace {
 
 struct SurfaceInteraction;
 class BSDF;
+class BSSRDF;
 
 class PathIntegrator : public Integrator {
  public:
@@ -25,11 +26,12 @@ class PathIntegrator : public Integrator {
   // Light sampling at a surface hit: one light, one shadow ray, MIS-weighted.
   SampledSpectrum sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
                                 Sampler& sampler, RayTally& tally) const;
-  // After a transmission into a subsurface material at `entry`: moves the path to a sampled
+  // After a transmission into a subsurface material at `entry` (its BSSRDF there): moves the path to a sampled
   // exit point, adds light sampled there and samples Sw for the next ray. False ends the path.
-  bool continue_from_subsurface_exit(const SurfaceInteraction& entry, SampledWavelengths& lambda, Sampler& sampler,
-                                     ScratchBuffer& arena, RayTally& tally, SampledSpectrum& beta, SampledSpectrum& L,
-                                     Ray& ray, float& prev_bsdf_pdf, LightSampleContext& prev_ctx) const;
+  bool continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf, SampledWavelengths& lambda,
+                                     Sampler& sampler, ScratchBuffer& arena, RayTally& tally, SampledSpectrum& beta,
+                                     SampledSpectrum& L, Ray& ray, float& prev_bsdf_pdf,
+                                     LightSampleContext& prev_ctx) const;
   int max_depth_;
   std::string name_;
   float rr_threshold_;

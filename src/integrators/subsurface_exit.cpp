@@ -32,15 +32,13 @@ std::optional<SubsurfaceExit> sample_subsurface_exit(const Scene& scene, const B
   });
   if (candidates == 0) return std::nullopt;
   const BSSRDFSample bs = bssrdf.probe_intersection_to_sample(chosen, arena);
-  // With the secondary wavelengths terminated only the hero's estimate counts.
-  const float pdf = lambda.secondary_terminated() ? bs.pdf[0] : bs.pdf.average();
-  if (!(pdf > 0.f) || is_black(bs.sp)) return std::nullopt;
+  if (!(bs.pdf[0] > 0.f) || is_black(bs.sp) || !is_finite(bs.sp) || !is_finite(bs.pdf)) return std::nullopt;
   SubsurfaceExit exit;
   exit.si = chosen;
   exit.si.wo = chosen.ns;
   exit.sw = bs.sw;
-  exit.weight = bs.sp * (float(candidates) / pdf);
-  if (!is_finite(exit.weight)) return std::nullopt;
+  exit.sp = bs.sp;
+  exit.pdf = bs.pdf / float(candidates);
   return exit;
 }
 

@@ -120,9 +120,10 @@ const PluginSpec& subsurface_material_spec() {
   static const PluginSpec spec{
       "Material",
       "a dielectric boundary over a scattering medium: photon beam diffusion BSSRDF (pbrt-v4's TabulatedBSSRDF)",
-      "Rendered by `path` and by `volpath` in scenes without participating media (eyetrace's `volpath` with media "
-      "does not sample BSSRDFs). A subsurface material inside a `mix` is not sampled below its surface. "
-      "Coefficients are per scene unit, as in pbrt-v4 (the named data are in mm^-1: use \"scale\").",
+      "Rendered by `path` and `volpath` as pbrt-v4's `volpath` does. Inside a `mix`, exit points are the hits on the "
+      "mix's surfaces (pbrt-v4 resolves the mix at each hit). Coefficients are per scene unit, as in pbrt-v4 (the "
+      "named "
+      "data are in mm^-1: use \"scale\").",
       std::vector<ParamSpec>{
           param::string("name")
               .in(measured_medium_names())
