@@ -235,7 +235,10 @@ TEST(SubsurfaceMaterial, BadParametersNameFileLineAndParameter) {
   for (auto [bad, param] :
        {std::pair{R"("string name" "Skin9")", "name"}, std::pair{R"("rgb sigma_a" [1 1 1])", "sigma_a"},
         std::pair{R"("rgb sigma_s" [1 1 1])", "sigma_s"}, std::pair{R"("float eta" 0)", "eta"},
-        std::pair{R"("float g" 1)", "g"}, std::pair{R"("float scale" -1)", "scale"}}) {
+        std::pair{R"("float g" 1)", "g"}, std::pair{R"("float scale" -1)", "scale"},
+        std::pair{R"("rgb sigma_a" [1 -1 1] "rgb sigma_s" [1 1 1])", "sigma_a"},
+        std::pair{R"("rgb sigma_a" [1 1 1] "spectrum sigma_s" [400 1 700 -2])", "sigma_s"},
+        std::pair{R"("rgb reflectance" [0.5 0.5 0.5] "rgb mfp" [1 0 1])", "mfp"}}) {
     const std::string e = error_of(bad);
     EXPECT_NE(e.find("sss.pbrt:4"), std::string::npos) << bad << ": " << e;
     EXPECT_NE(e.find(param), std::string::npos) << bad << ": " << e;
