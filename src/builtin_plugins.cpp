@@ -23,6 +23,7 @@
 #include "materials/interface_material.h"
 #include "materials/measured_material.h"
 #include "materials/mix_material.h"
+#include "materials/subsurface_material.h"
 #include "materials/thin_dielectric_material.h"
 #include "media/homogeneous_medium.h"
 #include "optics/eye_models.h"
@@ -98,6 +99,7 @@ void register_builtin_plugins(Registry& r) {
   r.materials.add("thindielectric", create_thindielectric_material, thindielectric_material_spec());
   r.materials.add("hair", create_hair_material, hair_material_spec());
   r.materials.add("measured", create_measured_material, measured_material_spec());
+  r.materials.add("subsurface", create_subsurface_material, subsurface_material_spec());
 
   r.float_textures.add("constant", create_constant_float_texture, constant_texture_spec());
   r.float_textures.add("scale", create_scale_float_texture, scale_texture_spec());

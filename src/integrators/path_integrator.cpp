@@ -4,6 +4,7 @@
 
 #include "core/material.h"
 #include "core/sampling.h"
+#include "integrators/subsurface_exit.h"
 #include "integrators/volpath_integrator.h"
 #include "render/scene.h"
 
@@ -50,6 +51,29 @@ SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, cons
   return w * f * ls->L / light_pdf;
 }
 
+bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf,
+                                                   SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
+                                                   RayTally& tally, SampledSpectrum& beta, SampledSpectrum& L, Ray& ray,
+                                                   float& prev_bsdf_pdf, LightSampleContext& prev_ctx) const {
+  const std::optional<SubsurfaceExit> exit =
+      sample_subsurface_exit(scene_, bssrdf, entry, lambda, sampler, arena, tally);
+  if (!exit) return false;
+  beta *= exit->weight(lambda);
+  // Next-event estimation at the exit, MIS-weighted against sampling Sw (as at any surface).
+  if (!lights_.empty())
+    L += beta * sample_direct(exit->si, *exit->sw, lambda, sampler, tally);
+  else
+    ++tally.shadow_rays_skipped;
+  const float uc = sampler.get_1d();
+  const std::optional<BSDFSample> ws = exit->sw->sample_f(exit->si.wo, uc, sampler.get_2d());
+  if (!ws || !(ws->pdf > 0.f) || is_black(ws->f)) return false;
+  beta *= ws->f * std::abs(glm::dot(ws->wi, exit->si.ns)) / ws->pdf;
+  prev_bsdf_pdf = ws->pdf;
+  prev_ctx = LightSampleContext{exit->si.p, exit->si.n};
+  ray = spawn_ray(exit->si, ws->wi);
+  return is_finite(beta);
+}
+
 SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
                                          ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible) const {
   SampledSpectrum L(0.f), beta(1.f);
@@ -90,8 +114,9 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
       L += beta * sample_direct(si, *bsdf, lambda, sampler, tally);
     else
       ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
-    // The next ray could only add emission it finds, and there is none to find.
-    if (depth == max_depth_ && !hittable_lights_) break;
+    // The next ray could only add emission it finds, and there is none to find (unless it
+    // refracts into a subsurface material, whose exit point samples light as pbrt-v4 does).
+    if (depth == max_depth_ && !hittable_lights_ && !si.material->has_subsurface()) break;
 
     float uc = sampler.get_1d();
     std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());
@@ -102,6 +127,16 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
     prev_ctx = LightSampleContext{si.p, si.n};
     ray = spawn_ray(si, bs->wi);
     if (!is_finite(beta)) break;
+    // Light refracted into a subsurface material leaves elsewhere: the path continues from the
+    // exit point instead (no bounce counted, as pbrt-v4).
+    const BSSRDF* bssrdf =
+        (bs->flags & kTransmission) && si.material->has_subsurface() ? si.material->bssrdf(si, lambda, arena) : nullptr;
+    if (bssrdf) {
+      if (!continue_from_subsurface_exit(si, *bssrdf, lambda, sampler, arena, tally, beta, L, ray, prev_bsdf_pdf,
+                                         prev_ctx))
+        break;
+      specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
+    }
     // Russian roulette once the path has some length and its throughput is below the
     // threshold; unbiased (survivors are reweighted). A path survives with probability q, the
     // throughput's largest component (pbrt-v4's 1 - max(0, 1 - q)), so above 1 it always does.

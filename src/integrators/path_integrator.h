@@ -2,6 +2,7 @@
 // (power heuristic) between BSDF and light sampling, as pbrt-v4's "path" integrator.
 // "direct" is the same estimator stopped after the first bounce (direct lighting only).
 #pragma once
+#include "core/ray.h"
 #include "integrators/light_sampler.h"
 #include "render/integrator.h"
 #include "scene/registry.h"
@@ -10,6 +11,7 @@ namespace eyetrace {
 
 struct SurfaceInteraction;
 class BSDF;
+class BSSRDF;
 
 class PathIntegrator : public Integrator {
  public:
@@ -24,6 +26,12 @@ class PathIntegrator : public Integrator {
   // Light sampling at a surface hit: one light, one shadow ray, MIS-weighted.
   SampledSpectrum sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
                                 Sampler& sampler, RayTally& tally) const;
+  // After a transmission into a subsurface material at `entry` (its BSSRDF there): moves the path to a sampled
+  // exit point, adds light sampled there and samples Sw for the next ray. False ends the path.
+  bool continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf, SampledWavelengths& lambda,
+                                     Sampler& sampler, ScratchBuffer& arena, RayTally& tally, SampledSpectrum& beta,
+                                     SampledSpectrum& L, Ray& ray, float& prev_bsdf_pdf,
+                                     LightSampleContext& prev_ctx) const;
   int max_depth_;
   std::string name_;
   float rr_threshold_;

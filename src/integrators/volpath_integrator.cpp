@@ -8,6 +8,7 @@
 #include "core/material.h"
 #include "core/medium.h"
 #include "core/sampling.h"
+#include "integrators/subsurface_exit.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -118,6 +119,42 @@ SampledSpectrum VolPathIntegrator::sample_light(const Scatterer& at, const Sampl
   return beta * f_hat * T * ls->L / carried_average(r_light + r_p * T * scatter_pdf, lambda);
 }
 
+bool VolPathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf,
+                                                      SampledWavelengths& lambda, Sampler& sampler,
+                                                      ScratchBuffer& arena, RayTally& tally, SampledSpectrum& beta,
+                                                      SampledSpectrum& r_u, SampledSpectrum& r_l, SampledSpectrum& L,
+                                                      Ray& ray, const Medium*& medium,
+                                                      LightSampleContext& prev_ctx) const {
+  const std::optional<SubsurfaceExit> exit =
+      sample_subsurface_exit(scene_, bssrdf, entry, lambda, sampler, arena, tally);
+  if (!exit) return false;
+  // The hero's density weighs the throughput; r_u carries every wavelength's (pbrt-v4).
+  beta *= exit->sp / exit->pdf[0];
+  r_u *= exit->pdf / exit->pdf[0];
+  // The exit is a surface point outside the entry's medium: light there as at any surface.
+  Scatterer at;
+  at.p = exit->si.p;
+  at.p_error = exit->si.p_error;
+  at.n = exit->si.n;
+  at.time = exit->si.time;
+  at.si = &exit->si;
+  at.bsdf = exit->sw;
+  at.medium = medium;
+  if (!lights_.empty())
+    L += sample_light(at, beta, r_u, lambda, sampler, tally);
+  else
+    ++tally.shadow_rays_skipped;
+  const float uc = sampler.get_1d();
+  const std::optional<BSDFSample> ws = exit->sw->sample_f(exit->si.wo, uc, sampler.get_2d());
+  if (!ws || !(ws->pdf > 0.f) || is_black(ws->f)) return false;
+  beta *= ws->f * std::abs(glm::dot(ws->wi, exit->si.ns)) / ws->pdf;
+  r_l = r_u / ws->pdf;
+  prev_ctx = LightSampleContext{exit->si.p, exit->si.n};
+  if (exit->si.medium_interface) medium = exit->si.medium_interface->towards(ws->wi, exit->si.n);
+  ray = unit_ray(spawn_ray(exit->si, ws->wi));
+  return is_finite(beta) && is_finite(r_u);
+}
+
 SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
                                             ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible) const {
   SampledSpectrum L(0.f), beta(1.f), r_u(1.f), r_l(1.f);
@@ -222,6 +259,15 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     if (si.medium_interface) medium = si.medium_interface->towards(bs->wi, si.n);
     ray = unit_ray(spawn_ray(si, bs->wi));
     if (!is_finite(beta)) break;
+    // Light refracted into a subsurface material leaves elsewhere (no bounce counted, as pbrt-v4).
+    const BSSRDF* bssrdf =
+        (bs->flags & kTransmission) && si.material->has_subsurface() ? si.material->bssrdf(si, lambda, arena) : nullptr;
+    if (bssrdf) {
+      if (!continue_from_subsurface_exit(si, *bssrdf, lambda, sampler, arena, tally, beta, r_u, r_l, L, ray, medium,
+                                         prev_ctx))
+        break;
+      specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
+    }
     // Russian roulette as `path`, on the throughput divided by the spectral MIS ratio (pbrt-v4).
     const SampledSpectrum rr_beta = beta / carried_average(r_u, lambda);
     const float q = lambda.secondary_terminated() ? rr_beta[0] : max_component(rr_beta);

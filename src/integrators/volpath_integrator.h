@@ -15,6 +15,7 @@ namespace eyetrace {
 
 struct SurfaceInteraction;
 class BSDF;
+class BSSRDF;
 class Medium;
 
 class VolPathIntegrator : public Integrator {
@@ -44,6 +45,13 @@ class VolPathIntegrator : public Integrator {
   // material blocks it.
   SampledSpectrum transmittance(Ray ray, const Medium* medium, const Vec3& p_to, const Vec3& err_to, const Vec3& n_to,
                                 const SampledWavelengths& lambda, RayTally& tally) const;
+  // After a transmission into a subsurface material at `entry` (its BSSRDF there): moves the path to a sampled
+  // exit point (r_u takes every wavelength's density of it), samples light there and Sw for the
+  // next ray; `medium` becomes the one the new ray leaves into. False ends the path.
+  bool continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf, SampledWavelengths& lambda,
+                                     Sampler& sampler, ScratchBuffer& arena, RayTally& tally, SampledSpectrum& beta,
+                                     SampledSpectrum& r_u, SampledSpectrum& r_l, SampledSpectrum& L, Ray& ray,
+                                     const Medium*& medium, LightSampleContext& prev_ctx) const;
   int max_depth_;
   float rr_threshold_;
   PowerLightSampler lights_;

@@ -13,12 +13,23 @@ namespace {
 class MixMaterial final : public Material {
  public:
   MixMaterial(const Material* a, const Material* b, const FloatTexture* amount, uint64_t seed)
-      : a_(a), b_(b), amount_(amount), seed_(seed) {}
+      : a_(a),
+        b_(b),
+        amount_(amount),
+        seed_(seed),
+        subsurface_((a && a->has_subsurface()) || (b && b->has_subsurface())) {}
 
   const BSDF* bsdf(const SurfaceInteraction& si, SampledWavelengths& lambda, ScratchBuffer& arena) const override {
     const Material* m = choose(si);
     // An "interface" component is a null material: the ray continues, as through an interface.
     return m ? m->bsdf(si, lambda, arena) : nullptr;
+  }
+  bool has_subsurface() const override { return subsurface_; }
+  // The same choice as bsdf() at this hit: the component whose boundary the path crossed.
+  const BSSRDF* bssrdf(const SurfaceInteraction& si, const SampledWavelengths& lambda,
+                       ScratchBuffer& arena) const override {
+    const Material* m = choose(si);
+    return m ? m->bssrdf(si, lambda, arena) : nullptr;
   }
 
  private:
@@ -32,6 +43,7 @@ class MixMaterial final : public Material {
   const Material* b_;
   const FloatTexture* amount_;
   uint64_t seed_;
+  bool subsurface_;
 };
 
 }  // namespace

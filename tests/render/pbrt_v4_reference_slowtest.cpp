@@ -234,6 +234,10 @@ TEST(PbrtV4Reference, VolpathCameraInChromaticFogWithAnInterfaceSphereOfDenserFo
 // The same with the denser fog emitting: pbrt-v4 reads "Le" as an area light's "L" (normalised
 // by its luminance), and weights emission at collisions by r_e.
 TEST(PbrtV4Reference, VolpathEmissiveMediumInsideAnInterfaceSphere) { expect_matches_pbrt_v4("fog-glow"); }
+// The subsurface material (photon beam diffusion BSSRDF) on two spheres: a named measured
+// medium ("Skin1", scaled) under a smooth boundary, and "reflectance" + "mfp" with g 0.5 under a
+// rough one; Integrator "volpath" as pbrt-v4 needs (its "path" ignores BSSRDFs).
+TEST(PbrtV4Reference, SubsurfaceNamedMediumAndReflectanceWithRoughBoundary) { expect_matches_pbrt_v4("subsurface"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way

@@ -18,7 +18,7 @@ def main(eyetrace, work):
     shutil.rmtree(work, ignore_errors=True)
     scenes = {
         "smoke-plume/plume.pbrt": 'WorldBegin\nLightSource "point"\nShape "sphere"\n',
-        "lte-orb/lte-orb-silver.pbrt": 'WorldBegin\nMaterial "subsurface"\nShape "sphere"\n',
+        "lte-orb/lte-orb-silver.pbrt": 'WorldBegin\nMaterial "plastic"\nShape "sphere"\n',
         "killeroos/killeroo-simple.pbrt": 'WorldBegin\nInclude "geometry/killeroo.pbrt"\n',
         "kroken/camera-1.pbrt": 'WorldBegin\nMakeNamedMedium "m" "string type" "cloud"\n',
         # The named material would be defined in the missing materials.pbrt.
@@ -34,14 +34,14 @@ def main(eyetrace, work):
     text = open(out).read()
     expected_rows = [
         "| `smoke-plume/plume.pbrt` | renders | — | — | 0 |",
-        '| `lte-orb/lte-orb-silver.pbrt` | blocked | material "subsurface" | — | 0 |',
+        '| `lte-orb/lte-orb-silver.pbrt` | blocked | material "plastic" | — | 0 |',
         "| `killeroos/killeroo-simple.pbrt` | missing data only | — | — | 1 |",
         "| `kroken/camera-1.pbrt` | renders, ignoring features | — | participating media (ignored) | 0 |",
         "| `sportscar/sportscar-sky.pbrt` | missing data only | — | — | 1 |",
         "| `villa/villa-daylight.pbrt` | not checked (file not at hand) | — | — | 0 |",
         "| renders | 1 |", "| renders, ignoring features | 1 |", "| missing data only | 2 |", "| blocked | 1 |",
         "| not checked | 93 |",
-        '| material "subsurface" | 1: lte-orb-silver.pbrt |',
+        '| material "plastic" | 1: lte-orb-silver.pbrt |',
     ]
     missing = [r for r in expected_rows if r not in text.splitlines()]
     if missing:
