@@ -23,6 +23,8 @@
 #include "materials/interface_material.h"
 #include "materials/mix_material.h"
 #include "materials/thin_dielectric_material.h"
+#include "media/cloud_medium.h"
+#include "media/grid_medium.h"
 #include "media/homogeneous_medium.h"
 #include "optics/eye_models.h"
 #include "samplers/halton_sampler.h"
@@ -125,6 +127,8 @@ void register_builtin_plugins(Registry& r) {
   r.area_lights.add("diffuse", create_diffuse_area_light, diffuse_area_light_spec());
 
   r.media.add("homogeneous", create_homogeneous_medium, homogeneous_medium_spec());
+  r.media.add("uniformgrid", create_grid_medium, grid_medium_spec());
+  r.media.add("cloud", create_cloud_medium, cloud_medium_spec());
 
   r.integrators.add("path", create_path_integrator, path_integrator_spec());
   r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());
