@@ -291,11 +291,10 @@ class Builder {
     setup_.scene->add_light(std::move(light));
   }
 
-  // pbrt-v4's rgbgrid and nanovdb media are not built: rays cross their boundaries as if
-  // through vacuum.
+  // pbrt-v4's nanovdb medium is not built: rays cross its boundaries as if through vacuum.
   void build_medium(const std::string& name, const TransformedEntity& m) {
     media_[name] = nullptr;
-    if (m.name == "rgbgrid" || m.name == "nanovdb") {
+    if (m.name == "nanovdb") {
       m.params.mark_all_used();
       warn(m.loc,
            fmt::format("medium type \"{}\" is not supported; MakeNamedMedium \"{}\" ignored (vacuum)", m.name, name));

@@ -128,6 +128,32 @@ TEST(VolPathGrid, LinearRampAlongTheRayPassesExpOfTheIntegral) {
   }
 }
 
+// A chromatic rgbgrid absorber of constant RGB passes, per wavelength bucket, what the
+// homogeneous medium of the same RGB passes (its exact Beer-Lambert path, tested against
+// exp(-sigma d) in volpath_test.cpp): the per-wavelength ratios at null collisions.
+TEST(VolPathGrid, ChromaticRgbGridTransmittanceMatchesTheHomogeneousMediumPerBucket) {
+  std::string rgb = "[";
+  for (int i = 0; i < 27; ++i) rgb += " 0.2 0.9 2";
+  const std::string grid =
+      "MakeNamedMedium \"ink\" \"string type\" \"rgbgrid\" \"integer nx\" 3 \"integer ny\" 3 "
+      "\"integer nz\" 3 \"point3 p0\" [-2 -2 -2] \"point3 p1\" [2 2 2] \"rgb sigma_a\" " +
+      rgb + " ] \"rgb sigma_s\" " + rgb + " ] \"float scale\" 0.5\n";
+  // The same absorption, no scattering: sigma_s 0 in the homogeneous medium would differ, so
+  // both scatter; a narrow view sees the unscattered light plus scattered sky, the same in both.
+  const std::string homogeneous =
+      "MakeNamedMedium \"ink\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [0.2 0.9 2] "
+      "\"rgb sigma_s\" [0.2 0.9 2] \"float scale\" 0.5\n";
+  // The 3^3 grid is constant within |x| < 2 - 2/3 (the outer half cells fade): a ball of 1.2.
+  const Stats a = render(narrow_view(kSpectralFilm, 64) + "WorldBegin\n" + grid + kSky + ball("ink", "", 1.2f));
+  const Stats b = render(narrow_view(kSpectralFilm, 64) + "WorldBegin\n" + homogeneous + kSky + ball("ink", "", 1.2f));
+  const Stats open = render(narrow_view(kSpectralFilm, 4) + "WorldBegin\n" + kSky);
+  for (int c = 3; c < 6; ++c) {
+    EXPECT_NEAR(a.mean[c], b.mean[c], 5 * std::hypot(a.se[c], b.se[c])) << "bucket " << c - 3;
+    EXPECT_LT(b.mean[c], 0.9 * open.mean[c]);  // the medium is seen
+  }
+  EXPECT_LT(b.mean[3], 0.8 * b.mean[5]);  // and chromatic: blue (400-500 nm, B = 2) darker than red
+}
+
 // A point light 1 unit above a diffuse disk seen from 2 units away, all inside a grid fog
 // (constant over the scene's extent): the clear scene's radiance times exp(-sigma 3).
 TEST(VolPathGrid, PointLightInAbsorbingGridFogIsAttenuatedAlongBothSegments) {

@@ -109,7 +109,7 @@ MakeNamedMedium "late" "string type" "homogeneous"
 
 TEST(MediumInterface, GridMediaAreIgnoredWithAWarningAndTheSceneRenders) {
   const std::string text = R"(Film "rgb" "integer xresolution" 4 "integer yresolution" 4
-MakeNamedMedium "smoke" "string type" "rgbgrid" "rgb sigma_a" [1 1 1] "integer nx" 1 "integer ny" 1 "integer nz" 1
+MakeNamedMedium "smoke" "string type" "nanovdb" "string filename" "smoke.nvdb"
 WorldBegin
 MediumInterface "smoke" ""
 Material "interface"
