@@ -26,6 +26,7 @@
 #include "media/cloud_medium.h"
 #include "media/grid_medium.h"
 #include "media/homogeneous_medium.h"
+#include "media/nanovdb_medium.h"
 #include "media/rgb_grid_medium.h"
 #include "optics/eye_models.h"
 #include "samplers/halton_sampler.h"
@@ -131,6 +132,7 @@ void register_builtin_plugins(Registry& r) {
   r.media.add("uniformgrid", create_grid_medium, grid_medium_spec());
   r.media.add("rgbgrid", create_rgb_grid_medium, rgb_grid_medium_spec());
   r.media.add("cloud", create_cloud_medium, cloud_medium_spec());
+  r.media.add("nanovdb", create_nanovdb_medium, nanovdb_medium_spec());
 
   r.integrators.add("path", create_path_integrator, path_integrator_spec());
   r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());

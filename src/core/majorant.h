@@ -22,19 +22,21 @@ struct MajorantSegment {
 };
 
 // Maxima of a density over the voxels of a res^3 grid spanning `bounds` (the medium's space).
-// Voxel (x, y, z) covers [x/res, (x+1)/res) of the unit cube along x, and so on.
+// Voxel (x, y, z) covers [x/res, (x+1)/res) of the unit cube along x, and so on. pbrt-v4 uses
+// res 16 for its grids and 64 for NanoVDB volumes.
 struct MajorantGrid {
-  static constexpr int kRes = 16;  // pbrt-v4's resolution
+  explicit MajorantGrid(int resolution = 16) : res(resolution), voxels(size_t(res) * res * res, 0.f) {}
+  int res;
   Bounds3 bounds;
-  std::vector<float> voxels = std::vector<float>(kRes * kRes * kRes, 0.f);
+  std::vector<float> voxels;
 
-  float lookup(int x, int y, int z) const { return voxels[x + kRes * (y + kRes * z)]; }
-  void set(int x, int y, int z, float v) { voxels[x + kRes * (y + kRes * z)] = v; }
+  float lookup(int x, int y, int z) const { return voxels[x + res * (y + size_t(res) * z)]; }
+  void set(int x, int y, int z, float v) { voxels[x + res * (y + size_t(res) * z)] = v; }
   // The voxel's extent in the unit cube of `bounds`.
-  static Bounds3 voxel_bounds(int x, int y, int z) {
+  Bounds3 voxel_bounds(int x, int y, int z) const {
     Bounds3 b;
-    b.lo = Vec3(float(x), float(y), float(z)) / float(kRes);
-    b.hi = Vec3(float(x + 1), float(y + 1), float(z + 1)) / float(kRes);
+    b.lo = Vec3(float(x), float(y), float(z)) / float(res);
+    b.hi = Vec3(float(x + 1), float(y + 1), float(z + 1)) / float(res);
     return b;
   }
 };
@@ -73,7 +75,7 @@ class MajorantIterator {
     const Vec3 o_grid = (o - grid->bounds.lo) / diag;
     Vec3 d_grid = d / diag;
     const Vec3 p = o_grid + t_min * d_grid;
-    constexpr int n = MajorantGrid::kRes;
+    const int n = grid->res;
     for (int a = 0; a < 3; ++a) {
       voxel_[a] = std::clamp(int(p[a] * n), 0, n - 1);
       delta_t_[a] = 1.f / (std::abs(d_grid[a]) * n);  // inf for d 0: never stepped along

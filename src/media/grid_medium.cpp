@@ -24,11 +24,12 @@ GridMedium::GridMedium(MediumBox box, Spectrum sigma_a, Spectrum sigma_s, float 
   emissive_ = emission_.temperature.has_value();
   for (float l = kLambdaMin; l <= kLambdaMax && !emissive_; l += 1.f) emissive_ = emission_.Le(l) > 0.f;
   majorant_grid_.bounds = box_.bounds;
-  constexpr int n = MajorantGrid::kRes;
+  const int n = majorant_grid_.res;
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
-        majorant_grid_.set(x, y, z, density_.max_value(MajorantGrid::voxel_bounds(x, y, z), [](float v) { return v; }));
+        majorant_grid_.set(x, y, z,
+                           density_.max_value(majorant_grid_.voxel_bounds(x, y, z), [](float v) { return v; }));
 }
 
 SampledSpectrum GridMedium::emission(const Vec3& unit, const SampledWavelengths& lambda) const {

@@ -37,12 +37,12 @@ RGBGridMedium::RGBGridMedium(MediumBox box, float g, std::optional<Grid> sigma_a
       sigma_scale_(sigma_scale),
       Le_scale_(Le_scale) {
   majorant_grid_.bounds = box_.bounds;
-  constexpr int n = MajorantGrid::kRes;
+  const int n = majorant_grid_.res;
   auto max = [](const RgbSpectrumSample& s) { return s.max_value(); };
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
-        const Bounds3 b = MajorantGrid::voxel_bounds(x, y, z);
+        const Bounds3 b = majorant_grid_.voxel_bounds(x, y, z);
         const float a = sigma_a_ ? sigma_a_->max_value(b, max) : 1.f;
         const float s = sigma_s_ ? sigma_s_->max_value(b, max) : 1.f;
         majorant_grid_.set(x, y, z, sigma_scale_ * (a + s));
