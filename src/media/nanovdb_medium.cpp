@@ -107,7 +107,8 @@ const PluginSpec& nanovdb_medium_spec() {
   static const PluginSpec spec{
       "MakeNamedMedium",
       "density (and temperature: blackbody emission) from a NanoVDB file, trilinear",
-      "Reads uncompressed and zlib-compressed grids (pbrt-v4: uncompressed); Blosc-compressed ones are an error.",
+      "Reads uncompressed and zlib-compressed grids (pbrt-v4: uncompressed); Blosc-compressed ones are an error. "
+      "Accepts `LeScale`, the spelling the collection's explosion scene uses, which today's pbrt-v4 refuses.",
       {param::string("filename").describe("the .nvdb file (required)"),
        param::string("gridname", "density").describe("the density grid's name"),
        param::string("temperaturename", "temperature").describe("the temperature grid's name (optional in the file)"),
@@ -116,6 +117,7 @@ const PluginSpec& nanovdb_medium_spec() {
        param::real("scale", 1).at_least(0).describe("multiplies `sigma_a` and `sigma_s`"),
        param::real("g", 0).describe("Henyey-Greenstein asymmetry, in (-1, 1)"),
        param::real("Lescale", 1).at_least(0).describe("multiplies the temperature's blackbody emission"),
+       param::real("LeScale").at_least(0).describe("an older spelling of `Lescale` (not with it)"),
        param::real("temperatureoffset").describe("subtracted from the temperature (default `temperaturecutoff`)"),
        param::real("temperaturecutoff", 0).describe("pbrt-v4's older name for `temperatureoffset`"),
        param::real("temperaturescale", 1).describe("multiplies the offset temperature, giving kelvin")}};
@@ -167,7 +169,8 @@ std::unique_ptr<Medium> create_nanovdb_medium(const MediumContext& ctx) {
   const Bounds3 b = world_bounds(*grids->density);
   if (b.empty()) p.fail("filename", fmt::format("\"{}\": the density grid is empty", path));
   NanoVDBMedium::Emission e;
-  e.Le_scale = p.get_float("Lescale");
+  if (p.has("LeScale") && p.has("Lescale")) p.fail("LeScale", "and \"Lescale\" are both given: they are one parameter");
+  e.Le_scale = p.has("LeScale") ? p.get_float("LeScale") : p.get_float("Lescale");
   e.temperature_offset =
       p.has("temperatureoffset") ? p.get_float("temperatureoffset") : p.get_float("temperaturecutoff");
   e.temperature_scale = p.get_float("temperaturescale");

@@ -88,11 +88,18 @@ TEST(NanoVDBMedium, TemperatureEmitsTheNormalisedBlackbodyTimesLescale) {
   const auto m = load(dir,
                       "\"string filename\" \"fire.nvdb\" \"float temperaturecutoff\" 1 "
                       "\"float temperaturescale\" 100 \"float Lescale\" 2");
+  // The explosion scene's spelling, "LeScale", is the same parameter.
+  const auto older = load(dir,
+                          "\"string filename\" \"fire.nvdb\" \"float temperaturecutoff\" 1 "
+                          "\"float temperaturescale\" 100 \"float LeScale\" 2");
   EXPECT_TRUE(m->emissive());
   const SampledWavelengths lambda = SampledWavelengths::sample_uniform(0.4f);
   const MediumProperties mp = m->properties(Vec3(0.35f), lambda);  // inside: T = 1500 K
-  for (int i = 0; i < kSpectrumSamples; ++i)
+  const MediumProperties mp_older = older->properties(Vec3(0.35f), lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) {
     EXPECT_NEAR(mp.Le[i], 2.f * cie_y_integral() * normalized_blackbody(lambda[i], 1500.f), 1e-3f * mp.Le[i]);
+    EXPECT_EQ(mp_older.Le[i], mp.Le[i]);
+  }
 }
 
 // Density 1 in [0, 3.9]^3 (40^3 voxels of 0.1), centred on the origin by the transform at
