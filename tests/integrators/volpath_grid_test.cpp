@@ -4,7 +4,9 @@
 // with one expected value are independent samples of it):
 //  - a constant-density "uniformgrid" renders as the homogeneous medium of the same sigma
 //    (a furnace-free scene with absorption, chromatic scattering, an area light);
-//  - a chromatic absorber grid of constant density passes exp(-sigma_a d) per wavelength bucket;
+//  - a chromatic absorber grid of constant density passes exp(-sigma_a d) per wavelength bucket,
+//    and glows Le (1 - exp(-sigma_a d)) when it emits;
+//  - a constant chromatic rgbgrid passes per bucket what the homogeneous medium of its RGB does;
 //  - a linear density ramp along the ray passes exp(-sigma_a integral of density): the DDA and
 //    the trilinear lookups together (the ramp is exact between the outer sample centres);
 //  - a point light in an absorbing grid fog: the shadow ray's ratio-tracked transmittance times
@@ -109,6 +111,28 @@ TEST(VolPathGrid, ConstantDensityAbsorberPassesBeerLambertPerWavelength) {
     EXPECT_NEAR(slab.mean[c], expected, 5 * slab.se[c] + 1e-6) << "bucket " << b;
     EXPECT_LT(slab.se[c], 0.05 * expected);
   }
+}
+
+// An emissive absorber grid (constant density 1, Le read as a light's emission, an Lescale grid
+// of 2s: without one, pbrt-v4's single Lescale sample fades towards the faces): it glows
+// Le (1 - exp(-sigma_a d)) per wavelength. sigma_a is 0 below 500 nm: a hero there samples no
+// collision and the emission of the others comes through pbrt-v4's r_e weights at the
+// tentative collisions of the samples whose hero does collide.
+TEST(VolPathGrid, EmissiveGridGlowsLeTimesOneMinusTransmittance) {
+  const std::string medium = grid_medium(
+      "glow", 4, [](float, float, float) { return 1.f; },
+      "\"spectrum sigma_a\" [400 0 499.99 0 500.01 1.5 599.99 1.5 600.01 3 700 3] \"rgb sigma_s\" [0 0 0] "
+      "\"rgb Le\" [1 1 1] \"float Lescale\" " +
+          floats(std::vector<float>(64, 2.f)));
+  const double sigma[3] = {0.0, 1.5, 3.0};
+  const Stats sky = render(narrow_view(kSpectralFilm, 4) + "WorldBegin\n" + kSky);
+  const Stats glow = render(narrow_view(kSpectralFilm, 64) + "WorldBegin\n" + medium + ball("glow", "", 0.5f));
+  for (int b = 0; b < 3; ++b) {
+    const int c = 3 + b;
+    const double expected = 2.0 * sky.mean[c] * (1.0 - std::exp(-sigma[b] * 1.0));
+    EXPECT_NEAR(glow.mean[c], expected, 5 * glow.se[c] + 1e-6) << "bucket " << b;
+  }
+  EXPECT_GT(glow.mean[5], 0.5 * sky.mean[5]);  // it does glow
 }
 
 // density 1 + 0.75 (z + 2) along the view (z): over z in [-0.5, 0.5] its integral is
