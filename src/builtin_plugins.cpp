@@ -25,7 +25,11 @@
 #include "materials/mix_material.h"
 #include "materials/subsurface_material.h"
 #include "materials/thin_dielectric_material.h"
+#include "media/cloud_medium.h"
+#include "media/grid_medium.h"
 #include "media/homogeneous_medium.h"
+#include "media/nanovdb_medium.h"
+#include "media/rgb_grid_medium.h"
 #include "optics/eye_models.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
@@ -129,6 +133,10 @@ void register_builtin_plugins(Registry& r) {
   r.area_lights.add("diffuse", create_diffuse_area_light, diffuse_area_light_spec());
 
   r.media.add("homogeneous", create_homogeneous_medium, homogeneous_medium_spec());
+  r.media.add("uniformgrid", create_grid_medium, grid_medium_spec());
+  r.media.add("rgbgrid", create_rgb_grid_medium, rgb_grid_medium_spec());
+  r.media.add("cloud", create_cloud_medium, cloud_medium_spec());
+  r.media.add("nanovdb", create_nanovdb_medium, nanovdb_medium_spec());
 
   r.integrators.add("path", create_path_integrator, path_integrator_spec());
   r.integrators.add("volpath", create_volpath_integrator, volpath_integrator_spec());

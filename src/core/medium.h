@@ -1,10 +1,13 @@
 // A participating medium as the volumetric path tracer sees it: absorption and scattering
 // coefficients (per unit length) and emitted radiance at the sample's wavelengths, and the
-// Henyey-Greenstein asymmetry of its phase function. Only homogeneous media exist today, so
-// the properties do not depend on the point; a ray's transmittance over a distance d is
-// exactly exp(-sigma_t d) (Beer-Lambert).
+// Henyey-Greenstein asymmetry of its phase function, at a point (render space), and majorants
+// along a ray (core/majorant.h) for delta and ratio tracking. A homogeneous medium says so
+// (is_homogeneous): its properties do not depend on the point, and the integrator then uses
+// the exact transmittance exp(-sigma_t d) (Beer-Lambert) instead of tracking.
 #pragma once
+#include "core/majorant.h"
 #include "core/math.h"
+#include "core/ray.h"
 #include "core/sampled_spectrum.h"
 
 namespace eyetrace {
@@ -17,8 +20,17 @@ struct MediumProperties {
 class Medium {
  public:
   virtual ~Medium() = default;
-  virtual MediumProperties properties(const SampledWavelengths& lambda) const = 0;
-  // Whether Le is zero at every wavelength (the integrator then skips emission).
+  // Properties at render-space point p.
+  virtual MediumProperties properties(const Vec3& p, const SampledWavelengths& lambda) const = 0;
+  // Properties of a homogeneous medium (anywhere).
+  MediumProperties properties(const SampledWavelengths& lambda) const { return properties(Vec3(0.f), lambda); }
+  // True when the properties are the same everywhere (volpath's exact path).
+  virtual bool is_homogeneous() const { return false; }
+  // The majorant segments of `ray` (render space, unit direction) over [0, t_max]; every
+  // point's sigma_a + sigma_s is at most its segment's sigma_maj at every wavelength, and
+  // points outside every segment have none.
+  virtual MajorantIterator majorants(const Ray& ray, float t_max, const SampledWavelengths& lambda) const = 0;
+  // Whether Le is zero at every wavelength and point (the integrator then skips emission).
   virtual bool emissive() const = 0;
 };
 

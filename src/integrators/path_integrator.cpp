@@ -201,9 +201,12 @@ const PluginSpec& path_integrator_spec() {
 
 const PluginSpec& volpath_integrator_spec() {
   static const PluginSpec spec =
-      make_path_spec(5, "`path` with homogeneous participating media (spectral MIS, Henyey-Greenstein scattering)",
-                     "Shadow rays carry the exact transmittance of homogeneous media (pbrt-v4 ratio-tracks it); a "
-                     "scene without media is rendered by `path`, which then gives the same image.");
+      make_path_spec(5,
+                     "`path` with participating media (spectral MIS, Henyey-Greenstein scattering; delta tracking "
+                     "through grid media's majorants)",
+                     "Shadow rays carry the exact transmittance of homogeneous media (pbrt-v4 ratio-tracks it; "
+                     "heterogeneous ones are ratio-tracked as pbrt-v4); a scene without media is rendered by `path`, "
+                     "which then gives the same image.");
   return spec;
 }
 

@@ -9,6 +9,7 @@
 #include "core/medium.h"
 #include "core/sampling.h"
 #include "integrators/subsurface_exit.h"
+#include "integrators/majorant_tracking.h"
 #include "render/scene.h"
 
 namespace eyetrace {
@@ -40,6 +41,46 @@ Ray unit_ray(Ray r) {
   return r;
 }
 
+// Ratio tracking (pbrt-v4's SampleLd): tentative collisions at the hero's majorant density
+// pdf = T_maj[0] sigma_maj[0]; each multiplies the estimate by the null fraction T_maj
+// sigma_n / pdf, the light strategy's ratio by T_maj sigma_maj / pdf (it samples exactly these
+// points for every wavelength) and the scatter strategy's by T_maj sigma_n / pdf (delta
+// tracking must also make each of them a null collision). Russian roulette ends estimates
+// that have become small (pbrt-v4's 0.05 and 0.75).
+void ratio_track(const Medium& medium, const Ray& ray, float t_end, VolPathIntegrator::ShadowTransmittance& tr,
+                 const SampledWavelengths& lambda, TrackingRng& rng) {
+  const SampledSpectrum T_maj = sample_majorants(
+      medium, ray, t_end, rng.uniform(), rng, lambda,
+      [&](const Vec3&, const MediumProperties& mp, const SampledSpectrum& sigma_maj, const SampledSpectrum& T_maj) {
+        SampledSpectrum sigma_n = sigma_maj - mp.sigma_a - mp.sigma_s;
+        for (int i = 0; i < kSpectrumSamples; ++i) sigma_n[i] = std::max(sigma_n[i], 0.f);
+        const float pdf = T_maj[0] * sigma_maj[0];
+        if (!(pdf > 0.f)) {
+          tr.T = SampledSpectrum(0.f);
+          return false;
+        }
+        tr.T *= T_maj * sigma_n / pdf;
+        tr.r_l *= T_maj * sigma_maj / pdf;
+        tr.r_u *= T_maj * sigma_n / pdf;
+        if (max_component(tr.T) < 0.05f * carried_average(tr.r_l + tr.r_u, lambda)) {
+          constexpr float q = 0.75f;
+          if (rng.uniform() < q)
+            tr.T = SampledSpectrum(0.f);
+          else
+            tr.T /= 1.f - q;
+        }
+        return !is_black(tr.T);
+      });
+  if (is_black(tr.T)) return;
+  if (!(T_maj[0] > 0.f)) {  // the hero cannot pass what remains (underflow): nothing gets through
+    tr.T = SampledSpectrum(0.f);
+    return;
+  }
+  tr.T *= T_maj / T_maj[0];
+  tr.r_l *= T_maj / T_maj[0];
+  tr.r_u *= T_maj / T_maj[0];
+}
+
 }  // namespace
 
 VolPathIntegrator::VolPathIntegrator(const Scene& scene, int max_depth, float rr_threshold)
@@ -50,25 +91,34 @@ std::string VolPathIntegrator::to_string() const {
                      max_depth_, scene_.lights().size());
 }
 
-SampledSpectrum VolPathIntegrator::transmittance(Ray ray, const Medium* medium, const Vec3& p_to, const Vec3& err_to,
-                                                 const Vec3& n_to, const SampledWavelengths& lambda,
-                                                 RayTally& tally) const {
-  SampledSpectrum T(1.f);
+VolPathIntegrator::ShadowTransmittance VolPathIntegrator::transmittance(Ray ray, const Medium* medium, const Vec3& p_to,
+                                                                        const Vec3& err_to, const Vec3& n_to,
+                                                                        const SampledWavelengths& lambda,
+                                                                        RayTally& tally) const {
+  ShadowTransmittance tr;
+  std::optional<TrackingRng> rng;  // seeded by the first ray through a heterogeneous medium
   for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
     SurfaceInteraction si;
     ++tally.rays;
     ++tally.shadow_rays;
     const bool hit = scene_.intersect(ray, &si);
-    if (hit && si.material) return SampledSpectrum(0.f);  // blocked by a surface
-    if (medium) {
+    if (hit && si.material) return ShadowTransmittance{SampledSpectrum(0.f)};  // blocked by a surface
+    if (medium && medium->is_homogeneous()) {
       const MediumProperties mp = medium->properties(lambda);
-      T *= beer_lambert(mp.sigma_a + mp.sigma_s, (hit ? si.t : ray.tmax) * glm::length(ray.d));
+      const SampledSpectrum T = beer_lambert(mp.sigma_a + mp.sigma_s, (hit ? si.t : ray.tmax) * glm::length(ray.d));
+      tr.T *= T;
+      tr.r_u *= T;
+    } else if (medium) {
+      const Ray unit = unit_ray(ray);
+      const float t_end = (hit ? si.t : ray.tmax) * glm::length(ray.d);
+      if (!rng) rng.emplace(hash_values(ray.o.x, ray.o.y, ray.o.z, ray.d.x, ray.d.y, ray.d.z));
+      ratio_track(*medium, unit, t_end, tr, lambda, *rng);
     }
-    if (!hit || is_black(T)) return T;
+    if (!hit || is_black(tr.T)) return tr;
     if (si.medium_interface) medium = si.medium_interface->towards(ray.d, si.n);
     ray = spawn_ray_to(si, p_to, err_to, n_to);
   }
-  return SampledSpectrum(0.f);
+  return ShadowTransmittance{SampledSpectrum(0.f)};
 }
 
 // The MIS weights of next-event estimation. With the shadow ray's transmittance T computed
@@ -84,6 +134,21 @@ SampledSpectrum VolPathIntegrator::transmittance(Ray ray, const Medium* medium, 
 // r_u by T_j / T_hero (the scatter strategy pays for survival) and r_l by 1 / T_hero only (the
 // light strategy does not), so emission found adds beta Le / avg(r_u + r_l p_light).
 // Delta lights have no scatter strategy: beta f T L / avg(r_p p_light).
+//
+// Heterogeneous segments on the same shadow ray are ratio-tracked (ratio_track above): the
+// light strategy samples their tentative collisions, so its density gains prod T_maj_j
+// sigma_maj_j per point (and T_maj_j for the rest of the segment), the scatter strategy's
+// prod T_maj_j sigma_n_j (each must be a null collision), both relative to the hero's actual
+// density; the estimate is T = prod T_maj sigma_n / pdf. The strategies' densities are products
+// over segments, so a ray crossing both kinds multiplies the factors: exact segments put T_j
+// into T and r_u and nothing into r_l, tracked ones their ratio-tracking factors into T, r_l,
+// r_u (ShadowTransmittance). Then
+//   beta f T L / avg_j(r_p_j (p_light r_l_j + p_scatter r_u_j)),
+// which with exact segments only (r_l = 1, r_u = T) is the formula above. radiance() mirrors
+// it: homogeneous segments update r_u and r_l as stated, heterogeneous ones by delta tracking
+// (delta_track: null collisions multiply r_u by T_maj sigma_n / pdf and r_l by
+// T_maj sigma_maj / pdf, pbrt-v4's updates). Each medium is one kind on both sides, so the
+// path and the shadow ray agree on every segment's densities.
 SampledSpectrum VolPathIntegrator::sample_light(const Scatterer& at, const SampledSpectrum& beta,
                                                 const SampledSpectrum& r_p, const SampledWavelengths& lambda,
                                                 Sampler& sampler, RayTally& tally) const {
@@ -111,12 +176,13 @@ SampledSpectrum VolPathIntegrator::sample_light(const Scatterer& at, const Sampl
   }
   if (is_black(f_hat)) return skip();
   const Ray shadow = spawn_ray_to(at.p, at.p_error, at.n, at.time, ls->p_light, ls->p_light_error, ls->n_light);
-  const SampledSpectrum T = transmittance(shadow, medium, ls->p_light, ls->p_light_error, ls->n_light, lambda, tally);
-  if (is_black(T)) return SampledSpectrum(0.f);
+  const ShadowTransmittance tr =
+      transmittance(shadow, medium, ls->p_light, ls->p_light_error, ls->n_light, lambda, tally);
+  if (is_black(tr.T)) return SampledSpectrum(0.f);
   const float light_pdf = pmf * ls->pdf;
-  const SampledSpectrum r_light = r_p * light_pdf;
-  if (light->is_delta()) return beta * f_hat * T * ls->L / carried_average(r_light, lambda);
-  return beta * f_hat * T * ls->L / carried_average(r_light + r_p * T * scatter_pdf, lambda);
+  const SampledSpectrum r_light = r_p * light_pdf * tr.r_l;
+  if (light->is_delta()) return beta * f_hat * tr.T * ls->L / carried_average(r_light, lambda);
+  return beta * f_hat * tr.T * ls->L / carried_average(r_light + r_p * tr.r_u * scatter_pdf, lambda);
 }
 
 bool VolPathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf,
@@ -157,12 +223,14 @@ bool VolPathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& 
 
 SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
                                             ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible) const {
-  SampledSpectrum L(0.f), beta(1.f), r_u(1.f), r_l(1.f);
+  PathState state;
+  SampledSpectrum &L = state.L, &beta = state.beta, &r_u = state.r_u, &r_l = state.r_l;
+  int& depth = state.depth;
+  bool& specular_bounce = state.specular_bounce;
+  LightSampleContext& prev_ctx = state.prev_ctx;
   Ray ray = unit_ray(camera_ray);
   const Medium* medium = scene_.camera_medium();
-  bool specular_bounce = false;
-  LightSampleContext prev_ctx;
-  int depth = 0, crossings = 0;
+  int crossings = 0;
   // Emission reached by the sampled path, MIS-weighted against light sampling.
   auto add_emission = [&](const Light* light, const SampledSpectrum& Le, const SurfaceInteraction* at) {
     if (is_black(Le)) return;
@@ -177,7 +245,11 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     SurfaceInteraction si;
     ++tally.rays;
     const bool hit = scene_.intersect(ray, &si);
-    if (medium) {
+    if (medium && !medium->is_homogeneous()) {
+      const MediumEvent event = delta_track(*medium, ray, hit ? si.t : kInfinity, state, lambda, sampler, tally);
+      if (event == MediumEvent::Terminated) break;
+      if (event == MediumEvent::Scattered) continue;
+    } else if (medium) {
       const MediumProperties mp = medium->properties(lambda);
       const SampledSpectrum sigma_t = mp.sigma_a + mp.sigma_s;
       const float t_end = hit ? si.t : kInfinity;
@@ -277,6 +349,88 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     }
   }
   return L;
+}
+
+VolPathIntegrator::MediumEvent VolPathIntegrator::delta_track(const Medium& medium, Ray& ray, float t_end, PathState& s,
+                                                              const SampledWavelengths& lambda, Sampler& sampler,
+                                                              RayTally& tally) const {
+  // Two sampler dimensions, as the homogeneous path: the first distance, and the seed of the
+  // numbers for the rest of the tracking.
+  const float u_dist = sampler.get_1d();
+  TrackingRng rng(hash_values(sampler.get_1d(), s.depth));
+  MediumEvent event = MediumEvent::Passed;
+  const SampledSpectrum T_maj = sample_majorants(
+      medium, ray, t_end, u_dist, rng, lambda,
+      [&](const Vec3& p, const MediumProperties& mp, const SampledSpectrum& sigma_maj, const SampledSpectrum& T_maj) {
+        // Emission at every tentative collision (pbrt-v4's r_e: any wavelength could have
+        // sampled this point with density sigma_maj_j T_maj_j).
+        const float pdf = sigma_maj[0] * T_maj[0];
+        if (s.depth < max_depth_ && !is_black(mp.Le) && pdf > 0.f) {
+          const SampledSpectrum r_e = s.r_u * sigma_maj * T_maj / pdf;
+          if (!is_black(r_e)) s.L += s.beta * T_maj / pdf * mp.sigma_a * mp.Le / carried_average(r_e, lambda);
+        }
+        // Absorption, real scattering or a null collision, with the hero's probabilities
+        // (normalised: a majorant bounds sigma_t, so the null one is never negative in exact
+        // arithmetic; rounding is clamped).
+        const float p_absorb = mp.sigma_a[0] / sigma_maj[0], p_scatter = mp.sigma_s[0] / sigma_maj[0];
+        const float p_null = std::max(0.f, 1.f - p_absorb - p_scatter);
+        const float u = rng.uniform() * (p_absorb + p_scatter + p_null);
+        if (u < p_absorb) {
+          event = MediumEvent::Terminated;
+          return false;
+        }
+        if (u < p_absorb + p_scatter) {
+          if (s.depth++ >= max_depth_) {
+            event = MediumEvent::Terminated;
+            return false;
+          }
+          const float pdf_s = T_maj[0] * mp.sigma_s[0];
+          s.beta *= T_maj * mp.sigma_s / pdf_s;
+          s.r_u *= T_maj * mp.sigma_s / pdf_s;
+          if (!is_finite(s.beta) || is_black(s.beta) || is_black(s.r_u)) {
+            event = MediumEvent::Terminated;
+            return false;
+          }
+          Scatterer at;
+          at.p = p;
+          at.time = ray.time;
+          at.d_in = ray.d;
+          at.g = mp.g;
+          at.medium = &medium;
+          if (!lights_.empty()) s.L += sample_light(at, s.beta, s.r_u, lambda, sampler, tally);
+          const Vec3 wi = sample_henyey_greenstein(ray.d, mp.g, sampler.get_2d());  // p / pdf = 1
+          s.r_l = s.r_u / henyey_greenstein(glm::dot(ray.d, wi), mp.g);
+          s.specular_bounce = false;
+          s.prev_ctx = LightSampleContext{p, Vec3(0.f)};
+          ray = Ray{p, wi, kInfinity, ray.time};
+          event = MediumEvent::Scattered;
+          return false;
+        }
+        // Null collision: the hero chose it with density T_maj0 sigma_n0; the light strategy
+        // would have sampled the point with T_maj sigma_maj (ratio tracking).
+        SampledSpectrum sigma_n = sigma_maj - mp.sigma_a - mp.sigma_s;
+        for (int i = 0; i < kSpectrumSamples; ++i) sigma_n[i] = std::max(sigma_n[i], 0.f);
+        const float pdf_n = T_maj[0] * sigma_n[0];
+        if (!(pdf_n > 0.f)) {
+          event = MediumEvent::Terminated;
+          return false;
+        }
+        s.beta *= T_maj * sigma_n / pdf_n;
+        s.r_u *= T_maj * sigma_n / pdf_n;
+        s.r_l *= T_maj * sigma_maj / pdf_n;
+        if (!is_finite(s.beta) || is_black(s.beta) || is_black(s.r_u)) {
+          event = MediumEvent::Terminated;
+          return false;
+        }
+        return true;
+      });
+  if (event != MediumEvent::Passed) return event;
+  // Passed to the end: probability T_maj0 for the hero, T_maj_j for either strategy.
+  if (!(T_maj[0] > 0.f)) return MediumEvent::Terminated;
+  s.beta *= T_maj / T_maj[0];
+  s.r_u *= T_maj / T_maj[0];
+  s.r_l *= T_maj / T_maj[0];
+  return is_finite(s.beta) && !is_black(s.beta) ? MediumEvent::Passed : MediumEvent::Terminated;
 }
 
 }  // namespace eyetrace

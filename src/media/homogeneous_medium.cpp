@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lights/light_params.h"
+#include "media/medium_params.h"
 
 namespace eyetrace {
 
@@ -12,25 +13,13 @@ HomogeneousMedium::HomogeneousMedium(Spectrum sigma_a, Spectrum sigma_s, Spectru
   for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f) emissive_ = emissive_ || Le_(l) > 0.f;
 }
 
-MediumProperties HomogeneousMedium::properties(const SampledWavelengths& lambda) const {
+MediumProperties HomogeneousMedium::properties(const Vec3&, const SampledWavelengths& lambda) const {
   return MediumProperties{sigma_a_.sample(lambda), sigma_s_.sample(lambda), Le_.sample(lambda), g_};
 }
 
-namespace {
-
-// A coefficient per unit length: any non-negative spectrum (not bounded by 1).
-Spectrum coefficient(const PluginParams& p, const std::string& name) {
-  const SpectrumValue v = p.get_spectrum(name, SpectrumType::Unbounded);
-  if (v.rgb && (v.rgb->r < 0.f || v.rgb->g < 0.f || v.rgb->b < 0.f))
-    p.fail(name, fmt::format("({}, {}, {}) has a negative component: a medium cannot add what it removes", v.rgb->r,
-                             v.rgb->g, v.rgb->b));
-  const Spectrum s = v.as(SpectrumType::Unbounded);
-  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f)
-    if (!(s(l) >= 0.f) || !std::isfinite(s(l))) p.fail(name, fmt::format("is negative or not finite at {} nm", l));
-  return s;
+MajorantIterator HomogeneousMedium::majorants(const Ray&, float t_max, const SampledWavelengths& lambda) const {
+  return MajorantIterator(0.f, t_max, sigma_a_.sample(lambda) + sigma_s_.sample(lambda));
 }
-
-}  // namespace
 
 const PluginSpec& homogeneous_medium_spec() {
   static const PluginSpec spec{
@@ -54,10 +43,9 @@ std::unique_ptr<Medium> create_homogeneous_medium(const MediumContext& ctx) {
                                  "\"sigma_a\" and \"sigma_s\" instead",
                                  p.get_string("preset")));
   const float scale = p.get_float("scale");
-  const float g = p.get_float("g");
-  if (!(std::abs(g) < 1.f)) p.fail("g", fmt::format("{} is outside (-1, 1): the phase function would not exist", g));
-  const Spectrum sigma_a = coefficient(p, "sigma_a").scaled(scale);
-  const Spectrum sigma_s = coefficient(p, "sigma_s").scaled(scale);
+  const float g = asymmetry_param(p);
+  const Spectrum sigma_a = coefficient_param(p, "sigma_a").scaled(scale);
+  const Spectrum sigma_s = coefficient_param(p, "sigma_s").scaled(scale);
   // pbrt-v4 reads Le as a light's emission (the colour space's illuminant for RGB, luminance
   // normalised for spectra), exactly as an area light's "L".
   std::optional<Spectrum> Le = emission_param_or_null(p, "Le");

@@ -15,7 +15,11 @@ namespace eyetrace {
 class HomogeneousMedium : public Medium {
  public:
   HomogeneousMedium(Spectrum sigma_a, Spectrum sigma_s, Spectrum Le, float g);
-  MediumProperties properties(const SampledWavelengths& lambda) const override;
+  using Medium::properties;
+  MediumProperties properties(const Vec3& p, const SampledWavelengths& lambda) const override;
+  bool is_homogeneous() const override { return true; }
+  // One segment, the extinction itself (used by tests; volpath's exact path needs none).
+  MajorantIterator majorants(const Ray& ray, float t_max, const SampledWavelengths& lambda) const override;
   bool emissive() const override { return emissive_; }
 
  private:

@@ -62,6 +62,7 @@ std::vector<std::string> ParamSpec::accepted_types() const {
     case ParamType::Vector3: return {"vector3"};
     case ParamType::Normal: return {"normal"};
     case ParamType::Spectrum: return {"rgb", "spectrum", "blackbody"};
+    case ParamType::Rgb: return {"rgb"};
     case ParamType::FloatOrSpectrum: return {"float", "rgb", "spectrum", "blackbody"};
     case ParamType::FloatTexture: return {"float", "texture"};
     case ParamType::SpectrumTexture: return {"rgb", "spectrum", "blackbody", "texture"};
@@ -73,6 +74,7 @@ std::vector<std::string> ParamSpec::accepted_types() const {
 std::string ParamSpec::type_name() const {
   switch (type) {
     case ParamType::Spectrum: return "spectrum";
+    case ParamType::Rgb: return "rgb";
     case ParamType::FloatOrSpectrum: return "float";
     case ParamType::FloatTexture: return "float";
     case ParamType::SpectrumTexture: return "spectrum";
@@ -179,6 +181,7 @@ ParamSpec point2s(std::string name) { return make_array(std::move(name), ParamTy
 ParamSpec point3s(std::string name) { return make_array(std::move(name), ParamType::Point3); }
 ParamSpec normals(std::string name) { return make_array(std::move(name), ParamType::Normal); }
 ParamSpec vector3s(std::string name) { return make_array(std::move(name), ParamType::Vector3); }
+ParamSpec rgbs(std::string name) { return make_array(std::move(name), ParamType::Rgb); }
 
 }  // namespace param
 
@@ -372,6 +375,10 @@ std::vector<Vec2> PluginParams::get_point2s(const std::string& name) const {
 std::vector<Vec3> PluginParams::get_point3s(const std::string& name) const {
   declared(name);
   return list_.get_point3s(name);
+}
+std::vector<RGB> PluginParams::get_rgbs(const std::string& name) const {
+  declared(name);
+  return list_.get_rgbs(name);
 }
 std::vector<Vec3> PluginParams::get_normals(const std::string& name) const {
   declared(name);

@@ -25,6 +25,7 @@ enum class ParamType {
   Vector3,          // vector3
   Normal,           // normal
   Spectrum,         // rgb, spectrum or blackbody
+  Rgb,              // rgb only (arrays of colours)
   FloatOrSpectrum,  // float, or rgb/spectrum/blackbody (read at one wavelength)
   FloatTexture,     // float constant or "texture NAME"
   SpectrumTexture,  // rgb/spectrum/blackbody constant or "texture NAME"
@@ -84,6 +85,8 @@ ParamSpec point2s(std::string name);
 ParamSpec point3s(std::string name);
 ParamSpec normals(std::string name);
 ParamSpec vector3s(std::string name);
+// Any number of RGB triples ("rgb" only: grids of colours, as pbrt-v4's rgbgrid medium).
+ParamSpec rgbs(std::string name);
 }  // namespace param
 
 // One plugin's (or several plugins') declaration: what `eyetrace plugins` lists.
@@ -136,6 +139,7 @@ class PluginParams {
   std::vector<Vec3> get_point3s(const std::string& name) const;
   std::vector<Vec3> get_normals(const std::string& name) const;
   std::vector<Vec3> get_vector3s(const std::string& name) const;
+  std::vector<RGB> get_rgbs(const std::string& name) const;
   // The declared default of a numeric parameter (for textures made from it).
   double default_number(const std::string& name) const;
 

@@ -184,6 +184,9 @@ std::vector<Vec3> ParameterList::get_normals(const std::string& name) const {
 std::vector<Vec3> ParameterList::get_vector3s(const std::string& name) const {
   return tuples<3, Vec3>(lookup(name, "vector3", 0));
 }
+std::vector<RGB> ParameterList::get_rgbs(const std::string& name) const {
+  return tuples<3, RGB>(lookup(name, "rgb", 0));
+}
 
 void ParameterList::mark_all_used() const {
   for (const auto& p : params_) p.used = true;

@@ -59,6 +59,7 @@ class ParameterList {
   std::vector<Vec3> get_point3s(const std::string& name) const;
   std::vector<Vec3> get_normals(const std::string& name) const;
   std::vector<Vec3> get_vector3s(const std::string& name) const;
+  std::vector<RGB> get_rgbs(const std::string& name) const;
 
   // Errors at a parameter's location (or the directive's if the parameter is absent).
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;

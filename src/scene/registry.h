@@ -92,6 +92,7 @@ struct AreaLightContext {
 struct MediumContext {
   const ParameterList& params;
   Transform world_from_medium;
+  std::string search_dir;  // where files the medium names are looked for (nanovdb)
 };
 
 struct IntegratorContext {

@@ -295,16 +295,9 @@ class Builder {
     setup_.scene->add_light(std::move(light));
   }
 
-  // pbrt-v4's grid media are not built: rays cross their boundaries as if through vacuum.
   void build_medium(const std::string& name, const TransformedEntity& m) {
     media_[name] = nullptr;
-    if (m.name == "uniformgrid" || m.name == "rgbgrid" || m.name == "cloud" || m.name == "nanovdb") {
-      m.params.mark_all_used();
-      warn(m.loc,
-           fmt::format("medium type \"{}\" is not supported; MakeNamedMedium \"{}\" ignored (vacuum)", m.name, name));
-      return;
-    }
-    MediumContext ctx{m.params, m.world_from_object};
+    MediumContext ctx{m.params, m.world_from_object, desc_.search_dir};
     auto made = reg_.media.at(m.name, m.loc)(ctx);
     media_[name] = setup_.scene->own(std::move(made));
   }

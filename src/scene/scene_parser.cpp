@@ -217,7 +217,7 @@ void SceneParser::attribute(Tokenizer& tok, const SourceLoc& loc) {
                              : target == "texture"  ? &state_.texture_attributes
                                                     : nullptr;
   if (target == "medium") {
-    warn(loc, "participating media are not supported; Attribute \"medium\" ignored");
+    warn(loc, "Attribute \"medium\" (defaults for MakeNamedMedium) is not supported; ignored");
     return;
   }
   if (!list)

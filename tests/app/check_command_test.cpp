@@ -37,11 +37,11 @@ TEST(CheckCommand, CleanSceneExitsZero) {
 TEST(CheckCommand, WarningsOnlyExitThree) {
   TempDir dir("eyetrace-check");
   const std::string scene =
-      write(dir, "w.pbrt", "WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"cloud\"\nShape \"sphere\"\n");
+      write(dir, "w.pbrt", "WorldBegin\nAttribute \"medium\" \"float g\" 0.5\nShape \"sphere\"\n");
   const RunResult r = run_eyetrace("check " + scene);
   EXPECT_EQ(r.status, 3) << r.output;
-  EXPECT_TRUE(has_line(r.output, scene + ":2:1: warning: medium type \"cloud\" is not supported; MakeNamedMedium "
-                                         "\"fog\" ignored (vacuum)"))
+  EXPECT_TRUE(has_line(r.output, scene + ":2:1: warning: Attribute \"medium\" (defaults for MakeNamedMedium) is not "
+                                         "supported; ignored"))
       << r.output;
 }
 
@@ -58,7 +58,7 @@ TEST(CheckCommand, ListsEveryErrorAndWarningWithItsPlace) {
                                   "Texture \"t\" \"spectrum\" \"nosuchtexture\"\n"
                                   "Material \"nosuchmaterial\"\n"
                                   "Shape \"sphere\"\n"
-                                  "MakeNamedMedium \"fog\" \"string type\" \"cloud\"\n"
+                                  "Attribute \"medium\" \"float g\" 0.5\n"
                                   "Shape \"plymesh\" \"string filename\" \"geo/a.ply\"\n"
                                   "Material \"diffuse\" \"texture reflectance\" \"t\" \"float bumpiness\" 1\n"
                                   "Shape \"sphere\"\n");
@@ -69,7 +69,7 @@ TEST(CheckCommand, ListsEveryErrorAndWarningWithItsPlace) {
       scene + ":2:1: error: Include \"missing.pbrt\": file not found",
       scene + ":4:1: error: unsupported spectrum texture \"nosuchtexture\"",
       scene + ":5:1: error: unsupported material \"nosuchmaterial\"",
-      scene + ":7:1: warning: medium type \"cloud\" is not supported",
+      scene + ":7:1: warning: Attribute \"medium\" (defaults for MakeNamedMedium) is not supported",
       scene + ":8:17: error: parameter \"filename\": cannot open",
       scene + ":9:46: error: Material \"diffuse\": unused parameter \"float bumpiness\"",
       scene + ": 6 errors (2 missing files), 1 warning: it does not render",

@@ -1,7 +1,6 @@
 // MakeNamedMedium "homogeneous" and MediumInterface: pbrt-v4's defaults (sigma_a = sigma_s = 1,
 // g 0, no emission), "scale" and "Lescale", and bad input: every error names the file, the line
-// and the parameter (or the medium), and grid media pbrt-v4 has and eyetrace does not are
-// ignored with a warning, the scene still rendering.
+// and the parameter (or the medium). (The grid media: grid_medium_test.cpp and its neighbours.)
 #include "media/homogeneous_medium.h"
 
 #include <gtest/gtest.h>
@@ -105,20 +104,6 @@ MakeNamedMedium "late" "string type" "homogeneous"
   RenderSetup s = build_render_setup(desc, {});
   EXPECT_TRUE(s.scene->has_media());
   EXPECT_NE(s.integrator->to_string().find("participating media"), std::string::npos);
-}
-
-TEST(MediumInterface, GridMediaAreIgnoredWithAWarningAndTheSceneRenders) {
-  const std::string text = R"(Film "rgb" "integer xresolution" 4 "integer yresolution" 4
-MakeNamedMedium "smoke" "string type" "uniformgrid" "float density" [1] "integer nx" 1 "integer ny" 1 "integer nz" 1
-WorldBegin
-MediumInterface "smoke" ""
-Material "interface"
-Shape "sphere"
-)";
-  const int before = warning_count();
-  RenderSetup s = build_render_setup(parse_scene_string(text, "grid.pbrt", "."), {});
-  EXPECT_EQ(warning_count() - before, 1);
-  EXPECT_FALSE(s.scene->has_media());  // the grid is vacuum: nothing to trace
 }
 
 TEST(MediumInterface, IntegratorsOtherThanVolpathWarnThatTheyIgnoreMedia) {

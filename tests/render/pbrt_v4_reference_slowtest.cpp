@@ -2,7 +2,8 @@
 // (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
 // diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
-// maxcomponentvalue, the gbuffer film's channels, motion blur) is rendered here by eyetrace with two seeds and compared
+// maxcomponentvalue, the gbuffer film's channels, motion blur, the grid media uniformgrid,
+// cloud, rgbgrid and nanovdb) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
 // everything whose default could differ (box pixel filter, the independent sampler, the path
@@ -41,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "nanovdb_smoke.h"
 #include "render/film.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
@@ -82,6 +84,13 @@ Image render_eyetrace(const std::string& scene, uint64_t seed, bool swap_dots, c
     const size_t at = text.find(remove);
     EXPECT_NE(at, std::string::npos) << remove;
     if (at != std::string::npos) text.erase(at, remove.size());
+  }
+  // The NanoVDB volume is written by code (nanovdb_smoke.h), into the build tree.
+  const std::string nvdb = "\"nanovdb-smoke.nvdb\"";
+  if (const size_t at = text.find(nvdb); at != std::string::npos) {
+    const std::string path = std::string(EYETRACE_BINARY_DIR) + "/nanovdb-smoke.nvdb";
+    test::write_nanovdb_smoke(path);
+    text.replace(at, nvdb.size(), "\"" + path + "\"");
   }
   SceneDescription desc = parse_scene_string(text, kDataDir + scene + ".pbrt", kDataDir);
   RenderOverrides overrides;
@@ -238,6 +247,16 @@ TEST(PbrtV4Reference, VolpathEmissiveMediumInsideAnInterfaceSphere) { expect_mat
 // medium ("Skin1", scaled) under a smooth boundary, and "reflectance" + "mfp" with g 0.5 under a
 // rough one; Integrator "volpath" as pbrt-v4 needs (its "path" ignores BSSRDFs).
 TEST(PbrtV4Reference, SubsurfaceNamedMediumAndReflectanceWithRoughBoundary) { expect_matches_pbrt_v4("subsurface"); }
+// Heterogeneous media, delta-tracked against majorant grids, shadow rays ratio-tracked: a
+// rotated "uniformgrid" density ramp with chromatic scattering under an area light; pbrt-v4's
+// procedural "cloud" (its Perlin noise, placed by a transform); an emissive uniformgrid
+// (temperature grid: blackbody emission times an Lescale grid, no lights); an "rgbgrid" with
+// RGB sigma_a, sigma_s and Le grids; a "nanovdb" volume with density and temperature grids.
+TEST(PbrtV4Reference, VolpathUniformGridDensityRampUnderAnAreaLight) { expect_matches_pbrt_v4("grid-ramp"); }
+TEST(PbrtV4Reference, VolpathProceduralCloudMedium) { expect_matches_pbrt_v4("cloud"); }
+TEST(PbrtV4Reference, VolpathUniformGridTemperatureEmission) { expect_matches_pbrt_v4("grid-fire"); }
+TEST(PbrtV4Reference, VolpathRgbGridWithEmission) { expect_matches_pbrt_v4("rgbgrid"); }
+TEST(PbrtV4Reference, VolpathNanoVDBDensityAndTemperature) { expect_matches_pbrt_v4("nanovdb"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way
