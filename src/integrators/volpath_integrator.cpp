@@ -322,7 +322,8 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
       L += sample_light(at, beta, r_u, lambda, sampler, tally);
     else
       ++tally.shadow_rays_skipped;
-    std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, sampler.get_1d(), sampler.get_2d());
+    const float uc = sampler.get_1d();  // before the 2-D sample: argument order is unspecified
+    std::optional<BSDFSample> bs = bsdf->sample_f(si.wo, uc, sampler.get_2d());
     if (!bs || bs->pdf <= 0.f || is_black(bs->f)) break;
     beta *= bs->f * std::abs(glm::dot(bs->wi, si.ns)) / bs->pdf;
     r_l = r_u / bs->pdf;
