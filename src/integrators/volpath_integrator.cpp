@@ -8,8 +8,8 @@
 #include "core/material.h"
 #include "core/medium.h"
 #include "core/sampling.h"
-#include "integrators/subsurface_exit.h"
 #include "integrators/majorant_tracking.h"
+#include "integrators/subsurface_exit.h"
 #include "render/scene.h"
 
 namespace eyetrace {

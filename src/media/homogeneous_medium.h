@@ -2,7 +2,8 @@
 // Parameters and defaults as pbrt-v4's HomogeneousMedium::Create: "sigma_a" and "sigma_s"
 // (unbounded spectra, default 1 per unit length), both multiplied by "scale"; "g", the
 // Henyey-Greenstein asymmetry; "Le" (an illuminant spectrum, default 0: no emission) times
-// "Lescale". pbrt-v4's named "preset"s are not built in: one is an error naming it.
+// "Lescale". A "preset" names one of pbrt-v4's measured media (core/measured_media.h) in
+// place of "sigma_a" and "sigma_s".
 #pragma once
 #include <memory>
 
