@@ -281,6 +281,8 @@ const PluginSpec& realistic_spec() {
               .with_unit("m")
               .describe("distance in focus, measured from the film as pbrt does"),
           param::real("filmdiagonal", kDefaultFilmDiagonal_mm).above(0).with_unit("mm"),
+          shutter_open_param(),
+          shutter_close_param(),
       }};
   return spec;
 }
@@ -382,6 +384,7 @@ LensSystemCamera::Settings realistic_view_settings(const ParameterList& list, IV
   const double pixels = std::sqrt(double(resolution.x) * resolution.x + double(resolution.y) * resolution.y);
   s.film_half_mm = 0.5 * std::min(resolution.x, resolution.y) * diagonal / pixels;
   s.scene_units_per_mm = 1e-3;  // pbrt: scene units are metres
+  s.shutter = read_shutter(params);
   return s;
 }
 

@@ -22,6 +22,7 @@
 #include "cameras/pupil_sampler.h"
 #include "cameras/retina_mapping.h"
 #include "cameras/retina_surface.h"
+#include "cameras/shutter.h"
 #include "cameras/wave_psf_table.h"
 #include "core/animated_transform.h"
 #include "core/camera.h"
@@ -48,14 +49,15 @@ class LensSystemCamera : public Camera {
     // (no spectral MIS, no splats): see generate_ray.
     bool diffraction = false;
     PupilSampler::Options pupil;
+    Shutter shutter;  // the realistic camera's; an eye's stays pbrt-v4's default, open from 0 to 1
   };
   // Throws optics::OpticsError when the system cannot be used (invalid, or no ray passes at the
   // image centre) and FieldError (below) when the field of view cannot be mapped.
   LensSystemCamera(const optics::Prescription& prescription, const Transform& world_from_camera, IVec2 resolution,
                    const Settings& settings);
   // Motion blur: the eye moves over the TransformTimes, each ray leaving it placed at the
-  // ray's time (the sample's time in [0, 1): these cameras have no shutter parameters, so the
-  // shutter is pbrt-v4's default, open from 0 to 1). The optics do not change with the motion.
+  // ray's time (the sample's time spread over Settings::shutter). The optics do not change
+  // with the motion.
   void set_motion(const AnimatedTransform& world_from_camera) { motion_ = world_from_camera; }
 
   std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;

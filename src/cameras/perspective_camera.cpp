@@ -38,8 +38,7 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs,
     origin = Vec3(lens, 0.f);
     dir = glm::normalize(focus - origin);
   }
-  // pbrt-v4's CameraBase::SampleTime: the time sample spread over the shutter interval.
-  const float time = (1.f - cs.time) * s_.shutter_open + cs.time * s_.shutter_close;
+  const float time = s_.shutter.time(cs.time);
   Transform at_time;
   const Transform* world_from_camera = &world_from_camera_;
   if (motion_.is_animated()) {
@@ -75,12 +74,8 @@ const PluginSpec& perspective_camera_spec() {
           param::real("frameaspectratio")
               .above(0)
               .describe("aspect for the default screen window instead of the image's"),
-          param::real("shutteropen", 0)
-              .describe("time the shutter opens (motion blur; with shutterclose, the "
-                        "film's exposure time)"),
-          param::real("shutterclose", 1)
-              .describe("time the shutter closes (motion blur; with shutteropen, the "
-                        "film's exposure time)"),
+          shutter_open_param(),
+          shutter_close_param(),
       }};
   return spec;
 }
@@ -104,8 +99,7 @@ static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const
   if (p.has("frameaspectratio") && sw.empty())
     s.screen_window = default_screen_window(ctx.resolution, p.get_float("frameaspectratio"));
   // The shutter interval is also the film's exposure (scene_builder.cpp checks that it opens).
-  s.shutter_open = p.get_float("shutteropen");
-  s.shutter_close = p.get_float("shutterclose");
+  s.shutter = read_shutter(p);
   return s;
 }
 

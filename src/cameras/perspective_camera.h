@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 
+#include "cameras/shutter.h"
 #include "core/animated_transform.h"
 #include "core/camera.h"
 #include "scene/registry.h"
@@ -12,11 +13,11 @@ namespace eyetrace {
 class PerspectiveCamera : public Camera {
  public:
   struct Settings {
-    float fov_deg = 90.f;                           // of the shorter image axis, as pbrt
-    Vec4 screen_window{0.f};                        // x0 x1 y0 y1; zero means "from the aspect ratio"
-    float lens_radius = 0.f;                        // scene units
-    float focal_distance = 1e6f;                    // scene units, along the camera's z axis
-    float shutter_open = 0.f, shutter_close = 1.f;  // each ray's time is drawn in between
+    float fov_deg = 90.f;         // of the shorter image axis, as pbrt
+    Vec4 screen_window{0.f};      // x0 x1 y0 y1; zero means "from the aspect ratio"
+    float lens_radius = 0.f;      // scene units
+    float focal_distance = 1e6f;  // scene units, along the camera's z axis
+    Shutter shutter;              // each ray's time is drawn in between
   };
   // `motion`: the camera's movement over the TransformTimes; when it is not animated every ray
   // leaves from world_from_camera.

@@ -294,6 +294,37 @@ TEST(LensSystemCamera, DoubleGaussLensFile) {
   EXPECT_GT(r->ray.d.y, 0.f);
 }
 
+// pbrt-v4's realistic camera has a shutter (CameraBase): the time sample u becomes
+// (1 - u) shutteropen + u shutterclose, and a moving camera sits where it is then. With
+// TransformTimes 0 2 (+4 along x) and the shutter 1 to 3, u = 0.25 is time 1.5, 3 units along.
+TEST(LensSystemCamera, RealisticCameraSpreadsTheTimeOverItsShutter) {
+  const std::string dir = ::testing::TempDir();
+  {
+    std::ofstream f(dir + "/eyecam_singlet.dat");
+    f << "0 5 0 10\n50 5 1.5 20\n-50 45 1 20\n";  // a stop, then a biconvex singlet
+  }
+  auto make = [&](const std::string& shutter, bool moving) {
+    SceneEntity e = parse_directive_text(
+        "Camera \"realistic\" \"string lensfile\" \"eyecam_singlet.dat\" \"float aperturediameter\" 10 " + shutter,
+        "Camera", "test");
+    CameraContext ctx{e.params, Transform(), IVec2(64, 64), dir};
+    if (moving) ctx.world_from_camera_motion = AnimatedTransform(Transform(), 0.f, translate(Vec3(4, 0, 0)), 2.f);
+    return create_realistic_camera(ctx);
+  };
+  CameraSample cs;
+  cs.p_film = Vec2(32.f, 32.f);
+  cs.p_lens = Vec2(0.5f, 0.5f);
+  cs.time = 0.25f;
+  auto still = make("", false)->generate_ray(cs);
+  auto moved = make("\"float shutteropen\" 1 \"float shutterclose\" 3", true)->generate_ray(cs);
+  ASSERT_TRUE(still);
+  ASSERT_TRUE(moved);
+  EXPECT_EQ(still->ray.time, 0.25f);  // the default shutter, 0 to 1
+  EXPECT_FLOAT_EQ(moved->ray.time, 1.5f);
+  EXPECT_NEAR(glm::length(moved->ray.o - (still->ray.o + Vec3(3, 0, 0))), 0.f, 1e-5f);
+  EXPECT_NEAR(glm::length(moved->ray.d - still->ray.d), 0.f, 1e-6f);
+}
+
 TEST(LensSystemCamera, SameSampleGivesSameRay) {
   auto cam = eye_camera("\"float pupildiameter\" 5 \"float accommodation\" 2");
   std::mt19937 rng(3);

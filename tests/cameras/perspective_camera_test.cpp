@@ -55,8 +55,7 @@ TEST(PerspectiveCamera, LookAtPlacesTargetAtCentre) {
 // way), u = 0.75 is time 2.5 (past the end time: held at the end).
 TEST(PerspectiveCamera, MovingCameraRayLeavesFromItsPlaceAtTheShutterTime) {
   PerspectiveCamera::Settings s;
-  s.shutter_open = 1.f;
-  s.shutter_close = 3.f;
+  s.shutter = Shutter{1.f, 3.f};
   const AnimatedTransform motion(Transform(), 0.f, translate(Vec3(4, 0, 0)) * rotate(90, Vec3(0, 1, 0)), 2.f);
   PerspectiveCamera cam(Transform(), IVec2(32, 32), s, motion);
   CameraSample cs;
