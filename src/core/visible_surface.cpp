@@ -27,6 +27,7 @@ VisibleSurface visible_surface(const SurfaceInteraction& si, const BSDF& bsdf) {
   v.n = face_forward(si.n, si.wo);
   v.ns = face_forward(si.ns, si.wo);
   v.uv = si.uv;
+  v.time = si.time;
   // rho(wo) = E[f |cos| / pdf] over the BSDF's own sampling; a sample that fails counts 0.
   SampledSpectrum rho(0.f);
   for (int i = 0; i < kRhoSamples; ++i) {

@@ -14,6 +14,7 @@ struct VisibleSurface {
   bool set = false;  // false: the ray saw no surface (it escaped, or was lost)
   Vec3 p{0.f}, n{0.f}, ns{0.f};
   Vec2 uv{0.f};
+  float time = 0.f;             // the camera ray's: where a moving camera was (the gbuffer's camera space)
   SampledSpectrum albedo{0.f};  // the BSDF's directional albedo towards the camera
 };
 

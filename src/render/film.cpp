@@ -39,9 +39,9 @@ Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter,
   bucket_sums_.assign(bounds.area() * 2 * size_t(buckets_.count), 0.0);
 }
 
-void Film::enable_gbuffer(const Transform& output_from_world) {
+void Film::enable_gbuffer(const AnimatedTransform& world_from_output) {
   if (buckets_.spectral()) throw std::invalid_argument("Film: a spectral film cannot also be a gbuffer film");
-  gbuffer_ = std::make_unique<GBuffer>(bounds_.area(), output_from_world);
+  gbuffer_ = std::make_unique<GBuffer>(bounds_.area(), world_from_output);
 }
 
 RGB Film::sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {

@@ -100,7 +100,7 @@ class Film {
   const FilmResponse& response() const { return response_; }
   // Makes this a gbuffer film (pbrt-v4's "gbuffer"; render/gbuffer.h): its image gets the
   // auxiliary channels, positions and normals in output_from_world's space.
-  void enable_gbuffer(const Transform& output_from_world);
+  void enable_gbuffer(const AnimatedTransform& world_from_output);
   bool gbuffer() const { return gbuffer_ != nullptr; }
   // A sample's linear sRGB (before the film's scale): through the sensor, clamped.
   RGB sample_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const {

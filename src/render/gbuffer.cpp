@@ -36,14 +36,18 @@ const std::vector<std::string>& GBuffer::channel_names() {
   return names;
 }
 
-GBuffer::GBuffer(size_t pixels, const Transform& output_from_world)
-    : sums_(pixels * kAccumulators, 0.0), output_from_world_(output_from_world) {}
+GBuffer::GBuffer(size_t pixels, const AnimatedTransform& world_from_output)
+    : sums_(pixels * kAccumulators, 0.0),
+      world_from_output_(world_from_output),
+      output_from_world_(world_from_output.start().inverse()) {}
 
 void GBuffer::add(size_t pixel, const VisibleSurface& vs, const SampledWavelengths& lambda, const RGB& rgb, float w) {
   if (!vs.set) return;
   double* s = &sums_[pixel * kAccumulators];
-  const Vec3 p = output_from_world_.point(vs.p);
-  const Vec3 n = output_from_world_.normal(vs.n), ns = output_from_world_.normal(vs.ns);
+  const Transform output_from_world =
+      world_from_output_.is_animated() ? world_from_output_.interpolate(vs.time).inverse() : output_from_world_;
+  const Vec3 p = output_from_world.point(vs.p);
+  const Vec3 n = output_from_world.normal(vs.n), ns = output_from_world.normal(vs.ns);
   // The albedo as a reflectance under the colour space's white (white_illuminant: luminance 1),
   // so that albedo 1 is (1, 1, 1).
   SampledSpectrum lit = vs.albedo;

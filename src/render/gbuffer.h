@@ -8,7 +8,8 @@
 //   Variance.R/G/B, RelativeVariance.R/G/B  of the samples' colour (unweighted, samples that saw
 //                 a surface only): the sample variance and that over the mean (pbrt-v4's
 //                 VarianceEstimator)
-// in camera space ("coordinatesystem" "camera", pbrt-v4's default) or world space.
+// in camera space ("coordinatesystem" "camera", pbrt-v4's default; a moving camera's at each sample's
+// time, as pbrt-v4) or world space.
 // Differences from pbrt-v4: no dzdx and dzdy channels (pbrt-v4's depth derivatives come from
 // ray differentials, which eyetrace's camera rays do not carry); the variance is of the
 // output colour (linear sRGB times the film's scale), pbrt-v4's of the sensor RGB before its
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/animated_transform.h"
 #include "core/math.h"
 #include "core/sampled_spectrum.h"
 #include "core/transform.h"
@@ -32,7 +34,9 @@ class GBuffer {
   // part of the film's accumulators (checkpoints, MPI), which the gbuffer film therefore refuses.
   static constexpr size_t kAccumulators = 24;
 
-  GBuffer(size_t pixels, const Transform& output_from_world);
+  // world_from_output: the camera's motion for camera space (a moving camera's space is taken at
+  // each sample's time, as pbrt-v4 does), the identity for world space.
+  GBuffer(size_t pixels, const AnimatedTransform& world_from_output);
   // A sample of weight w and colour `rgb` (linear sRGB before the film's scale) whose camera ray
   // saw `vs` (nothing when vs.set is false).
   void add(size_t pixel, const VisibleSurface& vs, const SampledWavelengths& lambda, const RGB& rgb, float w);
@@ -41,7 +45,8 @@ class GBuffer {
 
  private:
   std::vector<double> sums_;  // kAccumulators per pixel
-  Transform output_from_world_;
+  AnimatedTransform world_from_output_;
+  Transform output_from_world_;  // at the start time: all a still camera needs
 };
 
 }  // namespace eyetrace

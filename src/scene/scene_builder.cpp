@@ -507,13 +507,18 @@ class Builder {
   DiagnosticList errors_;
 };
 
+// The camera's place over the TransformTimes (still: its one transform).
+static AnimatedTransform camera_motion(const SceneDescription& desc) {
+  if (!desc.camera.animated) return AnimatedTransform(desc.camera.world_from_camera);
+  return AnimatedTransform(desc.camera.world_from_camera, desc.camera.transform_start_time,
+                           desc.camera.world_from_camera_end, desc.camera.transform_end_time);
+}
+
 std::unique_ptr<Camera> make_camera(const SceneDescription& desc, const RenderOverrides& o, IVec2 resolution) {
   const Registry& reg = Registry::builtin();
   const SceneEntity& cam = scene_camera(desc, o);
   CameraContext ctx{cam.params, desc.camera.world_from_camera, resolution, desc.search_dir};
-  if (desc.camera.animated)
-    ctx.world_from_camera_motion = AnimatedTransform(desc.camera.world_from_camera, desc.camera.transform_start_time,
-                                                     desc.camera.world_from_camera_end, desc.camera.transform_end_time);
+  if (desc.camera.animated) ctx.world_from_camera_motion = camera_motion(desc);
   auto camera = reg.cameras.at(cam.name, cam.loc)(ctx);
   return camera;
 }
@@ -592,8 +597,9 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     const SceneEntity& pf = desc.filter;
     auto filter = reg.filters.at(pf.name, pf.loc)(pf.params);
     setup.film = std::make_unique<Film>(f.resolution, f.bounds, std::move(filter), f.scale, f.buckets, f.response);
-    // pbrt-v4's "camera" space is the camera's own (its CameraTransform's RenderFromCamera, inverted).
-    if (f.gbuffer) setup.film->enable_gbuffer(f.gbuffer_world ? Transform() : desc.camera.world_from_camera.inverse());
+    // pbrt-v4's "camera" space is the camera's own at each sample's time (its CameraTransform's
+    // RenderFromCamera, inverted).
+    if (f.gbuffer) setup.film->enable_gbuffer(f.gbuffer_world ? AnimatedTransform() : camera_motion(desc));
   });
   // The integrator looks at the built scene's lights: it is made only when the scene was.
   const SceneEntity& in = desc.integrator;

@@ -3,6 +3,8 @@
 // and albedo are known.
 #include "render/gbuffer.h"
 
+#include <regex>
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -24,7 +26,7 @@ std::map<std::string, int> channel_index() {
 // count): the sample variance is 5/3, its mean 2.5, so the relative variance (pbrt-v4's: variance
 // over mean) is 2/3; the film's scale s multiplies the colours, the variance by s^2.
 TEST(GBuffer, VarianceIsTheSampleVarianceOfTheColours) {
-  GBuffer g(1, Transform());
+  GBuffer g(1, AnimatedTransform());
   VisibleSurface vs;
   vs.set = true;
   const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.5f);
@@ -39,7 +41,7 @@ TEST(GBuffer, VarianceIsTheSampleVarianceOfTheColours) {
   EXPECT_NEAR(out[ch["RelativeVariance.R"]], 2.0 * (5.0 / 3.0) / 2.5, 1e-5);
   EXPECT_NEAR(out[ch["RelativeVariance.G"]], 2.0 * (4.0 * 5.0 / 3.0) / 5.0, 1e-5);
   // One sample: no variance (pbrt-v4's VarianceEstimator needs two).
-  GBuffer one(1, Transform());
+  GBuffer one(1, AnimatedTransform());
   one.add(0, vs, lambda, RGB(3.f), 1.f);
   one.channels(0, 1.0, 1.f, out);
   EXPECT_EQ(out[ch["Variance.R"]], 0.f);
@@ -106,6 +108,53 @@ TEST(GBuffer, APlanesPositionNormalUvAndAlbedo) {
   ASSERT_GT(inside, 50);
   ASSERT_GT(outside, 20);
   EXPECT_NEAR(albedo_sum / (3 * inside), 0.5, 0.005);
+}
+
+// A camera sliding sideways (parallel to the plane) during the shutter sees every film point at
+// the same camera-space point at every time: its camera-space channels must equal the still
+// camera's, sample for sample (the same seed draws the same film positions; the time is the
+// sample's own). Taken at the start time instead (as before), P.X would be off by up to 1, by
+// 0.5 on average.
+TEST(GBuffer, AMovingCamerasSpaceIsTakenAtEachSamplesTime) {
+  auto ch = channel_index();
+  auto scene = [](const std::string& motion) {
+    return R"(
+    LookAt 0 0 5  0 0 0  0 1 0
+    )" + motion +
+           R"(
+    Camera "perspective" "float fov" 30
+    Film "gbuffer" "integer xresolution" 8 "integer yresolution" 8
+    PixelFilter "box"
+    Sampler "independent" "integer pixelsamples" 16
+    WorldBegin
+    LightSource "infinite" "rgb L" [1 1 1]
+    Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+    Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-9 -9 0  9 -9 0  9 9 0  -9 9 0]
+  )";
+  };
+  const Image still = test::render_text(scene(""));
+  const Image moving = test::render_text(scene("ActiveTransform EndTime\n Translate 1 0 0\n ActiveTransform All"));
+  double worst = 0, start_time_offset = 0;
+  for (int y = 0; y < still.height; ++y)
+    for (int x = 0; x < still.width; ++x)
+      for (const char* n : {"P.X", "P.Y", "P.Z", "N.Z"}) {
+        const double d = moving.at(x, y, 3 + ch[n]) - still.at(x, y, 3 + ch[n]);
+        worst = std::max(worst, std::abs(d));
+      }
+  // The world-space points did move: the moving camera's world P.X differs (a check that the
+  // scene moves at all).
+  const Image moving_world = test::render_text(std::regex_replace(
+      scene("ActiveTransform EndTime\n Translate 1 0 0\n ActiveTransform All"), std::regex("\"integer yresolution\" 8"),
+      "\"integer yresolution\" 8 \"string coordinatesystem\" \"world\""));
+  const Image still_world =
+      test::render_text(std::regex_replace(scene(""), std::regex("\"integer yresolution\" 8"),
+                                           "\"integer yresolution\" 8 \"string coordinatesystem\" \"world\""));
+  for (int y = 0; y < still.height; ++y)
+    for (int x = 0; x < still.width; ++x)
+      start_time_offset += std::abs(moving_world.at(x, y, 3 + ch["P.X"]) - still_world.at(x, y, 3 + ch["P.X"]));
+  start_time_offset /= still.width * still.height;
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_NEAR(start_time_offset, 0.5, 0.1);
 }
 
 // Bad input: an output other than EXR, and an unknown coordinate system, name the parameter.
