@@ -13,14 +13,6 @@ namespace eyetrace {
 
 namespace {
 
-// Smallest value of a spectrum parameter over the sampled range (RGB: smallest channel).
-float min_value(const SpectrumValue& v) {
-  if (v.rgb) return std::min({v.rgb->r, v.rgb->g, v.rgb->b});
-  float lo = v.spectrum(kLambdaMin);
-  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f) lo = std::min(lo, v.spectrum(l));
-  return lo;
-}
-
 Spectrum named(const std::string& name) { return Spectrum::named(*find_named_spectrum(name), SpectrumType::Unbounded); }
 
 class ConductorMaterial final : public Material {
@@ -42,17 +34,6 @@ class ConductorMaterial final : public Material {
   ShadingNormal shading_;
 };
 
-// A constant eta must be positive and k non-negative (textures are clamped where they are
-// evaluated, as in pbrt-v4): a negative value given as a number is a mistake, not a clamp.
-void check_constant(const ParameterList& params, const std::string& name, bool zero_allowed) {
-  const Param* p = params.find(name);
-  if (!p || p->canonical_type() == "texture") return;
-  const float lo = min_value(*params.get_spectrum(name, SpectrumType::Unbounded));
-  if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
-  params.fail(
-      name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
-}
-
 }  // namespace
 
 std::vector<ParamSpec> ConductorIndex::declared(const std::string& prefix) {
@@ -63,8 +44,8 @@ std::vector<ParamSpec> ConductorIndex::declared(const std::string& prefix) {
 }
 
 ConductorIndex ConductorIndex::read(const MaterialContext& ctx, const PluginParams& p, const std::string& prefix) {
-  check_constant(ctx.params, prefix + "eta", false);
-  check_constant(ctx.params, prefix + "k", true);
+  check_constant_spectrum_sign(ctx.params, prefix + "eta", false);
+  check_constant_spectrum_sign(ctx.params, prefix + "k", true);
   ConductorIndex c;
   c.eta = ctx.textures.spectrum_param(p, prefix + "eta", SpectrumType::Unbounded);
   c.k = ctx.textures.spectrum_param(p, prefix + "k", SpectrumType::Unbounded);

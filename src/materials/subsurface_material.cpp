@@ -10,6 +10,7 @@
 #include "materials/roughness.h"
 #include "materials/shading_normal.h"
 #include "materials/tabulated_bssrdf.h"
+#include "scene/spectrum_param.h"
 #include "scene/texture_store.h"
 
 namespace eyetrace {
@@ -83,30 +84,10 @@ void warn_ignored(const PluginParams& p, const std::vector<std::string>& names, 
     if (p.has(n)) p.warn_param(n, fmt::format("ignored: {}", why));
 }
 
-// Smallest value of a spectrum parameter over the sampled range (RGB: smallest channel); the
-// same reading as conductor_material.cpp's.
-float min_value(const SpectrumValue& v) {
-  if (v.rgb) return std::min({v.rgb->r, v.rgb->g, v.rgb->b});
-  float lo = v.spectrum(kLambdaMin);
-  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f) lo = std::min(lo, v.spectrum(l));
-  return lo;
-}
-
-// Coefficients and lengths given as numbers must be non-negative (mfp: positive); textures are
-// clamped where they are evaluated, as in pbrt-v4.
-void check_constant(const ParameterList& params, const std::string& name, bool zero_allowed) {
-  const Param* p = params.find(name);
-  if (!p || p->canonical_type() == "texture") return;
-  const float lo = min_value(*params.get_spectrum(name, SpectrumType::Unbounded));
-  if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
-  params.fail(
-      name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
-}
-
 SubsurfaceMedium read_medium(const MaterialContext& ctx, const PluginParams& p, float* g) {
-  check_constant(ctx.params, "sigma_a", true);
-  check_constant(ctx.params, "sigma_s", true);
-  check_constant(ctx.params, "mfp", false);
+  check_constant_spectrum_sign(ctx.params, "sigma_a", true);
+  check_constant_spectrum_sign(ctx.params, "sigma_s", true);
+  check_constant_spectrum_sign(ctx.params, "mfp", false);
   SubsurfaceMedium m;
   m.scale = p.get_float("scale");
   if (p.has("name")) {

@@ -1,6 +1,7 @@
 // Spectrum-valued scene parameters, checked and kept as given (scene/spectrum_param.h).
 #include "scene/spectrum_param.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "core/spectrum.h"
@@ -98,6 +99,27 @@ float spectrum_param_at(const Param& p, float lambda_nm) {
   if (p.numbers.size() == 1) return float(p.numbers[0]);
   Pairs pairs = pairs_of(p);
   return interpolate_spectrum(pairs.lambda, pairs.value, lambda_nm);
+}
+
+namespace {
+
+// Smallest value over the sampled range (RGB: smallest channel).
+float min_value(const SpectrumValue& v) {
+  if (v.rgb) return std::min({v.rgb->r, v.rgb->g, v.rgb->b});
+  float lo = v.spectrum(kLambdaMin);
+  for (float l = kLambdaMin; l <= kLambdaMax; l += 1.f) lo = std::min(lo, v.spectrum(l));
+  return lo;
+}
+
+}  // namespace
+
+void check_constant_spectrum_sign(const ParameterList& params, const std::string& name, bool zero_allowed) {
+  const Param* p = params.find(name);
+  if (!p || p->canonical_type() == "texture") return;
+  const float lo = min_value(*params.get_spectrum(name, SpectrumType::Unbounded));
+  if (lo > 0.f || (zero_allowed && lo == 0.f)) return;
+  params.fail(
+      name, fmt::format("must be {} (its smallest value here is {})", zero_allowed ? "non-negative" : "positive", lo));
 }
 
 }  // namespace eyetrace

@@ -18,5 +18,10 @@ float spectrum_param_at(const Param& p, float lambda_nm);
 // clamp is announced: a warning naming the file, line, column and parameter (an error with
 // --strict). pbrt-v4 stops with an error there instead.
 void warn_if_not_reflectance(const Param& p, const RGB& rgb);
+// A spectrum parameter given as numbers (not a texture) must be positive, or non-negative when
+// zero_allowed, everywhere over the sampled range (RGB: every channel): an error naming the
+// parameter and its smallest value otherwise. Textures are clamped where they are evaluated,
+// as in pbrt-v4; a negative number written in the file is a mistake, not a clamp.
+void check_constant_spectrum_sign(const ParameterList& params, const std::string& name, bool zero_allowed);
 
 }  // namespace eyetrace
