@@ -200,13 +200,9 @@ std::optional<CameraRay> LensSystemCamera::finish_ray(const CameraSample& cs, co
   const Vec3 d(float(-dir.x), float(dir.y), float(-dir.z));
   const float w = static_cast<float>(weight);
   const float time = settings_.shutter.time(cs.time);
-  Transform at_time;
-  const Transform* world_from_camera = &world_from_camera_;
-  if (motion_.is_animated()) {
-    at_time = motion_.interpolate(time);
-    world_from_camera = &at_time;
-  }
-  return CameraRay{Ray{world_from_camera->point(o), glm::normalize(world_from_camera->vector(d)), kInfinity, time},
+  Transform scratch;
+  const Transform& world_from_camera = placed_at(motion_, world_from_camera_, time, scratch);
+  return CameraRay{Ray{world_from_camera.point(o), glm::normalize(world_from_camera.vector(d)), kInfinity, time},
                    SampledSpectrum(w), w};
 }
 

@@ -39,13 +39,9 @@ std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs,
     dir = glm::normalize(focus - origin);
   }
   const float time = s_.shutter.time(cs.time);
-  Transform at_time;
-  const Transform* world_from_camera = &world_from_camera_;
-  if (motion_.is_animated()) {
-    at_time = motion_.interpolate(time);
-    world_from_camera = &at_time;
-  }
-  Ray r{world_from_camera->point(origin), glm::normalize(world_from_camera->vector(dir)), kInfinity, time};
+  Transform scratch;
+  const Transform& world_from_camera = placed_at(motion_, world_from_camera_, time, scratch);
+  Ray r{world_from_camera.point(origin), glm::normalize(world_from_camera.vector(dir)), kInfinity, time};
   return CameraRay{r, SampledSpectrum(1.f), 1.f};
 }
 

@@ -61,4 +61,13 @@ class AnimatedTransform {
   Parts parts_[2];
 };
 
+// Where a possibly moving object is at `time`: `still` itself (no copy) unless `motion` moves,
+// else the interpolated transform, kept in `scratch`. The cameras place each ray with it.
+inline const Transform& placed_at(const AnimatedTransform& motion, const Transform& still, float time,
+                                  Transform& scratch) {
+  if (!motion.is_animated()) return still;
+  scratch = motion.interpolate(time);
+  return scratch;
+}
+
 }  // namespace eyetrace
