@@ -104,7 +104,9 @@ TEST(MpiSweep, SigintStopsTheSweepAndWritesTheTable) {
   TempDir dir("eyetrace_mpi_sweep");
   std::string text = two_by_two(dir.file("out"), "[30, 35, 40]");
   const std::string spp = "\"spp\": 4,";
-  text.replace(text.find(spp), spp.size(), "\"spp\": 4096,");
+  // Long enough (seconds per job) that a loaded machine cannot finish every job before the
+  // signal reaches the ranks.
+  text.replace(text.find(spp), spp.size(), "\"spp\": 65536,");
   std::ofstream(dir.file("s.json")) << text;
   const pid_t pid = spawn_mpirun(3, {"sweep", "-q", "--threads", "1", dir.file("s.json")}, dir.file("log"));
   ASSERT_GT(pid, 0);
