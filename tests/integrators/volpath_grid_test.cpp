@@ -21,32 +21,21 @@
 #include <random>
 
 #include "../support/render_text.h"
+#include "../support/volpath_scenes.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
 
-struct Stats {
-  std::vector<double> mean, se;
-};
+using test::ball;
+using test::kSpectralFilm;
+using test::kStep;
+using test::kStepSpectrum;
+using test::narrow_view;
+using Stats = test::VolpathStats;
 
-Stats render(const std::string& text) {
-  RenderSetup s = build_render_setup(parse_scene_string(text, "volpath_grid.pbrt", "."), {});
-  RenderCounters counters;
-  RenderOptions opts;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
-  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
-  const Image img = s.film->image();
-  for (float v : img.pixels) EXPECT_TRUE(std::isfinite(v));
-  Stats st;
-  for (int c = 0; c < img.channels; ++c) {
-    const test::MeanAndError e = test::channel_mean_and_error(img, c);
-    st.mean.push_back(e.mean);
-    st.se.push_back(e.std_error);
-  }
-  return st;
-}
+Stats render(const std::string& text) { return test::render_volpath_stats(text, "volpath_grid.pbrt"); }
 
 std::string floats(const std::vector<float>& v) {
   std::string s = "[";
@@ -72,29 +61,6 @@ std::string grid_medium(const std::string& name, int n, F f, const std::string& 
       name, n, n, n, floats(d), coefficients);
 }
 
-std::string ball(const std::string& inside, const std::string& outside, float radius) {
-  return fmt::format(
-      "AttributeBegin\n MediumInterface \"{}\" \"{}\"\n Material \"interface\"\n Shape \"sphere\" \"float radius\" "
-      "{}\nAttributeEnd\n",
-      inside, outside, radius);
-}
-
-std::string narrow_view(const std::string& film, int spp) {
-  return fmt::format(R"(LookAt 0 0 5  0 0 0  0 1 0
-Camera "perspective" "float fov" 0.2
-{}
-Sampler "independent" "integer pixelsamples" {}
-PixelFilter "box"
-Integrator "volpath" "integer maxdepth" 5
-)",
-                     film, spp);
-}
-
-const std::string kSpectralFilm =
-    "Film \"spectral\" \"integer xresolution\" 16 \"integer yresolution\" 16 \"integer nbuckets\" 3 "
-    "\"float lambdamin\" 400 \"float lambdamax\" 700";
-const std::string kStepSpectrum = "[400 0.5 499.99 0.5 500.01 1.5 599.99 1.5 600.01 3 700 3]";
-const double kStep[3] = {0.5, 1.5, 3.0};
 const std::string kSky = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 
 // The sphere of radius 0.5 lies where a 4^3 grid over [-2, 2]^3 is constant (the fading outer

@@ -20,59 +20,21 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/volpath_scenes.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
 
-struct Stats {
-  std::vector<double> mean, se;  // per channel: image mean and its standard error
-};
+using test::ball;
+using test::kSpectralFilm;
+using test::kStep;
+using test::kStepSpectrum;
+using test::narrow_view;
+using Stats = test::VolpathStats;
 
-Stats render(const std::string& text) {
-  RenderSetup s = build_render_setup(parse_scene_string(text, "volpath.pbrt", "."), {});
-  RenderCounters counters;
-  RenderOptions opts;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
-  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
-  const Image img = s.film->image();
-  for (float v : img.pixels) EXPECT_TRUE(std::isfinite(v));
-  Stats st;
-  for (int c = 0; c < img.channels; ++c) {
-    const test::MeanAndError e = test::channel_mean_and_error(img, c);
-    st.mean.push_back(e.mean);
-    st.se.push_back(e.std_error);
-  }
-  return st;
-}
-
-// A camera 5 units from the origin with a field of view of 0.2 degrees: every ray crosses a
-// sphere of radius 0.5 at the origin within 0.01 % of its diameter.
-std::string narrow_view(const std::string& film, int spp) {
-  return fmt::format(R"(LookAt 0 0 5  0 0 0  0 1 0
-Camera "perspective" "float fov" 0.2
-{}
-Sampler "independent" "integer pixelsamples" {}
-PixelFilter "box"
-Integrator "volpath" "integer maxdepth" 5
-)",
-                     film, spp);
-}
-
-const std::string kSpectralFilm =
-    "Film \"spectral\" \"integer xresolution\" 16 \"integer yresolution\" 16 \"integer nbuckets\" 3 "
-    "\"float lambdamin\" 400 \"float lambdamax\" 700";
-// 0.5 over 400-500 nm, 1.5 over 500-600 nm, 3 over 600-700 nm: one value per film bucket.
-const std::string kStepSpectrum = "[400 0.5 499.99 0.5 500.01 1.5 599.99 1.5 600.01 3 700 3]";
-const double kStep[3] = {0.5, 1.5, 3.0};
-
-std::string ball(const std::string& inside, const std::string& outside, float radius) {
-  return fmt::format(
-      "AttributeBegin\n MediumInterface \"{}\" \"{}\"\n Material \"interface\"\n Shape \"sphere\" \"float radius\" "
-      "{}\nAttributeEnd\n",
-      inside, outside, radius);
-}
+Stats render(const std::string& text) { return test::render_volpath_stats(text, "volpath.pbrt"); }
 
 TEST(VolPathIntegrator, AbsorberPassesBeerLambertPerWavelength) {
   const std::string sky = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
