@@ -5,6 +5,7 @@
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
 #include "filters/mitchell_filter.h"
+#include "filters/sinc_filter.h"
 #include "filters/triangle_filter.h"
 #include "integrators/path_integrator.h"
 #include "integrators/path_stand_ins.h"
@@ -82,6 +83,7 @@ void register_builtin_plugins(Registry& r) {
   r.filters.add("gaussian", create_gaussian_filter, gaussian_filter_spec());
   r.filters.add("triangle", create_triangle_filter, triangle_filter_spec());
   r.filters.add("mitchell", create_mitchell_filter, mitchell_filter_spec());
+  r.filters.add("sinc", create_sinc_filter, sinc_filter_spec());
 
   r.shapes.add("trianglemesh", create_trianglemesh_shapes, trianglemesh_shape_spec());
   r.shapes.add("plymesh", create_plymesh_shapes, plymesh_shape_spec());
