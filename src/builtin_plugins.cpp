@@ -1,7 +1,9 @@
 // The one registration list: every built-in plugin, one line each.
 #include "cameras/eye_params.h"
 #include "cameras/lens_system_camera.h"
+#include "cameras/orthographic_camera.h"
 #include "cameras/perspective_camera.h"
+#include "cameras/spherical_camera.h"
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
 #include "filters/mitchell_filter.h"
@@ -66,6 +68,8 @@ void register_builtin_plugins(Registry& r) {
   r.cameras.add("perspective", create_perspective_camera, perspective_camera_spec());
   r.cameras.add("thinlens", create_thinlens_camera, perspective_camera_spec());
   r.cameras.add("pinhole", create_pinhole_camera, perspective_camera_spec());
+  r.cameras.add("orthographic", create_orthographic_camera, orthographic_camera_spec());
+  r.cameras.add("spherical", create_spherical_camera, spherical_camera_spec());
   r.cameras.add("eye", create_eye_camera, eye_camera_spec("eye"));
   for (const std::string& model : optics::eye_model_names())
     r.cameras.add(model, create_named_eye_camera(model), eye_camera_spec(model));

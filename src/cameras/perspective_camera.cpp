@@ -4,11 +4,6 @@
 
 namespace eyetrace {
 
-Vec4 default_screen_window(IVec2 res, float frame) {
-  if (frame <= 0.f) frame = float(res.x) / float(res.y);
-  return frame > 1.f ? Vec4(-frame, frame, -1.f, 1.f) : Vec4(-1.f, 1.f, -1.f / frame, 1.f / frame);
-}
-
 PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 resolution, const Settings& s,
                                      const AnimatedTransform& motion)
     : world_from_camera_(world_from_camera),
@@ -20,11 +15,8 @@ PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 r
 }
 
 Vec3 PerspectiveCamera::camera_direction(Vec2 p) const {
-  const Vec4& w = s_.screen_window;
-  // Raster y grows downwards, screen y upwards.
-  float sx = w[0] + (p.x / resolution_.x) * (w[1] - w[0]);
-  float sy = w[3] - (p.y / resolution_.y) * (w[3] - w[2]);
-  return Vec3(sx * tan_half_fov_, sy * tan_half_fov_, 1.f);
+  const Vec2 s = screen_from_raster(s_.screen_window, resolution_, p);
+  return Vec3(s.x * tan_half_fov_, s.y * tan_half_fov_, 1.f);
 }
 
 std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample& cs, SampledWavelengths&) const {
@@ -63,13 +55,8 @@ const PluginSpec& perspective_camera_spec() {
               .above(0)
               .with_unit("scene units")
               .describe("distance of the plane in focus"),
-          param::reals("screenwindow")
-              .size(4)
-              .shown_default("shorter axis spans [−1, 1]")
-              .describe("x0 x1 y0 y1 of the image plane"),
-          param::real("frameaspectratio")
-              .above(0)
-              .describe("aspect for the default screen window instead of the image's"),
+          screen_window_param(),
+          frame_aspect_ratio_param(),
           shutter_open_param(),
           shutter_close_param(),
       }};
@@ -87,13 +74,7 @@ static PerspectiveCamera::Settings read_settings(const CameraContext& ctx, const
   s.fov_deg = p.get_float("fov");
   s.lens_radius = p.get_float("lensradius");
   s.focal_distance = p.get_float("focaldistance");
-  std::vector<float> sw = p.get_floats("screenwindow");
-  if (!sw.empty()) {
-    if (sw[0] >= sw[1] || sw[2] >= sw[3]) p.fail("screenwindow", "needs x0 < x1, y0 < y1");
-    s.screen_window = Vec4(sw[0], sw[1], sw[2], sw[3]);
-  }
-  if (p.has("frameaspectratio") && sw.empty())
-    s.screen_window = default_screen_window(ctx.resolution, p.get_float("frameaspectratio"));
+  s.screen_window = read_screen_window(p, ctx.resolution);
   // The shutter interval is also the film's exposure (scene_builder.cpp checks that it opens).
   s.shutter = read_shutter(p);
   return s;

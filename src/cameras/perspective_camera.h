@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 
+#include "cameras/screen_window.h"
 #include "cameras/shutter.h"
 #include "core/animated_transform.h"
 #include "core/camera.h"
@@ -41,8 +42,5 @@ const PluginSpec& perspective_camera_spec();  // perspective, thinlens, pinhole
 std::unique_ptr<Camera> create_perspective_camera(const CameraContext& ctx);
 std::unique_ptr<Camera> create_pinhole_camera(const CameraContext& ctx);
 std::unique_ptr<Camera> create_thinlens_camera(const CameraContext& ctx);
-
-// The screen window pbrt derives from the image aspect ratio: the shorter axis spans [-1, 1].
-Vec4 default_screen_window(IVec2 resolution, float frame_aspect_ratio = 0.f);
 
 }  // namespace eyetrace
