@@ -13,8 +13,10 @@
 #include "integrators/path_stand_ins.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
+#include "lights/goniometric_light.h"
 #include "lights/infinite_light.h"
 #include "lights/point_light.h"
+#include "lights/projection_light.h"
 #include "lights/spot_light.h"
 #include "materials/coated_conductor_material.h"
 #include "materials/coated_diffuse_material.h"
@@ -134,6 +136,8 @@ void register_builtin_plugins(Registry& r) {
 
   r.lights.add("point", create_point_light, point_light_spec());
   r.lights.add("spot", create_spot_light, spot_light_spec());
+  r.lights.add("goniometric", create_goniometric_light, goniometric_light_spec());
+  r.lights.add("projection", create_projection_light, projection_light_spec());
   r.lights.add("distant", create_distant_light, distant_light_spec());
   r.lights.add("infinite", create_infinite_light, infinite_light_spec());
   r.area_lights.add("diffuse", create_diffuse_area_light, diffuse_area_light_spec());
