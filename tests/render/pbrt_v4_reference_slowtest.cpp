@@ -3,7 +3,8 @@
 // diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
 // maxcomponentvalue, the gbuffer film's channels, motion blur, the grid media uniformgrid,
-// cloud, rgbgrid and nanovdb) is rendered here by eyetrace with two seeds and compared
+// cloud, rgbgrid and nanovdb, the orthographic and spherical cameras, the sinc filter, the
+// goniometric and projection lights) is rendered here by eyetrace with two seeds and compared
 // with the two images pbrt-v4 rendered of the same scene text with two seeds
 // (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
 // everything whose default could differ (box pixel filter, the independent sampler, the path
@@ -257,6 +258,19 @@ TEST(PbrtV4Reference, VolpathProceduralCloudMedium) { expect_matches_pbrt_v4("cl
 TEST(PbrtV4Reference, VolpathUniformGridTemperatureEmission) { expect_matches_pbrt_v4("grid-fire"); }
 TEST(PbrtV4Reference, VolpathRgbGridWithEmission) { expect_matches_pbrt_v4("rgbgrid"); }
 TEST(PbrtV4Reference, VolpathNanoVDBDensityAndTemperature) { expect_matches_pbrt_v4("nanovdb"); }
+
+// The cameras, filter and lights that were pbrt-v4's last unsupported plugins: an orthographic
+// camera with an off-centre screen window and pbrt-v4's thin lens; the spherical camera in both
+// mappings; the windowed sinc filter at its defaults (signed sample weights; pixels stay
+// independent, each sample landing in one pixel); a goniometric light from an RGB equal-area
+// image with "power" and "scale"; a projection light from an 8-bit sRGB PNG with "power" and
+// "scale" (tests/data/pbrt-v4/make_light_images.py made both images).
+TEST(PbrtV4Reference, OrthographicCameraWithScreenWindowAndThinLens) { expect_matches_pbrt_v4("orthographic"); }
+TEST(PbrtV4Reference, SphericalCameraEqualArea) { expect_matches_pbrt_v4("spherical"); }
+TEST(PbrtV4Reference, SphericalCameraEquirectangular) { expect_matches_pbrt_v4("spherical-equirectangular"); }
+TEST(PbrtV4Reference, SincPixelFilterAtItsDefaults) { expect_matches_pbrt_v4("sinc"); }
+TEST(PbrtV4Reference, GoniometricLightFromAnRgbEqualAreaImage) { expect_matches_pbrt_v4("goniometric"); }
+TEST(PbrtV4Reference, ProjectionLightFromAnSrgbPng) { expect_matches_pbrt_v4("projection"); }
 
 // fbm, wrinkled, windy (as mix amounts), dots and marble. The scene's scales keep every noise
 // octave in pbrt-v4 too (noise.pbrt). pbrt-v4's dots paint "inside" and "outside" the other way
