@@ -45,7 +45,9 @@ std::string SincFilter::to_string() const {
 const PluginSpec& sinc_filter_spec() {
   static const PluginSpec spec{
       "PixelFilter", "a sinc windowed by a wider sinc (Lanczos), with negative lobes",
-      "Sampled as pbrt-v4 samples it: |f| tabulated, signed sample weights.",
+      "Sampled as pbrt-v4 samples it, from a table of the filter's magnitude with signed weights; each weight is "
+      "the exact filter value at the sample over its density (pbrt-v4: the table cell's value), so the filter is not "
+      "quantised to the table's cells.",
       filter_radius_params(4) + std::vector<ParamSpec>{param::real("tau", 3).range(1e-2, 1e3).describe(
                                     "width of the window sinc, in its zero crossings")}};
   return spec;
