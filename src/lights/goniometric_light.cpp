@@ -62,7 +62,9 @@ const PluginSpec& goniometric_light_spec() {
   static const PluginSpec spec{
       "LightSource",
       "a point light whose intensity follows an equal-area image over the sphere",
-      "`filename` is required (pbrt-v4 warns and makes a light of no image); an image with a non-finite value is an "
+      "`filename` is required (pbrt-v4 5f7a606 warns that it is missing, then aborts on a failed check); an image with "
+      "a "
+      "non-finite value is an "
       "error, as in pbrt-v4. An image with both R, G, B and Y channels is read by its R, G, B (pbrt-v4 refuses it).",
       {emission_param_spec("I", "intensity, times the image"), scale_param_spec(),
        photometric_param_spec("power", "total power: 4 pi times the image's average (I's RGB colour not counted)"),
