@@ -34,7 +34,7 @@ TEST(CommandLine, SeveralSceneErrorsArePrintedAndNothingIsWritten) {
                 "eyetrace supports: bilinearmesh, curve, cylinder, disk, loopsubdiv, plymesh, sphere, trianglemesh\n" +
                 scene.string() +
                 ":2:1: error: unsupported light \"pointt\" (did you mean \"point\"?); eyetrace supports: "
-                "distant, infinite, point, spot\n2 errors\n");
+                "distant, goniometric, infinite, point, projection, spot\n2 errors\n");
   EXPECT_FALSE(fs::exists(out));
   fs::remove(scene);
 }
