@@ -45,7 +45,12 @@ Pmj02bnSampler::Pmj02bnSampler(int samples_per_pixel, uint64_t seed)
     : spp_(samples_per_pixel),
       seed_(seed),
       tile_(1 << (kPmj02bnLevels / 2 - std::countr_zero(round_up_power_of_4(uint32_t(samples_per_pixel))) / 2)),
-      pixel_samples_(std::make_shared<const std::vector<Vec2>>(sort_into_pixels(tile_, samples_per_pixel))) {}
+      pixel_samples_(std::make_shared<const std::vector<Vec2>>(sort_into_pixels(tile_, samples_per_pixel))) {
+  // The seed shifts every blue-noise texture by the same toroidal offset (pbrt-v4's do not
+  // depend on the seed): another seed, other rotations, still blue noise across pixels.
+  const uint64_t shift = hash_values(seed, 0x626c7565u);
+  noise_shift_ = IVec2(int(shift % kBlueNoiseSize), int((shift >> 16) % kBlueNoiseSize));
+}
 
 void Pmj02bnSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimension) {
   pixel_ = pixel;
@@ -54,11 +59,8 @@ void Pmj02bnSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimen
 }
 
 IVec2 Pmj02bnSampler::blue_noise_pixel() const {
-  // The seed shifts every texture by the same toroidal offset (pbrt-v4's do not depend on the
-  // seed): another seed, other rotations, still blue noise across pixels.
-  const uint64_t shift = hash_values(seed_, 0x626c7565u);
-  return IVec2(int((int64_t(pixel_.x) + int64_t(shift & 0x7f)) % kBlueNoiseSize),
-               int((int64_t(pixel_.y) + int64_t((shift >> 8) & 0x7f)) % kBlueNoiseSize));
+  return IVec2(int((int64_t(pixel_.x) + noise_shift_.x) % kBlueNoiseSize),
+               int((int64_t(pixel_.y) + noise_shift_.y) % kBlueNoiseSize));
 }
 
 float Pmj02bnSampler::get_1d() {

@@ -41,7 +41,8 @@ class Pmj02bnSampler : public Sampler {
   IVec2 blue_noise_pixel() const;  // where the pixel reads the blue-noise textures
   int spp_;
   uint64_t seed_;
-  int tile_;  // T: pixels per side of the tile that shares the first set's points
+  int tile_;              // T: pixels per side of the tile that shares the first set's points
+  IVec2 noise_shift_{0};  // the seed's offset into the blue-noise textures
   std::shared_ptr<const std::vector<Vec2>> pixel_samples_;  // T^2 x spp, pixel by pixel
   IVec2 pixel_{0};
   int index_ = 0, dimension_ = 0;

@@ -1,7 +1,7 @@
 // The pmj02bn sampler's tables, made at build time by tools/pmj02bn_tables from the
 // generators in samplers/pmj02bn_points.h and samplers/blue_noise.h and embedded in the
 // library (5 x 65536 points of 8 bytes and 48 textures of 128 x 128 ranks of 2 bytes:
-// 4.1 MB of read-only data, nothing to compute at run time).
+// 4 MiB of read-only data, nothing to compute at run time).
 #pragma once
 #include <array>
 #include <cstdint>
