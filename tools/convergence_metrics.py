@@ -160,7 +160,8 @@ def add_model_times(rows):
 
 COLOURS = {"independent": "tab:gray", "stratified": "tab:blue", "halton": "tab:green", "sobol": "tab:orange",
            "zsobol": "tab:red", "zsobol-padded": "tab:purple", "sobol-none": "tab:brown",
-           "sobol-permutedigits": "tab:pink", "sobol-owen": "tab:olive"}
+           "sobol-permutedigits": "tab:pink", "sobol-owen": "tab:olive", "pmj02bn": "tab:cyan",
+           "paddedsobol": "gold"}
 STYLES = {"pinhole": "-", "thinlens": "--", "navarro": ":"}
 STYLES.update({f"{c}-{mm}mm": STYLES[c] for c in ("thinlens", "navarro") for mm in (2, 4, 6)})
 STYLES.update({f"navarro-{mm}mm-polar": "-." for mm in (2, 4, 6)})

@@ -7,7 +7,7 @@
 #include "core/constants.h"
 #include "core/diagnostic.h"
 #include "samplers/hash.h"
-#include "samplers/pmj02bn_points.h"
+#include "samplers/pmj02bn_tables.h"
 #include "samplers/sampler_params.h"
 
 namespace eyetrace {
@@ -29,7 +29,8 @@ uint32_t round_up_power_of_4(uint32_t v) {
 std::vector<Vec2> sort_into_pixels(int tile, int spp) {
   std::vector<Vec2> samples(size_t(tile) * tile * spp);
   std::vector<int> stored(size_t(tile) * tile, 0);
-  for (const auto& q : pmj02bn_set(0)) {
+  for (uint32_t i = 0; i < kPmj02bnPoints; ++i) {
+    const std::array<uint32_t, 2> q = pmj02bn_point(0, i);
     const double x = q[0] * 0x1p-32 * tile, y = q[1] * 0x1p-32 * tile;
     const size_t pixel = size_t(x) + size_t(y) * tile;
     if (stored[pixel] == spp) continue;
@@ -44,7 +45,12 @@ Pmj02bnSampler::Pmj02bnSampler(int samples_per_pixel, uint64_t seed)
     : spp_(samples_per_pixel),
       seed_(seed),
       tile_(1 << (kPmj02bnLevels / 2 - std::countr_zero(round_up_power_of_4(uint32_t(samples_per_pixel))) / 2)),
-      pixel_samples_(std::make_shared<const std::vector<Vec2>>(sort_into_pixels(tile_, samples_per_pixel))) {}
+      pixel_samples_(std::make_shared<const std::vector<Vec2>>(sort_into_pixels(tile_, samples_per_pixel))) {
+  // The seed shifts every blue-noise texture by the same toroidal offset (pbrt-v4's do not
+  // depend on the seed): another seed, other rotations, still blue noise across pixels.
+  const uint64_t shift = hash_values(seed, 0x626c7565u);
+  noise_shift_ = IVec2(int(shift % kBlueNoiseSize), int((shift >> 16) % kBlueNoiseSize));
+}
 
 void Pmj02bnSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimension) {
   pixel_ = pixel;
@@ -52,24 +58,30 @@ void Pmj02bnSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimen
   dimension_ = std::max(2, dimension);  // dimensions 0 and 1 are the film position's, as pbrt-v4
 }
 
+IVec2 Pmj02bnSampler::blue_noise_pixel() const {
+  return IVec2(int((int64_t(pixel_.x) + noise_shift_.x) % kBlueNoiseSize),
+               int((int64_t(pixel_.y) + noise_shift_.y) % kBlueNoiseSize));
+}
+
 float Pmj02bnSampler::get_1d() {
   const uint64_t h = hash_values(pixel_.x, pixel_.y, dimension_, seed_);
-  ++dimension_;
   const uint32_t stratum = permutation_element(uint32_t(index_), uint32_t(spp_), uint32_t(h));
-  const float jitter = hash_to_unit_float(mix_bits(h));
+  const float jitter = blue_noise(dimension_, blue_noise_pixel());
+  ++dimension_;
   return std::min((float(stratum) + jitter) / float(spp_), kOneMinusEpsilon);
 }
 
 Vec2 Pmj02bnSampler::get_2d() {
   const int instance = dimension_ / 2;
-  const uint64_t h = hash_values(pixel_.x, pixel_.y, dimension_, seed_);
   uint32_t index = uint32_t(index_);
-  if (instance >= kPmj02bnSets) index = permutation_element(index, uint32_t(spp_), uint32_t(h));
+  if (instance >= kPmj02bnSets)
+    index = permutation_element(index, uint32_t(spp_), uint32_t(hash_values(pixel_.x, pixel_.y, dimension_, seed_)));
+  const std::array<uint32_t, 2> q = pmj02bn_point(instance, index % kPmj02bnPoints);
+  // Cranley-Patterson rotation, the same for all of a pixel's samples in this dimension pair
+  // and blue noise across pixels.
+  const IVec2 b = blue_noise_pixel();
+  Vec2 u(float(q[0] * 0x1p-32) + blue_noise(dimension_, b), float(q[1] * 0x1p-32) + blue_noise(dimension_ + 1, b));
   dimension_ += 2;
-  const auto& q = pmj02bn_set(instance)[index % kPmj02bnPoints];
-  // Cranley-Patterson rotation, the same for all of a pixel's samples in this dimension pair.
-  Vec2 u(float(q[0] * 0x1p-32) + hash_to_unit_float(mix_bits(h)),
-         float(q[1] * 0x1p-32) + hash_to_unit_float(mix_bits(h ^ 0x9e3779b97f4a7c15ull)));
   if (u.x >= 1.f) u.x -= 1.f;
   if (u.y >= 1.f) u.y -= 1.f;
   return Vec2(std::min(u.x, kOneMinusEpsilon), std::min(u.y, kOneMinusEpsilon));
@@ -92,10 +104,10 @@ std::string Pmj02bnSampler::to_string() const {
 const PluginSpec& pmj02bn_sampler_spec() {
   static const PluginSpec spec{
       "Sampler", "progressive multi-jittered (0,2) points, tiled over pixels, as pbrt-v4's pmj02bn",
-      "eyetrace makes its own (0,2) point sets (Owen-scrambled Sobol'; pbrt-v4 ships tables with a blue-noise "
-      "selection eyetrace's lack); per-pixel rotations and offsets come from a hash (white noise) instead of "
-      "pbrt-v4's blue-noise textures; the seed also shifts the tile of film positions. At most 65536 samples per "
-      "pixel, as pbrt-v4.",
+      "eyetrace makes its own tables at build time with the same constructions (5 sets of 65536 pmj02 points "
+      "with best-candidate choice; 48 void-and-cluster textures of 128 x 128), not pbrt-v4's numbers; the seed also "
+      "shifts the tile of film positions and the textures (pbrt-v4's seed changes only the permutations of 1-D strata "
+      "and of the sets beyond the fifth dimension pair). At most 65536 samples per pixel, as pbrt-v4.",
       pixel_sample_params(16)};
   return spec;
 }
