@@ -335,8 +335,8 @@ const PluginSpec& bdpt_integrator_spec() {
   static const PluginSpec spec{
       "Integrator",
       "bidirectional path tracing (pbrt-v4's algorithm and MIS weights), surfaces",
-      "Strategies with t >= 2 camera vertices only: a light path is never connected to the camera lens, so caustics "
-      "of point, spot and distant lights seen directly through specular surfaces are missed (as by `path`). "
+      "Strategies with t >= 2 camera vertices only: a light path is never connected to the camera lens, so a caustic "
+      "of a point, spot or distant light on a diffuse surface seen directly is missed (as by `path`). "
       "Scenes with participating media are rendered by `volpath`, with a warning. Infinite lights with a portal "
       "are refused. Rough refraction at light-path vertices takes the adjoint BSDF by reversing the pair.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),

@@ -5,9 +5,10 @@
 // ray), each weighted by pbrt-v4's MIS weight (integrators/bdpt_mis.h) over the strategies
 // used. Strategies with t = 1 (a light-path vertex connected to the camera lens, splatted to
 // the pixel it lands in) are not used, so the weights are spread over t >= 2 alone: the image
-// converges to the same answer, but light that only t = 1 reaches (caustics of point lights
-// seen directly through specular surfaces) is missed, as by `path`. Every camera works, since
-// the strategies need only the camera's ray.
+// converges to the same answer, but light that only t = 1 reaches (a point light's caustic
+// through glass onto a diffuse floor, seen directly) is missed, as by `path`; seen after one
+// more diffuse bounce it is rendered, which `path` cannot. Every camera works, since the
+// strategies need only the camera's ray.
 // Surfaces only: scenes with participating media are rendered by `volpath` (with a warning).
 // No Russian roulette (as pbrt-v4's bdpt). Wavelengths as `path`: a dispersive dielectric on
 // either subpath terminates the secondary wavelengths of the whole sample.

@@ -89,7 +89,8 @@ TEST(BdptIntegrator, BadParametersAreNamed) {
 // The Cornell box of scenes/ without its glass sphere (a specular caustic is what path cannot
 // render) and with `lights` instead of its area light when given; its front is open, so
 // distant and infinite light comes in.
-std::string diffuse_box(const std::string& integrator, const std::string& lights, bool keep_area_light) {
+std::string diffuse_box(const std::string& integrator, const std::string& lights, bool keep_area_light,
+                        const std::string& camera = "") {
   std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/scenes/cornell-box.pbrt");
   std::stringstream ss;
   ss << in.rdbuf();
@@ -104,6 +105,7 @@ std::string diffuse_box(const std::string& integrator, const std::string& lights
   replace("Material \"dielectric\" \"float eta\" 1.5", "Material \"diffuse\" \"rgb reflectance\" [0.5 0.6 0.7]");
   replace("WorldBegin\n", "WorldBegin\n" + lights + "\n");
   if (!keep_area_light) replace("AreaLightSource \"diffuse\" \"rgb L\" [17 12 4]", "");
+  if (!camera.empty()) replace("Camera \"perspective\" \"float fov\" 40", camera);
   return s;
 }
 
@@ -146,10 +148,10 @@ void mean_and_variance(const Renders& r, std::vector<double>* mean, std::vector<
 // variances is 1 in expectation without bias; over 1728 values its noise is a few percent
 // (more with the heavy tails of light paths), so 1.5 leaves room for noise and none for a bias
 // of a few standard errors per pixel.
-void expect_same_as_path(const std::string& lights, bool keep_area_light) {
+void expect_same_as_path(const std::string& lights, bool keep_area_light, const std::string& camera = "") {
   constexpr int kSeeds = 8, kSpp = 16;
-  const Renders b = render_seeds(diffuse_box("bdpt", lights, keep_area_light), kSeeds, kSpp);
-  const Renders p = render_seeds(diffuse_box("path", lights, keep_area_light), kSeeds, kSpp);
+  const Renders b = render_seeds(diffuse_box("bdpt", lights, keep_area_light, camera), kSeeds, kSpp);
+  const Renders p = render_seeds(diffuse_box("path", lights, keep_area_light, camera), kSeeds, kSpp);
   std::vector<double> mb, vb, mp, vp;
   mean_and_variance(b, &mb, &vb);
   mean_and_variance(p, &mp, &vp);
@@ -188,6 +190,14 @@ TEST(BdptIntegrator, EqualsPathWithSpotDistantAndInfiniteLights) {
       "LightSource \"distant\" \"point3 from\" [0 1 -1] \"point3 to\" [0 0 0] \"rgb L\" [1 1 1]\n"
       "LightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]",
       false);
+}
+
+// The eye cameras have no importance function, but every strategy used needs only the camera's
+// ray: through the dispersive Navarro eye (spectral MIS over four wavelengths per sample) bdpt
+// still equals path.
+TEST(BdptIntegrator, EqualsPathThroughTheNavarroEye) {
+  expect_same_as_path("LightSource \"point\" \"point3 from\" [0.3 0.8 0.4] \"rgb I\" [0.5 0.5 0.5]", true,
+                      "Camera \"navarro\" \"float fov\" 30");
 }
 
 Image render_threads(int threads, int pass_samples, uint64_t seed) {
