@@ -216,6 +216,8 @@ TEST(PbrtV4Reference, MotionBlurOfShapeInstanceAndCameraPastTheEndTime) { expect
 // pbrt-v4's bidirectional path tracer against eyetrace's (strategies with t >= 2 only: no
 // specular surface here, so the same image in expectation).
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
+// The same with light paths from a point, a spot and a distant light (Light::sample_le).
+TEST(PbrtV4Reference, BdptIntegratorWithPointSpotAndDistantLights) { expect_matches_pbrt_v4("bdpt-lights"); }
 // pbrt-v4's pmj02bn tables are not in the oracle's source snapshot (PROVENANCE): eyetrace's
 // pmj02bn render of the mix scene is compared with pbrt-v4's independent-sampler images of it.
 TEST(PbrtV4Reference, Pmj02bnSamplerOnTheMixScene) { expect_matches_pbrt_v4("mix-pmj02bn", nullptr, false, "mix"); }
