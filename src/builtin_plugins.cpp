@@ -9,6 +9,7 @@
 #include "filters/mitchell_filter.h"
 #include "filters/sinc_filter.h"
 #include "filters/triangle_filter.h"
+#include "integrators/bdpt_integrator.h"
 #include "integrators/path_integrator.h"
 #include "integrators/path_stand_ins.h"
 #include "lights/diffuse_area_light.h"

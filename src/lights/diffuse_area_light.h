@@ -38,6 +38,10 @@ class DiffuseAreaLight : public Light {
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
   SampledSpectrum L(const SurfaceInteraction& hit, const Vec3& w, const SampledWavelengths& lambda) const override;
+  // A uniform point of the shape and a cosine-weighted direction from it (either side, by
+  // halves of u2.x, when two-sided), as pbrt-v4.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
   bool is_delta() const override { return invisible_; }
   float power() const override;
 

@@ -1,5 +1,6 @@
 #include "lights/distant_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -22,6 +23,27 @@ float DistantLight::power() const { return kPi * scene_radius_ * scene_radius_ *
 void DistantLight::preprocess(const Bounds3& scene_bounds) {
   float r = scene_bounds.radius();
   scene_radius_ = std::isfinite(r) ? r : 0.f;
+  scene_center_ = scene_radius_ > 0.f ? scene_bounds.center() : Vec3(0.f);
+}
+
+std::optional<LightLeSample> DistantLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda,
+                                                     float time) const {
+  if (!(scene_radius_ > 0.f)) return std::nullopt;  // an empty scene: nothing to light
+  const Frame frame(w_);
+  const Vec2 d = sample_uniform_disk_concentric(u1);
+  const Vec3 p_disk = scene_center_ + scene_radius_ * (frame.s * d.x + frame.t * d.y);
+  LightLeSample s;
+  s.L = L_.sample(lambda);
+  // The disc is moved a radius towards the light so that the ray starts outside the scene.
+  s.ray = Ray{p_disk + scene_radius_ * w_, -w_, kInfinity, time};
+  s.pdf_pos = 1.f / (kPi * sqr(scene_radius_));
+  s.pdf_dir = 1.f;
+  return s;
+}
+
+void DistantLight::pdf_le(const Vec3&, const Vec3&, const Vec3&, float* pdf_pos, float* pdf_dir) const {
+  *pdf_pos = scene_radius_ > 0.f ? 1.f / (kPi * sqr(scene_radius_)) : 0.f;
+  *pdf_dir = 0.f;  // a single direction: no other strategy could have chosen it (pbrt-v4)
 }
 
 const PluginSpec& distant_light_spec() {

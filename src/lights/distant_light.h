@@ -20,7 +20,12 @@ class DistantLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // A ray along the light's direction through a uniform point of the disc that bounds the
+  // scene (pdf_pos 1 / (pi r^2), pdf_dir 1), as pbrt-v4.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
   bool is_delta() const override { return true; }
+  bool is_delta_direction() const override { return true; }
   // The flux through the scene's bounding disc: pi r^2 L (0 before preprocess()).
   float power() const override;
   void preprocess(const Bounds3& scene_bounds) override;
@@ -32,6 +37,7 @@ class DistantLight : public Light {
   Spectrum L_;
   float mean_;  // of L_ as RGB: the light sampler's weight
   float scene_radius_ = 0.f;
+  Vec3 scene_center_{0.f};
 };
 
 const PluginSpec& distant_light_spec();

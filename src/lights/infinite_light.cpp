@@ -28,6 +28,25 @@ float scene_radius_of(const Bounds3& b) {
   return std::isfinite(r) ? r : 0.f;
 }
 
+Vec3 scene_center_of(const Bounds3& b) { return scene_radius_of(b) > 0.f ? b.center() : Vec3(0.f); }
+
+// The ray of a light path from an infinite light: arriving from direction wi (unit, towards
+// the light), through a uniform point of the disc of radius r about the centre, perpendicular
+// to wi, started a radius out so that it begins outside the scene (pbrt-v4).
+std::optional<LightLeSample> disc_ray(const SampledSpectrum& L, const Vec3& wi, float pdf_dir, const Vec3& center,
+                                      float radius, Vec2 u, float time) {
+  if (!(radius > 0.f) || !(pdf_dir > 0.f) || is_black(L)) return std::nullopt;
+  const Frame frame(-wi);
+  const Vec2 d = sample_uniform_disk_concentric(u);
+  const Vec3 p_disk = center + radius * (frame.s * d.x + frame.t * d.y);
+  LightLeSample s;
+  s.L = L;
+  s.ray = Ray{p_disk + radius * wi, -wi, kInfinity, time};
+  s.pdf_pos = 1.f / (kPi * sqr(radius));
+  s.pdf_dir = pdf_dir;
+  return s;
+}
+
 }  // namespace
 
 std::optional<LightLiSample> UniformInfiniteLight::sample_li(const LightSampleContext& ctx, Vec2 u,
@@ -57,7 +76,23 @@ float UniformInfiniteLight::power() const {
   return portal_ ? kPi * portal_->area() * mean_ : 4.f * kPi * kPi * sqr(scene_radius_) * mean_;
 }
 
-void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
+void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) {
+  scene_radius_ = scene_radius_of(scene_bounds);
+  scene_center_ = scene_center_of(scene_bounds);
+}
+
+std::optional<LightLeSample> UniformInfiniteLight::sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda,
+                                                             float time) const {
+  if (portal_ || mean_ == 0.f) return std::nullopt;
+  return disc_ray(L_.sample(lambda), sample_uniform_sphere(u1), uniform_sphere_pdf(), scene_center_, scene_radius_, u2,
+                  time);
+}
+
+void UniformInfiniteLight::pdf_le(const Vec3&, const Vec3&, const Vec3&, float* pdf_pos, float* pdf_dir) const {
+  const bool emits = !portal_ && mean_ != 0.f && scene_radius_ > 0.f;
+  *pdf_pos = emits ? 1.f / (kPi * sqr(scene_radius_)) : 0.f;
+  *pdf_dir = emits ? uniform_sphere_pdf() : 0.f;
+}
 
 ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale,
                                        std::optional<Portal> portal)
@@ -121,7 +156,31 @@ float ImageInfiniteLight::power() const {
   return area * scale_ * channel_mean(map_.mean_radiance());
 }
 
-void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
+void ImageInfiniteLight::preprocess(const Bounds3& scene_bounds) {
+  scene_radius_ = scene_radius_of(scene_bounds);
+  scene_center_ = scene_center_of(scene_bounds);
+}
+
+std::optional<LightLeSample> ImageInfiniteLight::sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda,
+                                                           float time) const {
+  if (portal_) return std::nullopt;
+  float map_pdf = 0.f;
+  const std::optional<Vec3> wl = map_.sample(u1, &map_pdf);
+  if (!wl) return std::nullopt;
+  Vec3 wi = world_from_light_.vector(*wl);
+  const float len = glm::length(wi);
+  if (!(len > 0.f)) return std::nullopt;
+  wi /= len;
+  // Density and radiance from wi itself, as sample_li (pdf_le must agree to the bit).
+  return disc_ray(scale_ * rgb_emission(map_.radiance(to_light(wi)), lambda), wi, density(Vec3(0.f), wi), scene_center_,
+                  scene_radius_, u2, time);
+}
+
+void ImageInfiniteLight::pdf_le(const Vec3&, const Vec3&, const Vec3& w, float* pdf_pos, float* pdf_dir) const {
+  const bool emits = !portal_ && scene_radius_ > 0.f;
+  *pdf_pos = emits ? 1.f / (kPi * sqr(scene_radius_)) : 0.f;
+  *pdf_dir = emits ? density(Vec3(0.f), -w) : 0.f;  // w leaves the light: it arrives from -w
+}
 
 namespace {
 

@@ -34,6 +34,12 @@ class UniformInfiniteLight : public Light {
   SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const override;
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
+  // Light paths (pbrt-v4): a direction by sample_li's density and a uniform point of the disc
+  // that bounds the scene, perpendicular to it (pdf_pos 1 / (pi r^2)). Not through a portal:
+  // its density depends on the point it is seen from.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
+  bool emits_rays() const override { return !portal_; }
   // Flux through the scene's bounding disc from the whole sphere: 4 pi^2 r^2 L; through a
   // portal, pi A L.
   float power() const override;
@@ -44,6 +50,7 @@ class UniformInfiniteLight : public Light {
   float mean_;  // of L_ as RGB: the light sampler's weight
   std::optional<Portal> portal_;
   float scene_radius_ = 0.f;
+  Vec3 scene_center_{0.f};
 };
 
 class ImageInfiniteLight : public Light {
@@ -57,6 +64,10 @@ class ImageInfiniteLight : public Light {
   SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const override;
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
+  // As UniformInfiniteLight's, with directions by the map's luminance.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
+  bool emits_rays() const override { return !portal_; }
   float power() const override;
   void preprocess(const Bounds3& scene_bounds) override;
 
@@ -72,6 +83,7 @@ class ImageInfiniteLight : public Light {
   float scale_;
   std::optional<Portal> portal_;
   float scene_radius_ = 0.f;
+  Vec3 scene_center_{0.f};
 };
 
 const PluginSpec& infinite_light_spec();

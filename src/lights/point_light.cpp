@@ -1,5 +1,6 @@
 #include "lights/point_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -16,6 +17,20 @@ std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext& ctx
   s.pdf = 1.f;
   s.p_light = p_;
   return s;
+}
+
+std::optional<LightLeSample> PointLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda, float time) const {
+  LightLeSample s;
+  s.L = I_.sample(lambda);
+  s.ray = Ray{p_, sample_uniform_sphere(u1), kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_sphere_pdf();
+  return s;
+}
+
+void PointLight::pdf_le(const Vec3&, const Vec3&, const Vec3&, float* pdf_pos, float* pdf_dir) const {
+  *pdf_pos = 0.f;  // a point: no other position could have been sampled (pbrt-v4)
+  *pdf_dir = uniform_sphere_pdf();
 }
 
 const PluginSpec& point_light_spec() {

@@ -1,5 +1,6 @@
 #include "lights/spot_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -16,6 +17,7 @@ float smooth_step(float x, float a, float b) {
 SpotLight::SpotLight(const Transform& world_from_light, const Vec3& from, const Vec3& to, const Spectrum& I,
                      float cone_angle_deg, float falloff_start_deg)
     : light_from_world_(world_from_light.inverse()),
+      world_from_light_(world_from_light),
       p_(world_from_light.point(from)),
       axis_light_(glm::normalize(to - from)),
       I_(I),
@@ -45,6 +47,30 @@ std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx,
   s.pdf = 1.f;
   s.p_light = p_;
   return s;
+}
+
+std::optional<LightLeSample> SpotLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda, float time) const {
+  // Sampled in the light's frame, where the cone is round (angles are measured there).
+  const Vec3 wl = Frame(axis_light_).to_world(sample_uniform_cone(u1, cos_falloff_end_));
+  Vec3 w = world_from_light_.vector(wl);
+  const float len = glm::length(w);
+  if (!(len > 0.f)) return std::nullopt;
+  w /= len;
+  LightLeSample s;
+  s.L = intensity(w, lambda);
+  if (is_black(s.L)) return std::nullopt;
+  s.ray = Ray{p_, w, kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_cone_pdf(cos_falloff_end_);
+  return s;
+}
+
+void SpotLight::pdf_le(const Vec3&, const Vec3&, const Vec3& w, float* pdf_pos, float* pdf_dir) const {
+  *pdf_pos = 0.f;
+  const Vec3 wl = light_from_world_.vector(w);
+  const float len = glm::length(wl);
+  const bool inside = len > 0.f && glm::dot(wl / len, axis_light_) >= cos_falloff_end_;
+  *pdf_dir = inside ? uniform_cone_pdf(cos_falloff_end_) : 0.f;
 }
 
 // The smoothstep is symmetric about the middle of [cos_end, cos_start], so the falloff

@@ -25,6 +25,9 @@ class SpotLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // Uniform within the cone's outer angle (pdf_pos 1), as pbrt-v4.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
   bool is_delta() const override { return true; }
   float power() const override;
 
@@ -33,7 +36,7 @@ class SpotLight : public Light {
   const Vec3& position() const { return p_; }
 
  private:
-  Transform light_from_world_;
+  Transform light_from_world_, world_from_light_;
   Vec3 p_;           // world position
   Vec3 axis_light_;  // unit axis in light space
   Spectrum I_;

@@ -607,8 +607,8 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
     attempt([&] {
       IntegratorContext ictx{in.params, *setup.scene};
       setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
-      // As pbrt-v4 warns: only volpath traces media (eyetrace's bdpt stands in with path).
-      if (setup.scene->has_media() && in.name != "volpath")
+      // As pbrt-v4 warns: only volpath traces media (bdpt hands such scenes to volpath and says so).
+      if (setup.scene->has_media() && in.name != "volpath" && in.name != "bdpt")
         warn(in.loc, fmt::format("integrator \"{}\" ignores participating media; \"volpath\" traces them", in.name));
     });
   else if (o.keep_going)  // no scene to make it for: its name and parameters are still checked

@@ -245,5 +245,29 @@ TEST(DiffuseAreaLight, BadParametersAreErrors) {
   EXPECT_THROW(make_area(square, {float_param("power", 0)}), SceneError);
 }
 
+// Light paths: sample_le's rays leave the emitting side (either side when two-sided) with a
+// cosine-weighted direction, so each carries exactly pi A L (2 pi A L two-sided), the light's
+// power; pdf_le gives each ray's densities.
+TEST(DiffuseAreaLight, SampleLeRaysCarryThePower) {
+  FakeDisk disk(Vec3(0, 0, 2), Vec3(0, 0, -1), 0.5f);
+  for (bool two_sided : {false, true}) {
+    auto light = make_area(disk, {rgb_param("L", 3, 3, 3), bool_param("twosided", two_sided)});
+    int back = 0;
+    const LeEstimate e = sample_le_power(*light, 4000, 9, true, [&](const LightLeSample& s) {
+      EXPECT_EQ(s.n, Vec3(0, 0, -1));
+      EXPECT_NEAR(s.pdf_pos, 1.f / disk.area(), 1e-6f);
+      if (glm::dot(s.ray.d, s.n) < 0.f) ++back;
+    });
+    EXPECT_EQ(e.samples, 4000);
+    const double power = (two_sided ? 2 : 1) * kPi * disk.area() * 3;
+    EXPECT_NEAR(e.power, power, 1e-3 * power) << two_sided;
+    EXPECT_NEAR(e.power, light->power(), 1e-3 * power) << two_sided;
+    if (two_sided)
+      EXPECT_NEAR(back, 2000, 5 * std::sqrt(1000.0));  // half of them from the back
+    else
+      EXPECT_EQ(back, 0);
+  }
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -75,5 +75,27 @@ TEST(DistantLight, CoincidentFromAndToIsAnError) {
   }
 }
 
+// Light paths: rays along the light's direction through the disc that bounds the scene, from
+// outside the scene's bounding sphere, carrying pi r^2 L (the light's power).
+TEST(DistantLight, SampleLeRaysCrossTheSceneDiscAndCarryThePower) {
+  auto light = make_distant({rgb_param("L", 2, 2, 2), point_param("from", 0, 0, 0), point_param("to", 0, 0, 1)});
+  Bounds3 b;
+  b.extend(Vec3(-1, -2, -1));
+  b.extend(Vec3(3, 2, 1));
+  light->preprocess(b);
+  const Vec3 c = b.center();
+  const float r = b.radius();
+  const LeEstimate e = sample_le_power(*light, 4000, 7, false, [&](const LightLeSample& s) {
+    EXPECT_NEAR(glm::distance(s.ray.d, Vec3(0, 0, 1)), 0.f, 1e-6f);
+    EXPECT_GE(glm::distance(s.ray.o, c), r * (1 - 1e-5f));  // starts outside the scene
+    // Where it crosses the plane through the centre: within the disc.
+    const Vec3 at = s.ray.o + (c.z - s.ray.o.z) * s.ray.d;
+    EXPECT_LE(glm::distance(at, c), r * (1 + 1e-5f));
+  });
+  EXPECT_EQ(e.samples, 4000);
+  EXPECT_NEAR(e.power, kPi * r * r * 2, 1e-3 * e.power);
+  EXPECT_NEAR(e.power, light->power(), 1e-3 * e.power);
+}
+
 }  // namespace
 }  // namespace eyetrace

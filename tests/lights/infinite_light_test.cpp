@@ -234,6 +234,32 @@ class ImageInfiniteLightTest : public ::testing::TestWithParam<bool> {
   }
 };
 
+// Light paths from an environment image: directions by the map's density (pdf_le agrees with
+// each), and in total pi r^2 times the radiance integrated over the sphere, which uniformly
+// sampled directions of Le estimate independently; within 5 combined standard errors.
+TEST_P(ImageInfiniteLightTest, SampleLeRaysCarryWhatTheEnvironmentSends) {
+  auto light = make();
+  Bounds3 b;
+  b.extend(Vec3(-1.f));
+  b.extend(Vec3(1.f));
+  light->preprocess(b);
+  const double disc = kPi * sqr(b.radius());
+  const LeEstimate e = sample_le_power(*light, 20000, 10, true, [](const LightLeSample&) {});
+  const SampledWavelengths lambda = test::wavelengths();
+  const float white = test::emission(1.f, lambda)[1];
+  Uniform rng(11);
+  const int n = 200000;
+  double sum = 0, sum2 = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = light->Le(Ray{Vec3(0.f), sample_uniform_sphere(rng.next2())}, lambda)[1] / white * 4 * kPi;
+    sum += x;
+    sum2 += x * x;
+  }
+  const double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / (n - 1));
+  EXPECT_NEAR(e.power, disc * mean, 5 * std::sqrt(sqr(e.std_error) + sqr(disc * se)));
+  EXPECT_LT(e.std_error, 0.02 * e.power);
+}
+
 TEST_P(ImageInfiniteLightTest, SamplesFollowPixelLuminanceChiSquare) {
   auto light = make();
   check_samples_follow_pixel_luminance(dynamic_cast<const ImageInfiniteLight&>(*light));
@@ -421,6 +447,30 @@ TEST(InfiniteLightPortal, APortalThatIsNotARectangleIsAnErrorNamingIt) {
     EXPECT_NE(e.find("\"portal\""), std::string::npos) << e;
     EXPECT_NE(e.find("test.pbrt:3:7"), std::string::npos) << e;
   }
+}
+
+// Light paths from a uniform environment: directions over the whole sphere (their mean about
+// 0), points on the disc that bounds the scene, rays started outside it; the total they carry
+// is 4 pi^2 r^2 L (the light's power), every sample exactly. A portal's light is refused.
+TEST(InfiniteLight, SampleLeRaysFromTheUniformEnvironmentCarryThePower) {
+  auto light = make_infinite({rgb_param("L", 0.5, 0.5, 0.5)});
+  Bounds3 b;
+  b.extend(Vec3(-1, 0, 0));
+  b.extend(Vec3(1, 2, 4));
+  light->preprocess(b);
+  const float r = b.radius();
+  Vec3 mean_dir(0.f);
+  const LeEstimate e = sample_le_power(*light, 4000, 8, true, [&](const LightLeSample& s) {
+    EXPECT_GE(glm::distance(s.ray.o, b.center()), r * (1 - 1e-5f));
+    mean_dir += s.ray.d / 4000.f;
+  });
+  EXPECT_EQ(e.samples, 4000);
+  EXPECT_NEAR(e.power, 4 * kPi * kPi * r * r * 0.5, 1e-3 * e.power);
+  EXPECT_NEAR(e.power, light->power(), 1e-3 * e.power);
+  EXPECT_LT(glm::length(mean_dir), 5 * std::sqrt(1.0 / 3 / 4000) * std::sqrt(3.0));
+  auto portal = make_infinite({num_param("point3", "portal", {-1, 1, 0, 1, 1, 0, 1, 1, 1, -1, 1, 1})});
+  EXPECT_FALSE(portal->emits_rays());
+  EXPECT_FALSE(portal->sample_le(Vec2(0.5f), Vec2(0.5f), test::wavelengths(), 0.f));
 }
 
 }  // namespace

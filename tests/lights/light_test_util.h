@@ -4,6 +4,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -59,6 +60,45 @@ float sample_luminance(const LightT& light, const LightSampleContext& ctx, Vec2 
     auto s = light.sample_li(ctx, u, l);
     return s ? s->L : SampledSpectrum(0.f);
   });
+}
+
+// What the rays of Light::sample_le carry, for bidirectional path tracing: the mean over
+// `count` samples of grey(L) |cos| / (pdf_pos pdf_dir), an estimate of the light's power in
+// the units of Light::power() (grey: the value relative to a white emission of 1), with its
+// standard error. Each sample's densities are also checked against pdf_le for the same ray
+// (when check_pdf_le), and each sample by `check`.
+struct LeEstimate {
+  double power = 0, std_error = 0;
+  int samples = 0;  // sample_le returned a ray
+};
+template <typename Check>
+LeEstimate sample_le_power(const Light& light, int count, uint32_t seed, bool check_pdf_le, Check&& check) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u01(0.f, 0x1.fffffep-1f);
+  const SampledWavelengths lambda = test::wavelengths();
+  const float white = test::emission(1.f, lambda)[1];
+  double sum = 0, sum2 = 0;
+  LeEstimate e;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 u1(u01(rng), u01(rng)), u2(u01(rng), u01(rng));
+    const std::optional<LightLeSample> s = light.sample_le(u1, u2, lambda, 0.f);
+    if (!s) continue;
+    ++e.samples;
+    EXPECT_NEAR(glm::length(s->ray.d), 1.f, 1e-5f);
+    const float cos = s->n != Vec3(0.f) ? std::abs(glm::dot(s->n, s->ray.d)) : 1.f;
+    const double x = double(s->L[1] / white) * cos / (double(s->pdf_pos) * s->pdf_dir);
+    sum += x;
+    sum2 += x * x;
+    if (check_pdf_le) {
+      float pos = -1.f, dir = -1.f;
+      light.pdf_le(s->ray.o, s->n, s->ray.d, &pos, &dir);
+      EXPECT_NEAR(dir, s->pdf_dir, 1e-4f * s->pdf_dir) << "sample " << i;
+    }
+    check(*s);
+  }
+  e.power = sum / count;
+  e.std_error = std::sqrt(std::max(0.0, sum2 / count - e.power * e.power) / (count - 1));
+  return e;
 }
 
 // Uniform floats in [0, 1) from a fixed seed: every run sees the same numbers.

@@ -71,5 +71,21 @@ TEST(PointLight, NegativeIntensityIsAnError) {
   EXPECT_THROW(make_point({float_param("scale", -1)}), SceneError);
 }
 
+// Light paths: sample_le's rays from the point carry 4 pi I in total, uniformly over the sphere
+// (every sample estimates it exactly), with the densities pdf_le gives.
+TEST(PointLight, SampleLeRaysCarryThePower) {
+  auto light = make_point({rgb_param("I", 3, 3, 3), point_param("from", 1, 2, 3)});
+  Vec3 mean_dir(0.f);
+  const LeEstimate e = sample_le_power(*light, 4000, 5, true, [&](const LightLeSample& s) {
+    EXPECT_EQ(s.ray.o, Vec3(1, 2, 3));
+    EXPECT_EQ(s.pdf_pos, 1.f);
+    mean_dir += s.ray.d / 4000.f;
+  });
+  EXPECT_EQ(e.samples, 4000);
+  EXPECT_NEAR(e.power, 4 * kPi * 3, 1e-3);
+  EXPECT_NEAR(e.power, light->power(), 1e-3);
+  EXPECT_LT(glm::length(mean_dir), 5 * std::sqrt(1.0 / 3 / 4000) * std::sqrt(3.0));  // isotropic: about 0
+}
+
 }  // namespace
 }  // namespace eyetrace

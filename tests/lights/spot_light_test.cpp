@@ -114,5 +114,21 @@ TEST(SpotLight, DeltaLargerThanConeWarnsAndFallsOffFromTheAxis) {
   EXPECT_LT(i5, 1.f);
 }
 
+// Light paths: sample_le's rays stay in the cone and carry the spot's power (the closed form
+// checked above against a numerical integral), within 5 standard errors.
+TEST(SpotLight, SampleLeRaysCarryThePower) {
+  auto light = make_spot({rgb_param("I", 3, 3, 3), float_param("coneangle", 40), float_param("conedeltaangle", 15)},
+                         translate(Vec3(0, 3, 0)) * rotate(-90.f, Vec3(1, 0, 0)));
+  const float cos_cone = std::cos(radians(40.f));
+  const LeEstimate e = sample_le_power(*light, 20000, 6, true, [&](const LightLeSample& s) {
+    // Pointing along +y after the rotation (the default +z axis turned by -90 degrees about x).
+    EXPECT_GE(glm::dot(s.ray.d, Vec3(0, 1, 0)), cos_cone - 1e-5f);
+    EXPECT_NEAR(glm::distance(s.ray.o, Vec3(0, 3, 0)), 0.f, 1e-5f);
+  });
+  EXPECT_GT(e.samples, 19000);  // only the cone's rim, where the falloff is 0, returns nothing
+  EXPECT_NEAR(e.power, light->power(), 5 * e.std_error + 1e-6);
+  EXPECT_LT(e.std_error, 0.02 * light->power());
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -214,8 +214,11 @@ TEST(PbrtV4Reference, CameraShutterIntervalIsTheExposureTime) { expect_matches_p
 // Motion blur: a moving, growing sphere (an animated shape), a turning box (an animated
 // ObjectInstance) and a panning camera, with the shutter reaching past the end time.
 TEST(PbrtV4Reference, MotionBlurOfShapeInstanceAndCameraPastTheEndTime) { expect_matches_pbrt_v4("motion"); }
-// pbrt-v4's bidirectional path tracer against eyetrace's path tracer standing in for it.
+// pbrt-v4's bidirectional path tracer against eyetrace's (strategies with t >= 2 only: no
+// specular surface here, so the same image in expectation).
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
+// The same with light paths from a point, a spot and a distant light (Light::sample_le).
+TEST(PbrtV4Reference, BdptIntegratorWithPointSpotAndDistantLights) { expect_matches_pbrt_v4("bdpt-lights"); }
 // pbrt-v4's pmj02bn tables are not in the oracle's source snapshot (PROVENANCE): eyetrace's
 // pmj02bn render of the mix scene is compared with pbrt-v4's independent-sampler images of it.
 TEST(PbrtV4Reference, Pmj02bnSamplerOnTheMixScene) { expect_matches_pbrt_v4("mix-pmj02bn", nullptr, false, "mix"); }
