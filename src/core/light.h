@@ -24,6 +24,20 @@ struct LightLiSample {
   Vec3 p_light_error{0.f};  // rounding-error bound of p_light (area lights; zero for the others)
 };
 
+// A ray leaving a light (photon emission, pbrt-v4's LightLeSample): the radiance it carries,
+// the density of its origin (area measure; 1 for a point, 1 / (pi r^2) on the disc a distant
+// or infinite light shoots through) and of its direction (solid angle; 1 for a distant light's
+// single direction). n is the emitting surface's normal, zero where there is no surface.
+struct LightLeSample {
+  SampledSpectrum L{0.f};
+  Ray ray;
+  Vec3 n{0.f};
+  float pdf_pos = 0.f;
+  float pdf_dir = 0.f;
+  // The cosine that turns radiance into flux through the surface: 1 without a surface.
+  float abs_cos_theta(const Vec3& w) const { return n == Vec3(0.f) ? 1.f : std::abs(glm::dot(n, w)); }
+};
+
 class Light {
  public:
   virtual ~Light() = default;
@@ -38,6 +52,13 @@ class Light {
   }
   // Infinite lights: radiance carried by a ray that leaves the scene.
   virtual SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const { return SampledSpectrum(0.f); }
+  // Samples a ray leaving the light (photons): u1 and u2 pick its origin and direction.
+  // Empty when the sample carries nothing. Lights that cannot emit photons say so with
+  // emits_photons() and return nothing.
+  virtual std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const {
+    return std::nullopt;
+  }
+  virtual bool emits_photons() const { return false; }
   virtual bool is_delta() const = 0;
   virtual bool is_infinite() const { return false; }
   // Total emitted power (or a proportional estimate), for choosing lights proportionally.

@@ -38,24 +38,8 @@ const PluginSpec& bdpt_integrator_spec() {
   return spec;
 }
 
-const PluginSpec& sppm_integrator_spec() {
-  static const PluginSpec spec{
-      "Integrator",
-      "stochastic progressive photon mapping (pbrt-v4): rendered by `path`",
-      kDifference,
-      {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),
-       param::integer("photonsperiteration", -1).describe("checked, no effect (no photons are traced)"),
-       param::real("radius", 1).above(0).describe("checked, no effect"),
-       param::integer("seed", 0).describe("checked, no effect: the render's seed decides")}};
-  return spec;
-}
-
 std::unique_ptr<Integrator> create_bdpt_integrator(const IntegratorContext& ctx) {
   return make_stand_in(ctx, bdpt_integrator_spec(), "bdpt");
-}
-
-std::unique_ptr<Integrator> create_sppm_integrator(const IntegratorContext& ctx) {
-  return make_stand_in(ctx, sppm_integrator_spec(), "sppm");
 }
 
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 #include "scene/scene_files.h"
 
@@ -81,6 +82,39 @@ float DiffuseAreaLight::pdf_li(const LightSampleContext& ctx, const Vec3&, const
   if (!(cos_light > 0.f)) return 0.f;
   float pdf = dist2 / (area_ * cos_light);
   return std::isfinite(pdf) ? pdf : 0.f;
+}
+
+std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda,
+                                                         float time) const {
+  const ShapeSample ss = shape_.sample_area(u1);
+  if (!(ss.pdf_area > 0.f)) return std::nullopt;
+  if (!invisible_) {
+    TextureEvalContext tc;
+    tc.p = ss.p;
+    tc.n = ss.n;
+    tc.uv = ss.uv;
+    if (shape_.alpha_masked(tc)) return std::nullopt;
+  }
+  // Two-sided: the first half of u2.x picks the front, the second the back, each rescaled to
+  // [0, 1) so the hemisphere sample keeps its stratification.
+  bool back = false;
+  if (two_sided_) {
+    back = u2.x >= 0.5f;
+    u2.x = std::min(back ? 2.f * (u2.x - 0.5f) : 2.f * u2.x, kOneMinusEpsilon);
+  }
+  Vec3 w_local = sample_cosine_hemisphere(u2);
+  const float pdf_dir = cosine_hemisphere_pdf(w_local.z) * (two_sided_ ? 0.5f : 1.f);
+  if (!(pdf_dir > 0.f)) return std::nullopt;
+  if (back) w_local.z = -w_local.z;
+  const Vec3 w = Frame(ss.n).to_world(w_local);
+  LightLeSample s;
+  s.L = emitted(ss.n, ss.uv, w, lambda);
+  if (is_black(s.L)) return std::nullopt;
+  s.ray = spawn_ray(ss.p, ss.p_error, ss.n, w, time);
+  s.n = ss.n;
+  s.pdf_pos = ss.pdf_area;
+  s.pdf_dir = pdf_dir;
+  return s;
 }
 
 float DiffuseAreaLight::power() const { return (two_sided_ ? 2.f : 1.f) * kPi * std::max(area_, 0.f) * scale_ * mean_; }

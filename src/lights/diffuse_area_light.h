@@ -38,6 +38,10 @@ class DiffuseAreaLight : public Light {
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
   SampledSpectrum L(const SurfaceInteraction& hit, const Vec3& w, const SampledWavelengths& lambda) const override;
+  // The origin uniform by area, the direction cosine-distributed about the emitting side's
+  // normal (either side, half and half, when two-sided), as pbrt-v4.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  bool emits_photons() const override { return true; }
   bool is_delta() const override { return invisible_; }
   float power() const override;
 

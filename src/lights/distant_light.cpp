@@ -1,5 +1,6 @@
 #include "lights/distant_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -17,11 +18,26 @@ std::optional<LightLiSample> DistantLight::sample_li(const LightSampleContext& c
   return s;
 }
 
+std::optional<LightLeSample> DistantLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda,
+                                                     float time) const {
+  if (!(scene_radius_ > 0.f)) return std::nullopt;
+  const Frame frame(w_);
+  const Vec2 d = sample_uniform_disk_concentric(u1);
+  const Vec3 p_disk = scene_center_ + scene_radius_ * (d.x * frame.s + d.y * frame.t);
+  LightLeSample s;
+  s.L = L_.sample(lambda);
+  s.ray = Ray{p_disk + scene_radius_ * w_, -w_, kInfinity, time};
+  s.pdf_pos = 1.f / (kPi * scene_radius_ * scene_radius_);
+  s.pdf_dir = 1.f;
+  return s;
+}
+
 float DistantLight::power() const { return kPi * scene_radius_ * scene_radius_ * mean_; }
 
 void DistantLight::preprocess(const Bounds3& scene_bounds) {
   float r = scene_bounds.radius();
   scene_radius_ = std::isfinite(r) ? r : 0.f;
+  scene_center_ = scene_radius_ > 0.f ? scene_bounds.center() : Vec3(0.f);
 }
 
 const PluginSpec& distant_light_spec() {

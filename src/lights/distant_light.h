@@ -20,6 +20,10 @@ class DistantLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // Parallel rays through a disc of the scene's bounding radius, facing the light, outside the
+  // scene (as pbrt-v4).
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  bool emits_photons() const override { return true; }
   bool is_delta() const override { return true; }
   // The flux through the scene's bounding disc: pi r^2 L (0 before preprocess()).
   float power() const override;
@@ -32,6 +36,7 @@ class DistantLight : public Light {
   Spectrum L_;
   float mean_;  // of L_ as RGB: the light sampler's weight
   float scene_radius_ = 0.f;
+  Vec3 scene_center_{0.f};
 };
 
 const PluginSpec& distant_light_spec();

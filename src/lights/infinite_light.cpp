@@ -57,7 +57,25 @@ float UniformInfiniteLight::power() const {
   return portal_ ? kPi * portal_->area() * mean_ : 4.f * kPi * kPi * sqr(scene_radius_) * mean_;
 }
 
-void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) { scene_radius_ = scene_radius_of(scene_bounds); }
+void UniformInfiniteLight::preprocess(const Bounds3& scene_bounds) {
+  scene_radius_ = scene_radius_of(scene_bounds);
+  scene_center_ = scene_radius_ > 0.f ? scene_bounds.center() : Vec3(0.f);
+}
+
+std::optional<LightLeSample> UniformInfiniteLight::sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda,
+                                                             float time) const {
+  if (portal_ || !(scene_radius_ > 0.f)) return std::nullopt;
+  const Vec3 to_light = sample_uniform_sphere(u1);
+  const Frame frame(-to_light);
+  const Vec2 d = sample_uniform_disk_concentric(u2);
+  const Vec3 p_disk = scene_center_ + scene_radius_ * (d.x * frame.s + d.y * frame.t);
+  LightLeSample s;
+  s.L = L_.sample(lambda);
+  s.ray = Ray{p_disk + scene_radius_ * to_light, -to_light, kInfinity, time};
+  s.pdf_pos = 1.f / (kPi * scene_radius_ * scene_radius_);
+  s.pdf_dir = uniform_sphere_pdf();
+  return s;
+}
 
 ImageInfiniteLight::ImageInfiniteLight(EnvironmentMap map, const Transform& world_from_light, float scale,
                                        std::optional<Portal> portal)

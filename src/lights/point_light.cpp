@@ -1,5 +1,6 @@
 #include "lights/point_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -15,6 +16,15 @@ std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext& ctx
   s.wi = d / std::sqrt(dist2);
   s.pdf = 1.f;
   s.p_light = p_;
+  return s;
+}
+
+std::optional<LightLeSample> PointLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda, float time) const {
+  LightLeSample s;
+  s.L = I_.sample(lambda);
+  s.ray = Ray{p_, sample_uniform_sphere(u1), kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_sphere_pdf();
   return s;
 }
 

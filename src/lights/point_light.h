@@ -19,6 +19,9 @@ class PointLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // Uniformly over the sphere of directions (as pbrt-v4).
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  bool emits_photons() const override { return true; }
   bool is_delta() const override { return true; }
   float power() const override { return power_; }
 

@@ -1,5 +1,6 @@
 #include "lights/spot_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_params.h"
 
 namespace eyetrace {
@@ -18,6 +19,7 @@ SpotLight::SpotLight(const Transform& world_from_light, const Vec3& from, const 
     : light_from_world_(world_from_light.inverse()),
       p_(world_from_light.point(from)),
       axis_light_(glm::normalize(to - from)),
+      axis_world_(glm::normalize(world_from_light.vector(to - from))),
       I_(I),
       mean_(channel_mean(I)),
       cos_falloff_start_(std::cos(radians(falloff_start_deg))),
@@ -44,6 +46,17 @@ std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext& ctx,
   s.wi = wi;
   s.pdf = 1.f;
   s.p_light = p_;
+  return s;
+}
+
+std::optional<LightLeSample> SpotLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda, float time) const {
+  const Vec3 w = Frame(axis_world_).to_world(sample_uniform_cone(u1, cos_falloff_end_));
+  LightLeSample s;
+  s.L = intensity(w, lambda);
+  if (is_black(s.L)) return std::nullopt;
+  s.ray = Ray{p_, w, kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_cone_pdf(cos_falloff_end_);
   return s;
 }
 

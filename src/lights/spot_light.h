@@ -25,6 +25,10 @@ class SpotLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // Uniformly within the cone of "coneangle" about the axis (as pbrt-v4; the cone is taken in
+  // world space, exact unless the light's transform scales unevenly).
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  bool emits_photons() const override { return true; }
   bool is_delta() const override { return true; }
   float power() const override;
 
@@ -36,6 +40,7 @@ class SpotLight : public Light {
   Transform light_from_world_;
   Vec3 p_;           // world position
   Vec3 axis_light_;  // unit axis in light space
+  Vec3 axis_world_;  // unit axis in world space
   Spectrum I_;
   float mean_;  // of I_ as RGB: the light sampler's weight
   float cos_falloff_start_, cos_falloff_end_;

@@ -1,7 +1,7 @@
-// pbrt-v4's "bdpt" and "sppm", rendered by the path tracer: the camera inside a closed, two-sided
+// pbrt-v4's "bdpt", rendered by the path tracer: the camera inside a closed, two-sided
 // emitting diffuse sphere (radiance Le, albedo a) sees exactly Le (1 + a + ... + a^d) after d
-// bounces, whatever the estimator, so each integrator's "maxdepth" is checked against that
-// sum; their own parameters are checked as pbrt-v4 checks them.
+// bounces, whatever the estimator, so its "maxdepth" is checked against that sum; its own
+// parameters are checked as pbrt-v4 checks them. ("sppm" is tested in sppm_integrator_test.cpp.)
 #include <gtest/gtest.h>
 
 #include "../support/render_text.h"
@@ -36,16 +36,8 @@ TEST(PathStandIns, BdptHonoursMaxdepth) {
   EXPECT_NEAR(test::image_mean(test::render_text(emitting_sphere("\"bdpt\""))), 1.96875, 0.03);  // default 5
 }
 
-TEST(PathStandIns, SppmHonoursMaxdepthAndAcceptsItsParameters) {
-  const std::string sppm = "\"sppm\" \"integer maxdepth\" 3 \"float radius\" 0.02 \"integer photonsperiteration\" 1000";
-  EXPECT_NEAR(test::image_mean(test::render_text(emitting_sphere(sppm))), 1.875, 0.03);
-}
-
 TEST(PathStandIns, BadParametersAreNamed) {
-  std::string e = error_of("\"sppm\" \"float radius\" -1");
-  EXPECT_NE(e.find("standin.pbrt:6:"), std::string::npos) << e;
-  EXPECT_NE(e.find("radius"), std::string::npos) << e;
-  e = error_of("\"bdpt\" \"float rrthreshold\" 0.5");  // pbrt-v4's bdpt has no such parameter
+  std::string e = error_of("\"bdpt\" \"float rrthreshold\" 0.5");  // pbrt-v4's bdpt has no such parameter
   EXPECT_NE(e.find("rrthreshold"), std::string::npos) << e;
   e = error_of("\"bdpt\" \"integer maxdepth\" -1");
   EXPECT_NE(e.find("maxdepth"), std::string::npos) << e;

@@ -245,5 +245,29 @@ TEST(DiffuseAreaLight, BadParametersAreErrors) {
   EXPECT_THROW(make_area(square, {float_param("power", 0)}), SceneError);
 }
 
+// Photons (sample_le) leave the emitter's surface, on its emitting side unless two-sided, and
+// carry on average its power: pi A L one-sided, 2 pi A L two-sided (Lambertian emission over a
+// hemisphere, once or twice). 4 standard errors.
+TEST(DiffuseAreaLight, PhotonsLeaveTheEmittingSideCarryingPiAL) {
+  FakeSquare square(0.5f, 2.f);  // area 1, normal -z
+  const SampledWavelengths lambda = test::wavelengths();
+  const float L = test::emission(RGB(2), lambda)[0];
+  for (bool two_sided : {false, true}) {
+    auto light = make_area(square, {rgb_param("L", 2, 2, 2), bool_param("twosided", two_sided)});
+    int back = 0;
+    const int n = 20000;
+    const FluxEstimate flux = photon_flux(*light, lambda, L, n, 13, [&](const LightLeSample& s) {
+      EXPECT_NEAR(s.ray.o.z, 2.f, 1e-4f);
+      EXPECT_LE(std::max(std::abs(s.ray.o.x), std::abs(s.ray.o.y)), 0.5f + 1e-4f);
+      if (s.ray.d.z > 0.f) ++back;
+    });
+    EXPECT_NEAR(flux.mean, (two_sided ? 2 : 1) * kPiDouble, 4 * flux.std_error + 1e-6) << two_sided;
+    if (two_sided)
+      EXPECT_NEAR(back, n / 2, 4 * std::sqrt(n / 4.0));  // half the photons leave the back
+    else
+      EXPECT_EQ(back, 0);
+  }
+}
+
 }  // namespace
 }  // namespace eyetrace

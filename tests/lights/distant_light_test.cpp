@@ -75,5 +75,27 @@ TEST(DistantLight, CoincidentFromAndToIsAnError) {
   }
 }
 
+// Photons (sample_le): parallel rays along the light's direction, starting outside the scene's
+// bounding sphere and aimed within its radius of the centre, carrying the flux through the
+// bounding disc, pi r^2 L, each exactly.
+TEST(DistantLight, PhotonsCrossTheSceneDiscCarryingPiRSquaredL) {
+  auto light = make_distant({rgb_param("L", 3, 3, 3), point_param("from", 0, 0, 0), point_param("to", 1, 2, 2)});
+  Bounds3 b;
+  b.extend(Vec3(-1, 0, 2));
+  b.extend(Vec3(3, 2, 6));
+  light->preprocess(b);
+  const Vec3 c = b.center(), w = glm::normalize(Vec3(1, 2, 2));
+  const float r = b.radius();
+  const SampledWavelengths lambda = test::wavelengths();
+  const FluxEstimate flux =
+      photon_flux(*light, lambda, test::emission(RGB(3), lambda)[0], 5000, 5, [&](const LightLeSample& s) {
+        EXPECT_NEAR(glm::dot(s.ray.d, w), 1.f, 1e-6f);
+        EXPECT_GE(glm::distance(s.ray.o, c), r * (1.f - 1e-5f));
+        const Vec3 to_c = c - s.ray.o;
+        EXPECT_LE(glm::length(to_c - glm::dot(to_c, w) * w), r * (1.f + 1e-5f));  // passes within r
+      });
+  EXPECT_NEAR(flux.mean, kPiDouble * r * r, 1e-4 * kPiDouble * r * r);
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -423,5 +423,32 @@ TEST(InfiniteLightPortal, APortalThatIsNotARectangleIsAnErrorNamingIt) {
   }
 }
 
+// Photons (sample_le) of a constant sky: rays from outside the bounding sphere aimed within its
+// radius of the centre; their mean flux is the sky's through the bounding disc from every
+// direction, 4 pi * pi r^2 L (each photon exactly). A sky seen through a portal emits none.
+TEST(InfiniteLight, ConstantSkyPhotonsCarryFourPiTimesPiRSquaredL) {
+  auto light = make_infinite({rgb_param("L", 0.5, 0.5, 0.5)});
+  Bounds3 b;
+  b.extend(Vec3(-2, -1, 0));
+  b.extend(Vec3(2, 1, 4));
+  light->preprocess(b);
+  const Vec3 c = b.center();
+  const float r = b.radius();
+  const SampledWavelengths lambda = test::wavelengths();
+  Vec3 mean_dir(0.f);
+  const int n = 20000;
+  const FluxEstimate flux =
+      photon_flux(*light, lambda, test::emission(RGB(0.5), lambda)[0], n, 3, [&](const LightLeSample& s) {
+        EXPECT_GE(glm::distance(s.ray.o, c), r * (1.f - 1e-5f));
+        const Vec3 to_c = c - s.ray.o;
+        EXPECT_LE(glm::length(to_c - glm::dot(to_c, s.ray.d) * s.ray.d), r * (1.f + 1e-5f));
+        mean_dir += s.ray.d / float(n);
+      });
+  EXPECT_NEAR(flux.mean, 4 * kPiDouble * kPiDouble * r * r, 1e-4 * 4 * kPiDouble * kPiDouble * r * r);
+  EXPECT_LT(glm::length(mean_dir), 4.f * std::sqrt(3.f / (3.f * n)));
+  EXPECT_TRUE(light->emits_photons());
+  EXPECT_FALSE(make_infinite({square_portal(1, 2)})->emits_photons());
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -71,5 +71,24 @@ TEST(PointLight, NegativeIntensityIsAnError) {
   EXPECT_THROW(make_point({float_param("scale", -1)}), SceneError);
 }
 
+// Photons (sample_le): every ray leaves "from", directions uniform over the sphere (their mean
+// is 0 within 4 standard errors, each component's variance being 1/3), and each photon carries
+// exactly the power 4 pi I.
+TEST(PointLight, PhotonsLeaveFromTheLightUniformlyCarryingFourPiI) {
+  auto light = make_point({rgb_param("I", 2, 3, 4), point_param("from", 1, 2, 3)});
+  const SampledWavelengths lambda = test::wavelengths();
+  const float I = test::emission(RGB(2, 3, 4), lambda)[0];
+  const int n = 20000;
+  Vec3 mean_dir(0.f);
+  const FluxEstimate flux = photon_flux(*light, lambda, I, n, 7, [&](const LightLeSample& s) {
+    EXPECT_NEAR(glm::distance(s.ray.o, Vec3(1, 2, 3)), 0.f, 1e-6f);
+    EXPECT_NEAR(glm::length(s.ray.d), 1.f, 1e-5f);
+    mean_dir += s.ray.d / float(n);
+  });
+  EXPECT_NEAR(flux.mean, 4.0 * kPiDouble, 1e-4);
+  EXPECT_LT(flux.std_error, 1e-5);
+  EXPECT_LT(glm::length(mean_dir), 4.f * std::sqrt(3.f / (3.f * n)));
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -114,5 +114,23 @@ TEST(SpotLight, DeltaLargerThanConeWarnsAndFallsOffFromTheAxis) {
   EXPECT_LT(i5, 1.f);
 }
 
+// Photons (sample_le) leave the apex within the cone, and carry on average the spot's power:
+// I times the cone's solid angle with the smoothstep falloff counting half its band,
+// 2 pi (1 - (cos 20 + cos 30) / 2) (the smoothstep is symmetric about the band's middle). 4
+// standard errors.
+TEST(SpotLight, PhotonsStayInTheConeAndCarryItsPower) {
+  auto light = make_spot({rgb_param("I", 5, 5, 5), point_param("from", 1, 1, 0), point_param("to", 1, 1, 2),
+                          float_param("coneangle", 30), float_param("conedeltaangle", 10)});
+  const SampledWavelengths lambda = test::wavelengths();
+  const float I = test::emission(RGB(5), lambda)[0];
+  const double cos30 = std::cos(kPiDouble / 6), cos20 = std::cos(kPiDouble / 9);
+  const FluxEstimate flux = photon_flux(*light, lambda, I, 40000, 11, [&](const LightLeSample& s) {
+    EXPECT_NEAR(glm::distance(s.ray.o, Vec3(1, 1, 0)), 0.f, 1e-6f);
+    EXPECT_GE(s.ray.d.z, float(cos30) - 1e-5f);
+  });
+  const double expected = 2 * kPiDouble * (1 - 0.5 * (cos20 + cos30));
+  EXPECT_NEAR(flux.mean, expected, 4 * flux.std_error + 1e-6);
+}
+
 }  // namespace
 }  // namespace eyetrace
