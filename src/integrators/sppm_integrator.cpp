@@ -427,7 +427,8 @@ const PluginSpec& sppm_integrator_spec() {
       "image or portal infinite lights (each refused with an error). Photons draw from their own random "
       "streams (splitmix64 from `seed`), not pbrt-v4's scrambled Halton points; the camera pass uses "
       "eyetrace's power light sampler (pbrt-v4: its BVH sampler); photons deposit only on surfaces with a "
-      "material.",
+      "material; a visible point enters each grid bucket once (pbrt-v4 lists it per cell, and a photon in a cell "
+      "whose bucket holds it twice counts twice). As pbrt-v4, the pixel filter's weight is ignored.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces of camera paths and photons"),
        param::integer("photonsperiteration", -1)
            .at_least(-1)
