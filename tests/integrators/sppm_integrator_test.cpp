@@ -74,6 +74,23 @@ TEST(SppmIntegrator, ClosedEmittingSphereGivesTheGeometricSeriesOfItsDepth) {
 // Hachisuka and Jensen (2009), eqs. 8 and 11 with gamma = 2/3, recomputed here from the photon
 // counts M the render recorded for one pixel: N_{i+1} = N_i + gamma M_i and
 // r_{i+1}^2 = r_i^2 (N_i + gamma M_i) / (N_i + M_i), from N_0 = 0 and r_0 = "radius".
+// The camera pass needs camera rays only, so an eye renders too: through the Navarro eye the
+// closed sphere's uniform radiance reaches the image centre with weight 1 (lens cameras
+// normalise relative illumination there), so the central pixels see the series as a pinhole's
+// do; the edges see less (vignetting and lost rays), never more, and nothing is non-finite.
+TEST(SppmIntegrator, RendersThroughAnEye) {
+  std::string text = emitting_sphere(kSppm);
+  text.replace(text.find("Camera \"perspective\" \"float fov\" 60"), 35, "Camera \"navarro\" \"float fov\" 30");
+  const Image im = render(text).image;
+  double centre = 0;
+  for (int y = 6; y < 10; ++y)
+    for (int x = 6; x < 10; ++x)
+      for (int c = 0; c < 3; ++c) centre += im.at(x, y, c) / 48.0;
+  EXPECT_NEAR(centre, 1.96875, 0.06);
+  EXPECT_LT(test::image_mean(im), 1.96875 + 0.03);
+  EXPECT_GT(test::image_mean(im), 0.5);
+}
+
 TEST(SppmIntegrator, RadiusShrinksByThePublishedRule) {
   const Rendered r =
       render(emitting_sphere("\"sppm\" \"float radius\" 0.5 \"integer photonsperiteration\" 4000"), 2, IVec2(7, 9));
