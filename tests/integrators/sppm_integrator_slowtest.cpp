@@ -102,7 +102,8 @@ TEST(SppmIntegrator, DiffuseBoxConvergesToThePathTracersMean) {
   const std::string box = read_scene("sppm-box.pbrt");
   const std::string sppm =
       with_line(box, "Integrator", "Integrator \"sppm\" \"float radius\" 0.1 \"integer photonsperiteration\" 20000");
-  const double reference = mean(render(with_line(box, "Integrator", "Integrator \"path\" \"integer maxdepth\" 5"), 4096));
+  const double reference =
+      mean(render(with_line(box, "Integrator", "Integrator \"path\" \"integer maxdepth\" 5"), 4096));
   for (int n : {3, 27, 243}) {
     const double m = mean(render(sppm, n));
     EXPECT_NEAR(m / reference, 1.0, 0.2 / std::sqrt(double(n))) << n << " iterations";
@@ -140,9 +141,10 @@ TEST(SppmIntegrator, CausticOfAPointLightCarriesThePowerPathFindsThroughASphereL
   const double sppm_point = masked(render(caustic, 81), mask);
   const double sppm_sphere = masked(render(sphere(caustic, 0.2), 81), mask);
   const double sppm_small = masked(render(sphere(caustic, 0.02), 81), mask);
-  std::printf("floor means: path point %.5f, path sphere 0.2 %.5f +- %.5f, sppm point %.5f, sppm sphere 0.2 %.5f, "
-              "sppm sphere 0.02 %.5f\n",
-              path_point, path_sphere.mean, path_sphere.std_error, sppm_point, sppm_sphere, sppm_small);
+  std::printf(
+      "floor means: path point %.5f, path sphere 0.2 %.5f +- %.5f, sppm point %.5f, sppm sphere 0.2 %.5f, "
+      "sppm sphere 0.02 %.5f\n",
+      path_point, path_sphere.mean, path_sphere.std_error, sppm_point, sppm_sphere, sppm_small);
   // The path tracer misses the caustic of the point light: about a tenth of the floor's light.
   EXPECT_GT(sppm_point, 1.06 * path_point);
   // Same sphere light, both estimators: path's standard error (4 of them) and SPPM's radius
