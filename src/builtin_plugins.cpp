@@ -11,7 +11,7 @@
 #include "filters/triangle_filter.h"
 #include "integrators/bdpt_integrator.h"
 #include "integrators/path_integrator.h"
-#include "integrators/path_stand_ins.h"
+#include "integrators/sppm_integrator.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
 #include "lights/goniometric_light.h"

@@ -37,6 +37,8 @@ struct LightLeSample {
   Vec2 uv{0.f};
   float pdf_pos = 0.f;
   float pdf_dir = 0.f;
+  // The cosine that turns radiance into flux through the surface: 1 without a surface.
+  float abs_cos_theta(const Vec3& w) const { return n == Vec3(0.f) ? 1.f : std::abs(glm::dot(n, w)); }
 };
 
 class Light {

@@ -337,8 +337,8 @@ const PluginSpec& bdpt_integrator_spec() {
       "bidirectional path tracing (pbrt-v4's algorithm and MIS weights), surfaces",
       "Strategies with t >= 2 camera vertices only: a light path is never connected to the camera lens, so a caustic "
       "of a point, spot or distant light on a diffuse surface seen directly is missed (as by `path`). "
-      "Scenes with participating media are rendered by `volpath`, with a warning. Infinite lights with a portal "
-      "are refused. Rough refraction at light-path vertices takes the adjoint BSDF by reversing the pair.",
+      "Scenes with participating media are rendered by `volpath`, with a warning. Infinite lights with a portal, "
+      "goniometric and projection lights are refused. Rough refraction at light-path vertices takes the adjoint BSDF by reversing the pair.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),
        param::boolean("regularize", false).describe("`true` warns and is ignored"),
        param::boolean("visualizestrategies", false).describe("`true` warns and is ignored"),
@@ -360,7 +360,7 @@ std::unique_ptr<Integrator> create_bdpt_integrator(const IntegratorContext& ctx)
     if (!light->emits_rays())
       throw SceneError(Diagnostic{p.loc(), "", Severity::Error,
                                   "integrator \"bdpt\" cannot start light paths from an infinite light seen through a "
-                                  "portal; use \"path\" or \"volpath\""});
+                                  "portal, a goniometric or a projection light; use \"path\" or \"volpath\""});
   return std::make_unique<BdptIntegrator>(ctx.scene, max_depth);
 }
 

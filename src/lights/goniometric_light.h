@@ -27,6 +27,8 @@ class GoniometricLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
+  // No sample_le yet: bdpt and sppm refuse a scene with this light (path and volpath render it).
+  bool emits_rays() const override { return false; }
   bool is_delta() const override { return true; }
   float power() const override;
 

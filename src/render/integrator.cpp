@@ -13,22 +13,7 @@
 
 namespace eyetrace {
 
-namespace {
-
-struct ThreadState {
-  std::unique_ptr<Sampler> sampler;
-  ScratchBuffer arena;
-};
-
-// The sampler dimensions a camera sample takes: pixel 2-D, lens 2-D, time, wavelength.
-// The integrator restarts the sample's stream here after generating the camera rays.
-constexpr int kCameraDimensions = 6;
-// Camera rays generated together: lens cameras trace a batch at once (Camera::generate_rays),
-// which hides the latency of their dependent surface-by-surface arithmetic.
-constexpr int kCameraBatch = 16;
-
-// The camera dimensions of one sample: the film position is drawn first so that samplers can
-// stratify it.
+// The film position is drawn first so that samplers can stratify it.
 CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index) {
   sampler.start_pixel_sample(pixel, index);
   FilterSample fs = film.filter().sample(sampler.get_pixel_2d());
@@ -42,6 +27,17 @@ CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel,
   cs.filter_offset = fs.offset;
   return cs;
 }
+
+namespace {
+
+struct ThreadState {
+  std::unique_ptr<Sampler> sampler;
+  ScratchBuffer arena;
+};
+
+// Camera rays generated together: lens cameras trace a batch at once (Camera::generate_rays),
+// which hides the latency of their dependent surface-by-surface arithmetic.
+constexpr int kCameraBatch = 16;
 
 // Collects camera samples in the order the tile loop makes them and, per batch, generates
 // their rays together and integrates each in the same order: the image is bit for bit the

@@ -72,6 +72,11 @@ struct RenderOptions {
   RenderGroup* group = nullptr;
 };
 
+// The camera dimensions of one sample (pixel 2-D, lens 2-D, time, wavelength), drawn at the
+// start of sample `index` of `pixel`; the integrator continues at dimension kCameraDimensions.
+inline constexpr int kCameraDimensions = 6;
+CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index);
+
 class Integrator {
  public:
   explicit Integrator(const Scene& scene) : scene_(scene) {}
@@ -84,9 +89,11 @@ class Integrator {
                                    RayTally& tally, VisibleSurface* visible = nullptr) const = 0;
   virtual std::string to_string() const = 0;
 
-  // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel.
-  void render(const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts,
-              RenderCounters& counters) const;
+  // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel. Virtual for
+  // integrators that need a loop of their own (sppm: camera and photon passes per iteration);
+  // the others take the tile loop defined here.
+  virtual void render(const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts,
+                      RenderCounters& counters) const;
 
  protected:
   const Scene& scene_;

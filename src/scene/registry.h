@@ -98,6 +98,7 @@ struct MediumContext {
 struct IntegratorContext {
   const ParameterList& params;
   const Scene& scene;
+  uint64_t seed = 0;  // the render's seed (--seed or Option "seed"): pbrt-v4's default for sppm's "seed"
 };
 
 using CameraFactory = std::function<std::unique_ptr<Camera>(const CameraContext&)>;

@@ -587,10 +587,12 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   check_memory(f, o);
   setup.output_filename = f.filename;
   attempt([&] { setup.camera = make_camera(desc, o, f.resolution); });
+  uint64_t render_seed = 0;
   attempt([&] {
     const SceneEntity& s = desc.sampler;
     std::optional<uint64_t> option_seed = apply_options(desc);
-    SamplerContext sctx{s.params, f.resolution, o.spp, o.seed.value_or(option_seed.value_or(0))};
+    render_seed = o.seed.value_or(option_seed.value_or(0));
+    SamplerContext sctx{s.params, f.resolution, o.spp, render_seed};
     setup.sampler = reg.samplers.at(s.name, s.loc)(sctx);
   });
   attempt([&] {
@@ -605,7 +607,7 @@ RenderSetup build_render_setup(const SceneDescription& desc, const RenderOverrid
   const SceneEntity& in = desc.integrator;
   if (attempt([&] { Builder(desc, setup, o.keep_going).build_world(); }))
     attempt([&] {
-      IntegratorContext ictx{in.params, *setup.scene};
+      IntegratorContext ictx{in.params, *setup.scene, render_seed};
       setup.integrator = reg.integrators.at(in.name, in.loc)(ictx);
       // As pbrt-v4 warns: only volpath traces media (bdpt hands such scenes to volpath and says so).
       if (setup.scene->has_media() && in.name != "volpath" && in.name != "bdpt")
