@@ -338,7 +338,8 @@ const PluginSpec& bdpt_integrator_spec() {
       "Strategies with t >= 2 camera vertices only: a light path is never connected to the camera lens, so a caustic "
       "of a point, spot or distant light on a diffuse surface seen directly is missed (as by `path`). "
       "Scenes with participating media are rendered by `volpath`, with a warning. Infinite lights with a portal, "
-      "goniometric and projection lights are refused. Rough refraction at light-path vertices takes the adjoint BSDF by reversing the pair.",
+      "goniometric and projection lights are refused. Rough refraction at light-path vertices takes the adjoint BSDF "
+      "by reversing the pair.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),
        param::boolean("regularize", false).describe("`true` warns and is ignored"),
        param::boolean("visualizestrategies", false).describe("`true` warns and is ignored"),

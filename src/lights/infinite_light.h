@@ -32,11 +32,6 @@ class UniformInfiniteLight : public Light {
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext& ctx, const Vec3& wi, const SurfaceInteraction* hit) const override;
   SampledSpectrum Le(const Ray& ray, const SampledWavelengths& lambda) const override;
-  // Without a portal: a direction uniform over the sphere, the origin uniform on the disc of
-  // the scene's bounding radius facing it, outside the scene (as pbrt-v4). A portal's light
-  // emits no photons (emits_photons() false).
-  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
-  bool emits_photons() const override { return !portal_; }
   bool is_delta() const override { return false; }
   bool is_infinite() const override { return true; }
   // Light paths (pbrt-v4): a direction by sample_li's density and a uniform point of the disc

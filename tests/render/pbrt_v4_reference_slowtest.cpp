@@ -4,11 +4,11 @@
 // textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
 // maxcomponentvalue, the gbuffer film's channels, motion blur, the grid media uniformgrid,
 // cloud, rgbgrid and nanovdb, the orthographic and spherical cameras, the sinc filter, the
-// goniometric and projection lights, the bdpt and sppm integrators) is rendered here by eyetrace with two seeds and compared
-// with the two images pbrt-v4 rendered of the same scene text with two seeds
-// (tests/data/pbrt-v4/PROVENANCE: pbrt-v4's commit, build and command). The scenes name
-// everything whose default could differ (box pixel filter, the independent sampler, the path
-// integrator and its depth, rgb film at ISO 100 and 1 s unless the scene is about the film, fp32).
+// goniometric and projection lights, the bdpt and sppm integrators) is rendered here by eyetrace with two seeds and
+// compared with the two images pbrt-v4 rendered of the same scene text with two seeds (tests/data/pbrt-v4/PROVENANCE:
+// pbrt-v4's commit, build and command). The scenes name everything whose default could differ (box pixel filter, the
+// independent sampler, the path integrator and its depth, rgb film at ISO 100 and 1 s unless the scene is about the
+// film, fp32).
 //
 // Two assertions per scene:
 // - Each channel's image mean is within 1 % of pbrt-v4's (the tolerance; the means'
