@@ -424,7 +424,7 @@ const PluginSpec& sppm_integrator_spec() {
       "the lights, with a shrinking gather radius (pbrt-v4's sppm)",
       "The iterations are the sampler's samples per pixel, as in pbrt-v4. Not with `--adaptive`, `--resume`, "
       "`--checkpoint`, several MPI processes, participating media, motion, the spectral or gbuffer film, or "
-      "infinite lights with a portal, goniometric or projection lights (each refused with an error). Photons draw from "
+      "infinite lights with a portal (each refused with an error). Photons draw from "
       "their own random "
       "streams (splitmix64 from `seed`), not pbrt-v4's scrambled Halton points; the camera pass uses "
       "eyetrace's power light sampler (pbrt-v4: its BVH sampler); photons deposit only on surfaces with a "
@@ -448,10 +448,7 @@ std::unique_ptr<Integrator> create_sppm_integrator(const IntegratorContext& ctx)
   if (ctx.scene.has_media()) refuse("participating media (render them with \"volpath\")");
   if (ctx.scene.has_motion()) refuse("motion (ActiveTransform, TransformTimes)");
   for (const Light* light : ctx.scene.lights())
-    if (!light->emits_rays())
-      refuse(
-          "lights that cannot start light paths: \"infinite\" lights with a portal, \"goniometric\" and \"projection\" "
-          "lights");
+    if (!light->emits_rays()) refuse("lights that cannot start light paths: \"infinite\" lights with a portal");
   SppmOptions o;
   o.max_depth = p.get_int("maxdepth");
   o.photons_per_iteration = p.get_int("photonsperiteration");

@@ -2,6 +2,7 @@
 
 #include <numeric>
 
+#include "core/sampling.h"
 #include "lights/light_image.h"
 #include "lights/light_params.h"
 #include "lights/sphere_mapping.h"
@@ -53,6 +54,24 @@ std::optional<LightLiSample> GoniometricLight::sample_li(const LightSampleContex
   s.pdf = 1.f;
   s.p_light = p_;
   return s;
+}
+
+std::optional<LightLeSample> GoniometricLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda,
+                                                         float time) const {
+  const Vec3 w = sample_uniform_sphere(u1);
+  const SampledSpectrum I = intensity(w, lambda);
+  if (is_black(I)) return std::nullopt;
+  LightLeSample s;
+  s.L = I;
+  s.ray = Ray{p_, w, kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_sphere_pdf();
+  return s;
+}
+
+void GoniometricLight::pdf_le(const Vec3&, const Vec3&, const Vec3&, float* pdf_pos, float* pdf_dir) const {
+  *pdf_pos = 0.f;  // a point: no other position could have been sampled (pbrt-v4)
+  *pdf_dir = uniform_sphere_pdf();
 }
 
 // pbrt-v4's Phi: 4 pi I times the diagram's mean (equal-area pixels).

@@ -27,8 +27,10 @@ class GoniometricLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
-  // No sample_le yet: bdpt and sppm refuse a scene with this light (path and volpath render it).
-  bool emits_rays() const override { return false; }
+  // Light paths leave uniformly over the sphere, as pbrt-v4's; a direction where the diagram is
+  // zero gives no ray.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
   bool is_delta() const override { return true; }
   float power() const override;
 

@@ -1,5 +1,6 @@
 #include "lights/projection_light.h"
 
+#include "core/sampling.h"
 #include "lights/light_image.h"
 #include "lights/light_params.h"
 
@@ -13,10 +14,12 @@ Vec2 ProjectionLight::half_extent(int width, int height, float fov_deg) {
 }
 
 ProjectionLight::ProjectionLight(const Transform& world_from_light, RGBImage image, float fov_deg, float scale)
-    : light_from_world_(world_from_light.inverse()),
+    : world_from_light_(world_from_light),
+      light_from_world_(world_from_light.inverse()),
       p_(world_from_light.point(Vec3(0.f))),
       image_(std::move(image)),
       half_(half_extent(image_.width, image_.height, fov_deg)),
+      cos_max_(1.f / std::sqrt(1.f + half_.x * half_.x + half_.y * half_.y)),
       scale_(scale) {
   power_rgb_ = scale_ * integrate_over_pixels(image_.width, image_.height, fov_deg,
                                               [&](int x, int y) { return image_.at(x, y); });
@@ -49,6 +52,28 @@ std::optional<LightLiSample> ProjectionLight::sample_li(const LightSampleContext
   s.pdf = 1.f;
   s.p_light = p_;
   return s;
+}
+
+std::optional<LightLeSample> ProjectionLight::sample_le(Vec2 u1, Vec2, const SampledWavelengths& lambda,
+                                                        float time) const {
+  const Vec3 w = world_from_light_.vector(sample_uniform_cone(u1, cos_max_));
+  const float len = glm::length(w);
+  if (!(len > 0.f) || !std::isfinite(len)) return std::nullopt;
+  const RGB I = intensity_rgb(w);
+  if (I == RGB(0.f)) return std::nullopt;
+  LightLeSample s;
+  s.L = rgb_emission(I, lambda);
+  s.ray = Ray{p_, w / len, kInfinity, time};
+  s.pdf_pos = 1.f;
+  s.pdf_dir = uniform_cone_pdf(cos_max_);
+  return s;
+}
+
+void ProjectionLight::pdf_le(const Vec3&, const Vec3&, const Vec3& w, float* pdf_pos, float* pdf_dir) const {
+  *pdf_pos = 0.f;  // a point: no other position could have been sampled (pbrt-v4)
+  const Vec3 wl = light_from_world_.vector(w);
+  const float len = glm::length(wl);
+  *pdf_dir = len > 0.f && wl.z / len >= cos_max_ ? uniform_cone_pdf(cos_max_) : 0.f;
 }
 
 // The light sampler's weight: pbrt-v4's Phi, averaged over the channels.

@@ -24,8 +24,11 @@ class ProjectionLight : public Light {
   std::optional<LightLiSample> sample_li(const LightSampleContext& ctx, Vec2 u,
                                          const SampledWavelengths& lambda) const override;
   float pdf_li(const LightSampleContext&, const Vec3&, const SurfaceInteraction*) const override { return 0.f; }
-  // No sample_le yet: bdpt and sppm refuse a scene with this light (path and volpath render it).
-  bool emits_rays() const override { return false; }
+  // Light paths leave uniformly within the cone about the light's +z that holds the image's
+  // frustum (its corners on the cone's rim); directions outside the image give no ray. The
+  // density is the light frame's: exact when the CTM turns and scales evenly, as the spot light's.
+  std::optional<LightLeSample> sample_le(Vec2 u1, Vec2 u2, const SampledWavelengths& lambda, float time) const override;
+  void pdf_le(const Vec3& p, const Vec3& n, const Vec3& w, float* pdf_pos, float* pdf_dir) const override;
   bool is_delta() const override { return true; }
   float power() const override;
 
@@ -43,10 +46,11 @@ class ProjectionLight : public Light {
   static auto integrate_over_pixels(int width, int height, float fov_deg, F&& f);
 
  private:
-  Transform light_from_world_;
+  Transform world_from_light_, light_from_world_;
   Vec3 p_;
   RGBImage image_;
-  Vec2 half_;  // half extents on z = 1
+  Vec2 half_;      // half extents on z = 1
+  float cos_max_;  // the cone of light paths: cos of the angle from +z to the image's corners
   float scale_;
   RGB power_rgb_;
 };

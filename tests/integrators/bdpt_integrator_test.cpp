@@ -192,6 +192,18 @@ TEST(BdptIntegrator, EqualsPathWithSpotDistantAndInfiniteLights) {
       false);
 }
 
+// Light paths from the image lights: the goniometric light's uniform directions and the
+// projection light's cone around its frustum (tests/data/pbrt-v4's light images).
+TEST(BdptIntegrator, EqualsPathWithGoniometricAndProjectionLights) {
+  const std::string data = EYETRACE_SOURCE_DIR "/tests/data/pbrt-v4/";
+  expect_same_as_path(
+      "AttributeBegin\nTranslate 0.5 0.8 0.5\nLightSource \"goniometric\" \"string filename\" \"" + data +
+          "goniometric.exr\" \"float power\" 3\nAttributeEnd\n"
+          "AttributeBegin\nTranslate 0.3 0.9 0.4\nRotate 90 1 0 0\nLightSource \"projection\" \"string filename\" \"" +
+          data + "projection.png\" \"float fov\" 60 \"float power\" 2\nAttributeEnd",
+      false);
+}
+
 // The eye cameras have no importance function, but every strategy used needs only the camera's
 // ray: through the dispersive Navarro eye (spectral MIS over four wavelengths per sample) bdpt
 // still equals path.

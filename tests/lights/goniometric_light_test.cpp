@@ -142,6 +142,20 @@ void expect_error(std::vector<Param> ps, const std::vector<std::string>& mention
   }
 }
 
+// Light paths (bdpt, sppm): sample_le's rays leave the light's position and carry its power
+// (the diagram integrated over the sphere, checked above), within 5 standard errors; pdf_le
+// gives each ray's density.
+TEST(GoniometricLight, SampleLeRaysCarryThePower) {
+  const Transform world_from_light = translate(Vec3(1, -2, 0.5)) * rotate(40, glm::normalize(Vec3(1, 2, 0.5)));
+  auto light = make_light({string_param("filename", diagram_file()), float_param("power", 100)}, world_from_light);
+  const LeEstimate e = sample_le_power(*light, 40000, 7, true, [&](const LightLeSample& s) {
+    EXPECT_NEAR(glm::distance(s.ray.o, Vec3(1, -2, 0.5)), 0.f, 1e-5f);
+    EXPECT_GT(as_gonio(light).diagram_value(s.ray.d), 0.f);
+  });
+  EXPECT_NEAR(e.power, light->power(), 5 * e.std_error);
+  EXPECT_LT(e.std_error, 0.02 * light->power());
+}
+
 TEST(GoniometricLight, BadFilesAreErrorsNamingTheFileAndTheParameter) {
   expect_error({}, {"filename"});
   const std::string missing = scratch_path("no-such-diagram.exr");

@@ -115,33 +115,6 @@ class Uniform {
   std::mt19937 rng_;
 };
 
-// The flux sample_le's rays carry, per unit of the radiance or intensity `reference` the light
-// emits at the first wavelength: the mean over `count` rays of |cos| L / (pdf_pos pdf_dir) (the
-// photon's initial throughput; its expectation is the light's power) divided by `reference`,
-// and that mean's standard error. `check(sample)` sees every ray.
-struct FluxEstimate {
-  double mean = 0, std_error = 0;
-};
-template <typename Check>
-FluxEstimate photon_flux(const Light& light, const SampledWavelengths& lambda, float reference, int count,
-                         uint32_t seed, Check&& check) {
-  Uniform rng(seed);
-  double sum = 0, sum2 = 0;
-  for (int i = 0; i < count; ++i) {
-    const Vec2 u1 = rng.next2(), u2 = rng.next2();
-    const std::optional<LightLeSample> s = light.sample_le(u1, u2, lambda, 0.f);
-    double x = 0;
-    if (s && s->pdf_pos > 0.f && s->pdf_dir > 0.f) {
-      check(*s);
-      x = double(s->abs_cos_theta(s->ray.d)) * s->L[0] / (double(s->pdf_pos) * s->pdf_dir) / reference;
-    }
-    sum += x;
-    sum2 += x * x;
-  }
-  const double mean = sum / count;
-  return {mean, std::sqrt(std::max(0.0, sum2 / count - mean * mean) / (count - 1))};
-}
-
 // Regularised upper incomplete gamma Q(a, x) (series / continued fraction, Numerical Recipes 6.2).
 inline double gamma_q(double a, double x) {
   if (x <= 0.0) return 1.0;

@@ -127,6 +127,27 @@ void expect_error(std::vector<Param> ps, const std::vector<std::string>& mention
   }
 }
 
+// Light paths (bdpt, sppm): sample_le's rays leave the light's position inside the image's
+// frustum and carry the power of a grey slide, its intensity integrated over the image as above
+// (16 x 16 points per pixel), within 5 standard errors; pdf_le gives each ray's density.
+TEST(ProjectionLight, SampleLeRaysCarryThePower) {
+  const std::string grey = scratch_path("grey-slide.exr");
+  write_rgb(grey, 6, 4, [](int x, int y) { return RGB(0.2f + 0.15f * float(x) + 0.4f * float(y % 2)); });
+  const Transform world_from_light = translate(Vec3(0.5, 1, -2)) * rotate(70, glm::normalize(Vec3(-1, 2, 1)));
+  auto light =
+      make_light({string_param("filename", grey), float_param("fov", 50), float_param("scale", 2)}, world_from_light);
+  const auto& p = as_projection(light);
+  const LeEstimate e = sample_le_power(*light, 40000, 8, true, [&](const LightLeSample& s) {
+    EXPECT_NEAR(glm::distance(s.ray.o, p.position()), 0.f, 1e-5f);
+    EXPECT_GT(luminance(p.intensity_rgb(s.ray.d)), 0.f);
+  });
+  // The integral is the same for the light unturned, which integrated_luminous_power expects.
+  auto unturned = make_light({string_param("filename", grey), float_param("fov", 50), float_param("scale", 2)});
+  const double integral = integrated_luminous_power(as_projection(unturned), 6, 4, 50.f);
+  EXPECT_NEAR(e.power, integral, 5 * e.std_error);
+  EXPECT_LT(e.std_error, 0.02 * integral);
+}
+
 TEST(ProjectionLight, BadFilesAndParametersAreErrorsNamingThem) {
   expect_error({}, {"filename"});
   const std::string missing = scratch_path("no-such-slide.png");
