@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "net_check.h"
+
 #include <span>
 
 #include <cmath>
@@ -17,21 +19,7 @@
 namespace eyetrace {
 namespace {
 
-// Whether points [0, 2^m) hold one point in each elementary interval 2^-a x 2^-(m-a) of
-// every shape a = 0..m, counted from the coordinates' fixed-point digits.
-bool is_02_net(const Pmj02Points& p, int m) {
-  const size_t n = size_t(1) << m;
-  for (int a = 0; a <= m; ++a) {
-    std::vector<uint8_t> seen(n, 0);
-    for (size_t i = 0; i < n; ++i) {
-      const uint64_t x = a == 0 ? 0 : p[i][0] >> (32 - a), y = m - a == 0 ? 0 : p[i][1] >> (32 - (m - a));
-      uint8_t& s = seen[(x << (m - a)) | y];
-      if (s) return false;
-      s = 1;
-    }
-  }
-  return true;
-}
+using test::is_02_net;
 
 // The pmj property of the first n = 2 * 4^k points, checked on real coordinates (not digits):
 // one point per cell of a cols x rows grid for the two rectangular grids and the strips.

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "net_check.h"
+
 #include <bit>
 #include <cmath>
 #include <set>
@@ -22,20 +24,7 @@ namespace {
 
 using Points = std::vector<std::array<uint32_t, 2>>;
 
-// Whether points [0, 2^m) hold one point in each elementary interval 2^-a x 2^-(m-a).
-bool is_02_net(const Points& p, int m) {
-  const size_t n = size_t(1) << m;
-  for (int a = 0; a <= m; ++a) {
-    std::vector<uint8_t> seen(n, 0);
-    for (size_t i = 0; i < n; ++i) {
-      const uint64_t x = a == 0 ? 0 : p[i][0] >> (32 - a), y = m - a == 0 ? 0 : p[i][1] >> (32 - (m - a));
-      uint8_t& s = seen[(x << (m - a)) | y];
-      if (s) return false;
-      s = 1;
-    }
-  }
-  return true;
-}
+using test::is_02_net;
 
 TEST(Pmj02bnSampler, APixelsPositionsAreANetAndATileUsesEveryPointOnce) {
   for (int spp : {16, 64}) {
