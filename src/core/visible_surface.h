@@ -14,7 +14,10 @@ struct VisibleSurface {
   bool set = false;  // false: the ray saw no surface (it escaped, or was lost)
   Vec3 p{0.f}, n{0.f}, ns{0.f};
   Vec2 uv{0.f};
-  float time = 0.f;             // the camera ray's: where a moving camera was (the gbuffer's camera space)
+  float time = 0.f;  // the camera ray's: where a moving camera was (the gbuffer's camera space)
+  // How p moves on the surface's tangent plane per pixel step in x and y, scaled as pbrt-v4 scales
+  // its ray differentials (render/gbuffer.h, set_position_differentials); zero when not computed.
+  Vec3 dpdx{0.f}, dpdy{0.f};
   SampledSpectrum albedo{0.f};  // the BSDF's directional albedo towards the camera
 };
 

@@ -95,6 +95,8 @@ class SampleBatch {
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
     SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs);
     ts_.arena.reset();
+    if (vs && visible.set)
+      set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
     if (lambda.secondary_terminated()) {
       film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
       return;

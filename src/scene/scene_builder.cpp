@@ -95,10 +95,10 @@ const PluginSpec& spectral_film_spec() {
 const PluginSpec& gbuffer_film_spec() {
   static const PluginSpec spec{
       "Film",
-      "the `rgb` film's R, G, B plus pbrt-v4's auxiliary channels: Albedo, P, N, Ns, u, v, Variance, "
+      "the `rgb` film's R, G, B plus pbrt-v4's auxiliary channels: Albedo, P, dzdx, dzdy, N, Ns, u, v, Variance, "
       "RelativeVariance (src/render/gbuffer.h)",
-      "No `dzdx`, `dzdy` channels (they need ray differentials, which eyetrace does not trace). Variance is of the "
-      "output colour, pbrt-v4's of the sensor RGB. EXR only; always float32 (`savefp16` ignored). Cannot be "
+      "Variance is of the output colour, pbrt-v4's of the sensor RGB. EXR only; always float32 (`savefp16` ignored). "
+      "Cannot be "
       "checkpointed, resumed or rendered over several MPI processes.",
       film_base_params() + std::vector<ParamSpec>{param::string("coordinatesystem", "camera")
                                                       .in({"camera", "world"})

@@ -157,6 +157,42 @@ TEST(GBuffer, AMovingCamerasSpaceIsTakenAtEachSamplesTime) {
   EXPECT_NEAR(start_time_offset, 0.5, 0.1);
 }
 
+// dzdx and dzdy of a plane tilted by 30 degrees about the camera's y axis, z = 5 + x tan 30 in
+// camera space (camera at the origin looking down +z, so camera space is world space moved by 5).
+// A ray of slope a = x / z meets it at depth z(a) = 5 / (1 - a tan 30), so one pixel step (slope
+// step 2 tan 15 / 16 across the 30-degree, 16-pixel film), scaled by pbrt-v4's 1 / sqrt(spp) =
+// 1/4 at 16 spp, moves the depth by (1/4)(2 tan 15 / 16) z'(a), z'(a) = 5 tan 30 / (1 - a tan 30)^2
+// (to first order; the second-order term is 0.5 % of it). The slope a is each pixel's mean P.X / P.Z.
+// Along y the depth does not change: a ray moved in y keeps its slope a, so dzdy is 0.
+TEST(GBuffer, DepthDerivativesOfATiltedPlane) {
+  auto ch = channel_index();
+  const Image im = test::render_text(R"(
+    LookAt 0 0 -5  0 0 0  0 1 0
+    Camera "perspective" "float fov" 30
+    Film "gbuffer" "integer xresolution" 16 "integer yresolution" 16
+    PixelFilter "box"
+    Sampler "independent" "integer pixelsamples" 16
+    WorldBegin
+    LightSource "infinite" "rgb L" [1 1 1]
+    Material "diffuse" "rgb reflectance" [0.5 0.5 0.5]
+    Rotate -30 0 1 0
+    Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-9 -9 0  9 -9 0  9 9 0  -9 9 0]
+  )");
+  const double t30 = std::tan(30.0 * kPi / 180.0), step = 0.25 * 2.0 * std::tan(15.0 * kPi / 180.0) / 16.0;
+  int checked = 0;
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x) {
+      auto c = [&](const char* n) { return double(im.at(x, y, 3 + ch[n])); };
+      const double a = c("P.X") / c("P.Z");
+      ASSERT_NEAR(c("P.Z"), 5.0 / (1.0 - a * t30), 1e-3) << "the plane is not where the test assumes";
+      const double expected = step * 5.0 * t30 / ((1.0 - a * t30) * (1.0 - a * t30));
+      EXPECT_NEAR(c("dzdx"), expected, 0.02 * expected) << x << " " << y;
+      EXPECT_NEAR(c("dzdy"), 0.0, 1e-3 * expected) << x << " " << y;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 256);
+}
+
 // Bad input: an output other than EXR, and an unknown coordinate system, name the parameter.
 TEST(GBuffer, FilmRefusesPngAndUnknownCoordinateSystems) {
   std::string text = plane("camera");

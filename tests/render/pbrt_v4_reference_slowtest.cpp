@@ -381,13 +381,13 @@ Image select_channels(const Image& im, const std::vector<std::string>& names) {
 }
 
 // The gbuffer film: R, G, B compared as every scene's, and the auxiliary channels pbrt-v4
-// writes and eyetrace too (all but dzdx, dzdy; Variance is of other quantities, render/gbuffer.h)
+// writes and eyetrace too (all but Variance, which is of other quantities, render/gbuffer.h)
 // by their image means: within 1 % of the channel's mean magnitude. Positions, normals and
 // (u, v) vary only within a pixel, so their means carry almost no noise; the albedo is pbrt-v4's
 // 16-sample estimate in both, exact for diffuse surfaces, its colour a Monte Carlo estimate.
 TEST(PbrtV4Reference, GBufferFilmAuxiliaryChannels) {
-  const std::vector<std::string> aux = {"Albedo.R", "Albedo.G", "Albedo.B", "P.X",  "P.Y",  "P.Z", "N.X",
-                                        "N.Y",      "N.Z",      "Ns.X",     "Ns.Y", "Ns.Z", "u",   "v"};
+  const std::vector<std::string> aux = {"Albedo.R", "Albedo.G", "Albedo.B", "P.X",  "P.Y",  "P.Z",  "dzdx", "dzdy",
+                                        "N.X",      "N.Y",      "N.Z",      "Ns.X", "Ns.Y", "Ns.Z", "u",    "v"};
   const Image a = render_eyetrace("gbuffer", 1, false), b = read_image(kDataDir + "gbuffer-seed1.exr");
   const Image rgb_a1 = select_channels(a, {"R", "G", "B"});
   ImagePairs p{rgb_a1, select_channels(render_eyetrace("gbuffer", 2, false), {"R", "G", "B"}),
