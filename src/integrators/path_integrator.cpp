@@ -4,6 +4,7 @@
 
 #include "core/material.h"
 #include "core/sampling.h"
+#include "integrators/direct_light_sample.h"
 #include "integrators/subsurface_exit.h"
 #include "integrators/volpath_integrator.h"
 #include "render/scene.h"
@@ -24,33 +25,6 @@ std::string PathIntegrator::to_string() const {
                      scene_.lights().size());
 }
 
-SampledSpectrum PathIntegrator::sample_direct(const SurfaceInteraction& si, const BSDF& bsdf,
-                                              const SampledWavelengths& lambda, Sampler& sampler,
-                                              RayTally& tally) const {
-  float u_light = sampler.get_1d();
-  Vec2 u = sampler.get_2d();
-  float pmf = 0.f;
-  // A sample that cannot contribute costs no shadow ray.
-  auto skip = [&] {
-    ++tally.shadow_rays_skipped;
-    return SampledSpectrum(0.f);
-  };
-  const Light* light = lights_.sample(u_light, &pmf);
-  if (!light || pmf == 0.f) return skip();
-  LightSampleContext ctx{si.p, si.n};
-  std::optional<LightLiSample> ls = light->sample_li(ctx, u, lambda);
-  if (!ls || ls->pdf <= 0.f || is_black(ls->L)) return skip();
-  SampledSpectrum f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
-  if (is_black(f)) return skip();
-  ++tally.rays;
-  ++tally.shadow_rays;
-  if (scene_.occluded(spawn_ray_to(si, ls->p_light, ls->p_light_error, ls->n_light))) return SampledSpectrum(0.f);
-  float light_pdf = pmf * ls->pdf;
-  if (light->is_delta()) return f * ls->L / light_pdf;
-  float w = power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi));
-  return w * f * ls->L / light_pdf;
-}
-
 bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf,
                                                    SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
                                                    RayTally& tally, SampledSpectrum& beta, SampledSpectrum& L, Ray& ray,
@@ -61,7 +35,7 @@ bool PathIntegrator::continue_from_subsurface_exit(const SurfaceInteraction& ent
   beta *= exit->weight(lambda);
   // Next-event estimation at the exit, MIS-weighted against sampling Sw (as at any surface).
   if (!lights_.empty())
-    L += beta * sample_direct(exit->si, *exit->sw, lambda, sampler, tally);
+    L += beta * sample_one_light(scene_, lights_, exit->si, *exit->sw, lambda, sampler, tally);
   else
     ++tally.shadow_rays_skipped;
   const float uc = sampler.get_1d();
@@ -111,7 +85,7 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
     if (visible && depth == 0) *visible = visible_surface(si, *bsdf);
     if (depth++ == max_depth_) break;
     if (!lights_.empty() && (bsdf->flags() & (kDiffuse | kGlossy)))
-      L += beta * sample_direct(si, *bsdf, lambda, sampler, tally);
+      L += beta * sample_one_light(scene_, lights_, si, *bsdf, lambda, sampler, tally);
     else
       ++tally.shadow_rays_skipped;  // no light to sample, or a specular BSDF that light sampling cannot hit
     // The next ray could only add emission it finds, and there is none to find (unless it

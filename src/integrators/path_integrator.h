@@ -23,9 +23,6 @@ class PathIntegrator : public Integrator {
   std::string to_string() const override;
 
  private:
-  // Light sampling at a surface hit: one light, one shadow ray, MIS-weighted.
-  SampledSpectrum sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
-                                Sampler& sampler, RayTally& tally) const;
   // After a transmission into a subsurface material at `entry` (its BSSRDF there): moves the path to a sampled
   // exit point, adds light sampled there and samples Sw for the next ray. False ends the path.
   bool continue_from_subsurface_exit(const SurfaceInteraction& entry, const BSSRDF& bssrdf, SampledWavelengths& lambda,

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/material.h"
 #include "core/sampling.h"
+#include "integrators/direct_light_sample.h"
 #include "integrators/sppm_pixel.h"
 #include "integrators/visible_point_grid.h"
 #include "render/film.h"
@@ -221,7 +222,7 @@ class SppmIntegrator::Run {
       const Vec3 wo = -ray.d;
       const unsigned flags = bsdf->flags();
       if (flags & (kDiffuse | kGlossy))
-        L += beta * sample_direct(si, *bsdf, lambda, *ts.sampler, ts.tally);
+        L += beta * sample_one_light(scene_, in_.lights_, si, *bsdf, lambda, *ts.sampler, ts.tally);
       else
         ++ts.tally.shadow_rays_skipped;
       if ((flags & kDiffuse) || ((flags & kGlossy) && depth == in_.options_.max_depth))
@@ -246,27 +247,6 @@ class SppmIntegrator::Run {
       ray = spawn_ray(si, bs->wi);
     }
     return L;
-  }
-
-  // Light sampling at a camera vertex: one light by power, one shadow ray, MIS against the BSDF
-  // (as the path integrator's).
-  SampledSpectrum sample_direct(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
-                                Sampler& sampler, RayTally& tally) const {
-    const float u_light = sampler.get_1d();
-    const Vec2 u = sampler.get_2d();
-    float pmf = 0.f;
-    const Light* light = in_.lights_.sample(u_light, &pmf);
-    if (!light || !(pmf > 0.f)) return SampledSpectrum(0.f);
-    const std::optional<LightLiSample> ls = light->sample_li(LightSampleContext{si.p, si.n}, u, lambda);
-    if (!ls || !(ls->pdf > 0.f) || is_black(ls->L)) return SampledSpectrum(0.f);
-    const SampledSpectrum f = bsdf.f(si.wo, ls->wi) * std::abs(glm::dot(ls->wi, si.ns));
-    if (is_black(f)) return SampledSpectrum(0.f);
-    ++tally.rays;
-    ++tally.shadow_rays;
-    if (scene_.occluded(spawn_ray_to(si, ls->p_light, ls->p_light_error, ls->n_light))) return SampledSpectrum(0.f);
-    const float light_pdf = pmf * ls->pdf;
-    if (light->is_delta()) return f * ls->L / light_pdf;
-    return power_heuristic(light_pdf, bsdf.pdf(si.wo, ls->wi)) * f * ls->L / light_pdf;
   }
 
   // Shoots this iteration's photons in batches (in parallel), then adds each batch's deposits
