@@ -17,7 +17,6 @@ class BSDF;
 // A sample that cannot contribute (no light, zero radiance or density, f cos = 0) traces no shadow
 // ray and counts in tally.shadow_rays_skipped.
 SampledSpectrum sample_one_light(const Scene& scene, const PowerLightSampler& lights, const SurfaceInteraction& si,
-                                 const BSDF& bsdf, const SampledWavelengths& lambda, Sampler& sampler,
-                                 RayTally& tally);
+                                 const BSDF& bsdf, const SampledWavelengths& lambda, Sampler& sampler, RayTally& tally);
 
 }  // namespace eyetrace
