@@ -23,6 +23,9 @@ namespace {
 
 // Photons per deposit list: the unit of parallel work, merged in order.
 constexpr int64_t kPhotonBatch = 4096;
+// Batches traced before their deposits are added to the pixels (about 262,000 photons): enough
+// work per group for many threads, few enough that the deposit lists stay small.
+constexpr int64_t kBatchesPerMerge = 64;
 // Interface (null-material) crossings do not count as bounces; bound them anyway.
 constexpr int kMaxCrossings = 256;
 
@@ -250,30 +253,37 @@ class SppmIntegrator::Run {
   }
 
   // Shoots this iteration's photons in batches (in parallel), then adds each batch's deposits
-  // to the pixels in batch order: the sums do not depend on which thread traced what.
+  // to the pixels in batch order: the sums do not depend on which thread traced what. The batches
+  // go in groups of kBatchesPerMerge, each group's deposits added before the next group starts,
+  // so that the deposit lists held at once stay bounded whatever the photon count.
   void photon_pass(int iter, const SampledWavelengths& lambda) {
     const VisiblePointGrid grid(pixels_);
     if (grid.empty()) return;
     const int64_t batches = int64_t((photons_ + kPhotonBatch - 1) / kPhotonBatch);
-    std::vector<std::vector<Deposit>> deposits(static_cast<size_t>(batches));
-    arena_.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<int64_t>(0, batches, 1), [&](const tbb::blocked_range<int64_t>& r) {
-        ThreadState& ts = states_.local();
-        for (int64_t batch = r.begin(); batch != r.end(); ++batch) {
-          const uint64_t first = uint64_t(batch) * kPhotonBatch, end = std::min(photons_, first + kPhotonBatch);
-          for (uint64_t i = first; i < end; ++i) {
-            trace_photon(uint64_t(iter) * photons_ + i, grid, lambda, ts, deposits[size_t(batch)]);
-            ts.photon_arena.reset();
+    std::vector<std::vector<Deposit>> deposits(size_t(std::min(batches, kBatchesPerMerge)));
+    for (int64_t group = 0; group < batches; group += kBatchesPerMerge) {
+      const int64_t group_end = std::min(batches, group + kBatchesPerMerge);
+      arena_.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int64_t>(group, group_end, 1), [&](const tbb::blocked_range<int64_t>& r) {
+          ThreadState& ts = states_.local();
+          for (int64_t batch = r.begin(); batch != r.end(); ++batch) {
+            const uint64_t first = uint64_t(batch) * kPhotonBatch, end = std::min(photons_, first + kPhotonBatch);
+            for (uint64_t i = first; i < end; ++i) {
+              trace_photon(uint64_t(iter) * photons_ + i, grid, lambda, ts, deposits[size_t(batch - group)]);
+              ts.photon_arena.reset();
+            }
           }
-        }
+        });
       });
-    });
-    for (const std::vector<Deposit>& list : deposits)
-      for (const Deposit& d : list) {
-        SppmPixel& px = pixels_[d.pixel];
-        add_rgb(px.phi, d.phi);
-        ++px.m;
+      for (std::vector<Deposit>& list : deposits) {
+        for (const Deposit& d : list) {
+          SppmPixel& px = pixels_[d.pixel];
+          add_rgb(px.phi, d.phi);
+          ++px.m;
+        }
+        list.clear();  // keeps its capacity for the next group
       }
+    }
   }
 
   // One photon from a light chosen by power (pbrt-v4): its flux lands on visible points near
