@@ -190,6 +190,8 @@ std::unique_ptr<Scene::InstanceGroup> Scene::build_group(std::vector<Primitive> 
     if (group->prims.size() <= id) group->prims.resize(id + 1);
     group->prims[id] = std::move(prim);
   }
+  if (group->primitive_count >= kCompactPrimitives)
+    rtcSetSceneFlags(group->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
   // An instanced scene must be committed before any scene that instances it.
   rtcCommitScene(group->scene);
   check_embree(device_, "building " + what);
@@ -285,6 +287,9 @@ void Scene::add_light(std::unique_ptr<Light> light) {
 
 void Scene::commit() {
   if (committed_) throw std::logic_error("Scene::commit called twice");
+  size_t own = 0;  // the root's own primitives: instanced groups decide for themselves
+  for (const Primitive& p : prims_) own += p.shape->primitive_count();
+  if (own >= kCompactPrimitives) rtcSetSceneFlags(root_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
   rtcCommitScene(root_);
   check_embree(device_, "building the scene BVH");
   committed_ = true;
