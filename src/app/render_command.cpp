@@ -252,11 +252,22 @@ struct Job {
   RenderSetup setup;
   std::string output;
   std::optional<RetinalIrradiance> irradiance;
-  uint64_t fingerprint = 0;
+  // scene_fingerprint of the render, made when a render state is first read or written (or ranks
+  // compare scenes): hashing a scene of millions of triangles takes a few per cent of its loading.
+  std::optional<uint64_t> fingerprint;
   int spp = 0;
   std::optional<AdaptiveOptions> adaptive;
   TileProgress tiles;
 };
+
+// The job's fingerprint, made on first use. A render that neither resumes nor checkpoints nor runs
+// over several ranks needs it only if it is interrupted, to write its state then (the files it read
+// are then hashed as they are at the interruption).
+uint64_t state_fingerprint(const RenderArgs& a, Job& job) {
+  if (!job.fingerprint)
+    job.fingerprint = scene_fingerprint(job.desc, image_options(a, job.setup), job.setup.files_read);
+  return *job.fingerprint;
+}
 
 std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   auto job = std::make_unique<Job>();
@@ -280,12 +291,12 @@ std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
         "the gbuffer film cannot be checkpointed (--checkpoint), resumed (--resume) or rendered over several "
         "processes (mpirun); render it in one process, or use the rgb film");
   job->irradiance = retinal_irradiance(setup);
-  job->fingerprint = scene_fingerprint(job->desc, image_options(a, setup), setup.files_read);
+  if (a.resume || a.checkpoint >= 0 || group.size() > 1) state_fingerprint(a, *job);
   job->spp = setup.sampler->samples_per_pixel();
   job->adaptive = adaptive_options(a, *setup.sampler);
   job->tiles = TileProgress::start(setup.film->bounds());
   if (a.resume) {
-    resume_from(state_path(job->output), job->fingerprint, setup, job->tiles);
+    resume_from(state_path(job->output), *job->fingerprint, setup, job->tiles);
     // Every rank restores the whole state; the non-finite count is rank 0's alone to carry.
     if (group.rank() != 0) setup.film->restore(setup.film->accumulators(), 0);
   }
@@ -311,14 +322,15 @@ std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group)
   // Every rank must render the same image: the fingerprint covers the scene, every file it
   // reads and the options that change the image (a rank started with other arguments, or on a
   // machine whose copy of a file differs, would otherwise add other pixels to the same film).
-  const uint64_t lead = group.broadcast(job->fingerprint);
-  const int odd = group.min(job->fingerprint != lead ? group.rank() : INT_MAX);
+  const uint64_t mine = group.size() > 1 ? *job->fingerprint : 0;
+  const uint64_t lead = group.broadcast(mine);
+  const int odd = group.min(mine != lead ? group.rank() : INT_MAX);
   if (odd != INT_MAX) {
     if (group.rank() == odd)
       throw_error(fmt::format(
           "rank {} sees another scene or other options than rank 0 (scene fingerprint {:016x} against {:016x}): "
           "every rank must be started with the same arguments and read the same files",
-          odd, job->fingerprint, lead));
+          odd, mine, lead));
     return nullptr;
   }
   return job;
@@ -370,11 +382,11 @@ Image whole_image(RenderGroup& g, Film& film, TileProgress& tiles, bool complete
 void write_result(const RenderArgs& a, Job& job, bool complete, const Image& image) {
   const TileProgress& tiles = job.tiles;
   if (complete) {
-    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{false, true}, job.irradiance, image);
+    save(job.output, a, job.setup, tiles, 0, Snapshot{false, true}, job.irradiance, image);  // no state: no fingerprint
     std::error_code ec;
     std::filesystem::remove(state_path(job.output), ec);  // finished: nothing left to resume
   } else if (tiles.max_done() > 0) {
-    save(job.output, a, job.setup, tiles, job.fingerprint, Snapshot{true, false}, job.irradiance, image);
+    save(job.output, a, job.setup, tiles, state_fingerprint(a, job), Snapshot{true, false}, job.irradiance, image);
     fmt::print(stderr,
                "eyetrace: interrupted: wrote {} with {} of {} samples per pixel{}, and {}; continue with --resume\n",
                job.output, tiles.min_done(), job.spp,
@@ -487,7 +499,7 @@ int run_render(const RenderArgs& a) {
       if (!g.any(lead && since >= a.checkpoint)) return;
       g.collect(*setup.film, tiles);
       if (lead && !tiles.complete(spp))
-        save(job->output, a, setup, tiles, job->fingerprint, Snapshot{}, job->irradiance, setup.film->image());
+        save(job->output, a, setup, tiles, *job->fingerprint, Snapshot{}, job->irradiance, setup.film->image());
       last_checkpoint = std::chrono::steady_clock::now();
     };
   try {
