@@ -5,8 +5,11 @@
 //  - on scenes without specular surfaces bdpt and path estimate the same integral, so their
 //    images agree in expectation: the image mean by a z-test and every pixel through the
 //    squared difference of the two images against the noise both carry (from 8 independent
-//    renders each), for each kind of light (area, point, spot, distant, uniform infinite);
-//  - the same seed gives the same image for 1 and 2 threads and any pass size;
+//    renders each), for each kind of light (area, point, spot, distant, uniform infinite),
+//    with t = 1 strategies (light paths splatted through the pinhole or the thin lens), with a
+//    Gaussian filter (splats spread by the filter) and without t = 1 (the eye camera);
+//  - the same seed gives the same image for 1 and 2 threads and any pass size, and a render
+//    stopped after a pass and resumed from its film gives the uninterrupted image;
 //  - what bdpt does not do is said: media go to volpath, portals are refused.
 #include <gtest/gtest.h>
 
@@ -15,6 +18,7 @@
 
 #include "../support/render_text.h"
 #include "core/error.h"
+#include "render/film.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
@@ -90,7 +94,7 @@ TEST(BdptIntegrator, BadParametersAreNamed) {
 // render) and with `lights` instead of its area light when given; its front is open, so
 // distant and infinite light comes in.
 std::string diffuse_box(const std::string& integrator, const std::string& lights, bool keep_area_light,
-                        const std::string& camera = "") {
+                        const std::string& camera = "", const std::string& filter = "box") {
   std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/scenes/cornell-box.pbrt");
   std::stringstream ss;
   ss << in.rdbuf();
@@ -101,7 +105,7 @@ std::string diffuse_box(const std::string& integrator, const std::string& lights
     if (at != std::string::npos) s.replace(at, from.size(), to);
   };
   replace("Integrator \"path\" \"integer maxdepth\" 8", "Integrator \"" + integrator + "\" \"integer maxdepth\" 5");
-  replace("PixelFilter \"gaussian\"", "PixelFilter \"box\"");
+  replace("PixelFilter \"gaussian\"", "PixelFilter \"" + filter + "\"");
   replace("Material \"dielectric\" \"float eta\" 1.5", "Material \"diffuse\" \"rgb reflectance\" [0.5 0.6 0.7]");
   replace("WorldBegin\n", "WorldBegin\n" + lights + "\n");
   if (!keep_area_light) replace("AreaLightSource \"diffuse\" \"rgb L\" [17 12 4]", "");
@@ -148,10 +152,11 @@ void mean_and_variance(const Renders& r, std::vector<double>* mean, std::vector<
 // variances is 1 in expectation without bias; over 1728 values its noise is a few percent
 // (more with the heavy tails of light paths), so 1.5 leaves room for noise and none for a bias
 // of a few standard errors per pixel.
-void expect_same_as_path(const std::string& lights, bool keep_area_light, const std::string& camera = "") {
+void expect_same_as_path(const std::string& lights, bool keep_area_light, const std::string& camera = "",
+                         const std::string& filter = "box") {
   constexpr int kSeeds = 8, kSpp = 16;
-  const Renders b = render_seeds(diffuse_box("bdpt", lights, keep_area_light, camera), kSeeds, kSpp);
-  const Renders p = render_seeds(diffuse_box("path", lights, keep_area_light, camera), kSeeds, kSpp);
+  const Renders b = render_seeds(diffuse_box("bdpt", lights, keep_area_light, camera, filter), kSeeds, kSpp);
+  const Renders p = render_seeds(diffuse_box("path", lights, keep_area_light, camera, filter), kSeeds, kSpp);
   std::vector<double> mb, vb, mp, vp;
   mean_and_variance(b, &mb, &vb);
   mean_and_variance(p, &mp, &vp);
@@ -192,6 +197,20 @@ TEST(BdptIntegrator, EqualsPathWithSpotDistantAndInfiniteLights) {
       false);
 }
 
+// t = 1 through a thin lens (light paths connected to points on the lens), and with a Gaussian
+// filter, whose splats reach the neighbouring pixels with its weights and whose wider samples
+// beyond the film's edge t = 1 cannot make.
+TEST(BdptIntegrator, EqualsPathThroughAThinLens) {
+  expect_same_as_path("", true,
+                      "Camera \"perspective\" \"float fov\" 40 \"float lensradius\" 0.08 "
+                      "\"float focaldistance\" 2.5");
+}
+
+TEST(BdptIntegrator, EqualsPathWithAGaussianFilter) {
+  expect_same_as_path("LightSource \"point\" \"point3 from\" [0.3 0.8 0.4] \"rgb I\" [0.5 0.5 0.5]", true, "",
+                      "gaussian");
+}
+
 // Light paths from the image lights: the goniometric light's uniform directions and the
 // projection light's cone around its frustum (tests/data/pbrt-v4's light images).
 TEST(BdptIntegrator, EqualsPathWithGoniometricAndProjectionLights) {
@@ -204,22 +223,26 @@ TEST(BdptIntegrator, EqualsPathWithGoniometricAndProjectionLights) {
       false);
 }
 
-// The eye cameras have no importance function, but every strategy used needs only the camera's
-// ray: through the dispersive Navarro eye (spectral MIS over four wavelengths per sample) bdpt
+// The eye cameras have no importance function, so bdpt leaves out t = 1, whose other strategies
+// need only the camera's ray: through the dispersive Navarro eye (spectral MIS over four wavelengths per sample) bdpt
 // still equals path.
 TEST(BdptIntegrator, EqualsPathThroughTheNavarroEye) {
   expect_same_as_path("LightSource \"point\" \"point3 from\" [0.3 0.8 0.4] \"rgb I\" [0.5 0.5 0.5]", true,
                       "Camera \"navarro\" \"float fov\" 30");
 }
 
-Image render_threads(int threads, int pass_samples, uint64_t seed) {
+RenderSetup threads_setup(uint64_t seed) {
   SceneDescription desc = parse_scene_string(
-      diffuse_box("bdpt", "LightSource \"point\" \"point3 from\" [0.3 0.8 0.4]", true), "b.pbrt", ".");
+      diffuse_box("bdpt", "LightSource \"point\" \"point3 from\" [0.3 0.8 0.4]", true, "", "gaussian"), "b.pbrt", ".");
   RenderOverrides o;
   o.resolution = IVec2(20, 16);
   o.spp = 6;
   o.seed = seed;
-  RenderSetup s = build_render_setup(desc, o);
+  return build_render_setup(desc, o);
+}
+
+Image render_threads(int threads, int pass_samples, uint64_t seed) {
+  RenderSetup s = threads_setup(seed);
   RenderCounters counters;
   RenderOptions opts;
   opts.threads = threads;
@@ -228,11 +251,46 @@ Image render_threads(int threads, int pass_samples, uint64_t seed) {
   return s.film->image();
 }
 
+// With t = 1 (the perspective camera), whose splats land in other tiles' pixels.
 TEST(BdptIntegrator, SameSeedSameImageForAnyThreadCountAndPassSize) {
   const Image one = render_threads(1, 1, 7);
   EXPECT_TRUE(one.pixels == render_threads(2, 1, 7).pixels) << "1 and 2 threads differ";
   EXPECT_TRUE(one.pixels == render_threads(2, 4, 7).pixels) << "pass sizes 1 and 4 differ";
+  EXPECT_TRUE(one.pixels == render_threads(2, 5, 7).pixels) << "pass sizes 1 and 5 differ";
   EXPECT_FALSE(one.pixels == render_threads(2, 1, 8).pixels) << "the seed has no effect";
+}
+
+// A render stopped after its first pass (light splats finish a pass before stopping, so every
+// stop is at a pass's end): the film and tile progress saved there, restored into a fresh film,
+// continue to the uninterrupted image.
+TEST(BdptIntegrator, ResumedRenderEqualsUninterruptedOne) {
+  const Image whole = render_threads(2, 2, 7);
+  TileProgress tiles;
+  std::vector<double> saved;
+  {
+    RenderSetup s = threads_setup(7);
+    std::atomic<bool> stop{false};
+    RenderOptions opts;
+    opts.on_pass = [&](const TileProgress&) { stop = true; };
+    opts.threads = 2;
+    opts.pass_samples = 2;
+    opts.tiles = &tiles;
+    opts.stop = &stop;
+    RenderCounters counters;
+    s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
+    saved = s.film->accumulators();
+  }
+  EXPECT_EQ(tiles.min_done(), 2);
+  EXPECT_EQ(tiles.max_done(), 2);
+  RenderSetup s = threads_setup(7);
+  s.film->restore(saved, 0);
+  RenderOptions opts;
+  opts.threads = 1;
+  opts.pass_samples = 3;
+  opts.tiles = &tiles;
+  RenderCounters counters;
+  s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
+  EXPECT_TRUE(s.film->image().pixels == whole.pixels) << "resumed and uninterrupted renders differ";
 }
 
 TEST(BdptIntegrator, SceneWithMediaIsRenderedByVolpath) {
