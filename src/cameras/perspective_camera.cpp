@@ -110,7 +110,8 @@ const PluginSpec& perspective_camera_spec() {
   static const PluginSpec spec{
       "Camera",
       "a perspective projection, with an optional thin lens",
-      "`perspective` as pbrt-v4. `thinlens` is another name for it; `pinhole` is the same camera with "
+      "`perspective` as pbrt-v4, with its importance (We, PDF_We, SampleWi), so `bdpt` connects light paths to it "
+      "(t = 1). `thinlens` is another name for it; `pinhole` is the same camera with "
       "`lensradius` 0 (any other value is an error). Neither exists in pbrt-v4.",
       {
           param::real("fov", 90).open_range(0, 180).with_unit("deg").describe("across the shorter image axis"),

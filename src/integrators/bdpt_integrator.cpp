@@ -408,6 +408,8 @@ const PluginSpec& bdpt_integrator_spec() {
       "are refused. Rough refraction at light-path vertices takes the adjoint BSDF "
       "by reversing the pair.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),
+       param::boolean("lighttracing", true)
+           .describe("eyetrace's (not pbrt-v4's): `false` leaves out the t = 1 strategies"),
        param::boolean("regularize", false).describe("`true` warns and is ignored"),
        param::boolean("visualizestrategies", false).describe("`true` warns and is ignored"),
        param::boolean("visualizeweights", false).describe("`true` warns and is ignored")}};
@@ -429,7 +431,9 @@ std::unique_ptr<Integrator> create_bdpt_integrator(const IntegratorContext& ctx)
       throw SceneError(Diagnostic{p.loc(), "", Severity::Error,
                                   "integrator \"bdpt\" cannot start light paths from an infinite light seen through a "
                                   "portal; use \"path\" or \"volpath\""});
-  return std::make_unique<BdptIntegrator>(ctx.scene, max_depth);
+  auto bdpt = std::make_unique<BdptIntegrator>(ctx.scene, max_depth);
+  bdpt->set_light_tracing(p.get_bool("lighttracing"));
+  return bdpt;
 }
 
 }  // namespace eyetrace

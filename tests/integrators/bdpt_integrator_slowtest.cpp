@@ -14,7 +14,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "integrators/bdpt_integrator.h"
 #include "render/film.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
@@ -45,14 +44,13 @@ std::string with_line(const std::string& text, const std::string& prefix, const 
   return text.substr(0, at + 1) + line + text.substr(end);
 }
 
-Image render(const std::string& text, int spp, uint64_t seed, bool light_tracing = true) {
+Image render(const std::string& text, int spp, uint64_t seed) {
   SceneDescription desc = parse_scene_string(text, "bdpt-slow.pbrt", kDataDir);
   RenderOverrides o;
   o.resolution = IVec2(32, 32);
   o.spp = spp;
   o.seed = seed;
   RenderSetup s = build_render_setup(desc, o);
-  if (auto* bdpt = dynamic_cast<BdptIntegrator*>(s.integrator.get())) bdpt->set_light_tracing(light_tracing);
   RenderCounters counters;
   s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
   EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
@@ -117,7 +115,9 @@ TEST(BdptIntegrator, CausticSeenDirectlyCarriesThePowerPathFindsThroughASphereLi
   const MeanAndError bdpt_point = masked_pair(render(caustic, 256, 3), render(caustic, 256, 4), mask);
   const MeanAndError bdpt_small =
       masked_pair(render(sphere(caustic, 0.02), 256, 5), render(sphere(caustic, 0.02), 256, 6), mask);
-  const double without_t1 = masked(render(caustic, 64, 7, false), mask);
+  const std::string without =
+      with_line(caustic, "Integrator", "Integrator \"bdpt\" \"integer maxdepth\" 5 \"bool lighttracing\" false");
+  const double without_t1 = masked(render(without, 64, 7), mask);
   std::printf(
       "floor means: path sphere 0.2 %.5f +- %.5f, bdpt sphere 0.2 %.5f +- %.5f, bdpt point %.5f +- %.5f, bdpt "
       "sphere 0.02 %.5f +- %.5f, bdpt point without t = 1 %.5f\n",

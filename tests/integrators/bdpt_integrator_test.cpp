@@ -293,6 +293,54 @@ TEST(BdptIntegrator, ResumedRenderEqualsUninterruptedOne) {
   EXPECT_TRUE(s.film->image().pixels == whole.pixels) << "resumed and uninterrupted renders differ";
 }
 
+// A spectral film takes t = 1's splats in its buckets too: on the caustic scene (the caustic
+// carried by t = 1 alone) its R, G, B are those of the rgb film, and its buckets gain from t = 1
+// what its luminance gains (to within the noise: 10 % of the gain).
+TEST(BdptIntegrator, SpectralFilmBucketsTakeTheSplats) {
+  std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/bdpt-caustic.pbrt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string rgb = ss.str();
+  auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+  };
+  const std::string spectral = replaced(rgb, "Film \"rgb\"", "Film \"spectral\" \"integer nbuckets\" 3");
+  const std::string lt = "\"integer maxdepth\" 5";
+  auto render = [](const std::string& text) {
+    SceneDescription desc = parse_scene_string(text, "caustic.pbrt", ".");
+    RenderOverrides o;
+    o.resolution = IVec2(24, 24);
+    o.spp = 16;
+    o.seed = 3;
+    RenderSetup s = build_render_setup(desc, o);
+    RenderCounters counters;
+    s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
+    EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
+    return s.film->image();
+  };
+  const Image on = render(spectral), off = render(replaced(spectral, lt, lt + " \"bool lighttracing\" false"));
+  const Image plain = render(rgb);
+  ASSERT_EQ(on.channels, 6);
+  double rgb_on = 0, rgb_off = 0, buckets_on = 0, buckets_off = 0;
+  for (size_t p = 0; p < size_t(on.width) * on.height; ++p) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(on.pixels[p * 6 + c], plain.pixels[p * 3 + c]) << "pixel " << p << " channel " << c;
+      rgb_on += on.pixels[p * 6 + c];
+      rgb_off += off.pixels[p * 6 + c];
+    }
+    for (int b = 3; b < 6; ++b) {
+      buckets_on += on.pixels[p * 6 + b];
+      buckets_off += off.pixels[p * 6 + b];
+    }
+  }
+  const double gain_rgb = rgb_on / rgb_off - 1, gain_buckets = buckets_on / buckets_off - 1;
+  EXPECT_GT(gain_rgb, 0.05);
+  EXPECT_NEAR(gain_buckets, gain_rgb, 0.1 * gain_rgb) << "rgb " << gain_rgb << " buckets " << gain_buckets;
+}
+
 TEST(BdptIntegrator, SceneWithMediaIsRenderedByVolpath) {
   const std::string text =
       "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
