@@ -14,7 +14,7 @@
 # estimator), so the ratio bdpt / path of that product is how much longer bdpt takes for the
 # same error. CPU time is the eyetrace processes' user + system time.
 # Usage: bench/bdpt_equal_error.py [SPP] [REF_SPP]  (defaults 64, 4096). Writes into the current
-# directory. About 5 minutes on 2 cores.
+# directory. About 8 minutes on 2 cores.
 import os, resource, subprocess, sys
 import numpy as np, OpenImageIO as oiio
 

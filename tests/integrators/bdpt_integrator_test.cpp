@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "render/film.h"
 #include "scene/parser.h"
+#include "scene/render_request.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
@@ -339,6 +340,40 @@ TEST(BdptIntegrator, SpectralFilmBucketsTakeTheSplats) {
   const double gain_rgb = rgb_on / rgb_off - 1, gain_buckets = buckets_on / buckets_off - 1;
   EXPECT_GT(gain_rgb, 0.05);
   EXPECT_NEAR(gain_buckets, gain_rgb, 0.1 * gain_rgb) << "rgb " << gain_rgb << " buckets " << gain_buckets;
+}
+
+// A crop window renders one light path per camera sample of the crop, while importance covers
+// the full film: the splats are scaled by the full film's pixels over the crop's. On the caustic
+// scene (t = 1 carries the caustic and part of the floor's light), a crop of a quarter of the
+// image has the mean the full image has there (unscaled splats: measured 23 % less), within 3 %
+// (the two means' standard errors, measured from a third seed, are about 0.5 %).
+TEST(BdptIntegrator, CropWindowKeepsTheSplatsEnergy) {
+  std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/bdpt-caustic.pbrt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  auto render = [&](const std::string& crop, uint64_t seed) {
+    SceneDescription desc = parse_scene_string(ss.str(), "caustic.pbrt", ".");
+    RenderOverrides o;
+    o.resolution = IVec2(32, 32);
+    o.spp = 64;
+    o.seed = seed;
+    if (!crop.empty()) o.crop = parse_crop(crop);
+    RenderSetup s = build_render_setup(desc, o);
+    RenderCounters counters;
+    s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
+    return s.film->image();
+  };
+  const Image full = render("", 1), crop = render("0.25,0.75,0.5,1", 2);
+  ASSERT_EQ(crop.width, 16);
+  ASSERT_EQ(crop.height, 16);
+  double a = 0, b = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x)
+      for (int c = 0; c < 3; ++c) {
+        a += full.pixels[(size_t(y + 16) * 32 + size_t(x + 8)) * 3 + size_t(c)];
+        b += crop.pixels[(size_t(y) * 16 + size_t(x)) * 3 + size_t(c)];
+      }
+  EXPECT_NEAR(b / a, 1.0, 0.03) << "full " << a << " crop " << b;
 }
 
 TEST(BdptIntegrator, SceneWithMediaIsRenderedByVolpath) {
