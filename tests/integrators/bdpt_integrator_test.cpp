@@ -13,8 +13,10 @@
 //  - what bdpt does not do is said: media go to volpath, portals are refused.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "../support/render_text.h"
 #include "core/error.h"
@@ -232,12 +234,12 @@ TEST(BdptIntegrator, EqualsPathThroughTheNavarroEye) {
                       "Camera \"navarro\" \"float fov\" 30");
 }
 
-RenderSetup threads_setup(uint64_t seed) {
+RenderSetup threads_setup(uint64_t seed, int spp = 6) {
   SceneDescription desc = parse_scene_string(
       diffuse_box("bdpt", "LightSource \"point\" \"point3 from\" [0.3 0.8 0.4]", true, "", "gaussian"), "b.pbrt", ".");
   RenderOverrides o;
   o.resolution = IVec2(20, 16);
-  o.spp = 6;
+  o.spp = spp;
   o.seed = seed;
   return build_render_setup(desc, o);
 }
@@ -297,6 +299,39 @@ TEST(BdptIntegrator, ResumedRenderEqualsUninterruptedOne) {
 // A spectral film takes t = 1's splats in its buckets too: on the caustic scene (the caustic
 // carried by t = 1 alone) its R, G, B are those of the rgb film, and its buckets gain from t = 1
 // what its luminance gains (to within the noise: 10 % of the gain).
+// A stop requested while a pass runs (from another thread, 20 ms in: usually inside the first
+// of two passes of 16 samples) still leaves every tile at the same sample count, the pass's end,
+// and the resumed render equals the uninterrupted one (whenever the stop landed).
+TEST(BdptIntegrator, StopDuringAPassFinishesItAndResumesExactly) {
+  auto render = [](TileProgress* tiles, const std::atomic<bool>* stop, const std::vector<double>* restore,
+                   std::vector<double>* saved) {
+    RenderSetup s = threads_setup(9, 32);
+    if (restore) s.film->restore(*restore, 0);
+    RenderOptions opts;
+    opts.threads = 2;
+    opts.pass_samples = 16;
+    opts.tiles = tiles;
+    opts.stop = stop;
+    RenderCounters counters;
+    s.integrator->render(*s.camera, *s.sampler, *s.film, opts, counters);
+    if (saved) *saved = s.film->accumulators();
+    return s.film->image();
+  };
+  const Image whole = render(nullptr, nullptr, nullptr, nullptr);
+  TileProgress tiles;
+  std::atomic<bool> stop{false};
+  std::vector<double> saved;
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    stop = true;
+  });
+  render(&tiles, &stop, nullptr, &saved);
+  stopper.join();
+  EXPECT_EQ(tiles.min_done(), tiles.max_done());
+  EXPECT_EQ(tiles.min_done() % 16, 0);
+  EXPECT_TRUE(render(&tiles, nullptr, &saved, nullptr).pixels == whole.pixels) << "stopped at " << tiles.min_done();
+}
+
 TEST(BdptIntegrator, SpectralFilmBucketsTakeTheSplats) {
   std::ifstream in(std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/bdpt-caustic.pbrt");
   std::stringstream ss;
