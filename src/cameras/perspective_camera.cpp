@@ -12,6 +12,70 @@ PerspectiveCamera::PerspectiveCamera(const Transform& world_from_camera, IVec2 r
       s_(s),
       tan_half_fov_(std::tan(radians(s.fov_deg) / 2.f)) {
   if (s_.screen_window == Vec4(0.f)) s_.screen_window = default_screen_window(resolution);
+  const Vec3 lo = camera_direction(Vec2(0.f)), hi = camera_direction(Vec2(resolution));
+  film_area_ = std::abs((hi.x - lo.x) * (hi.y - lo.y));
+  lens_area_ = s_.lens_radius > 0.f ? kPi * sqr(s_.lens_radius) : 1.f;
+}
+
+bool PerspectiveCamera::on_film(const Ray& ray, float* cos_theta, Vec2* p_raster) const {
+  Transform scratch;
+  const Transform& world_from_camera = placed_at(motion_, world_from_camera_, ray.time, scratch);
+  const Transform camera_from_world = world_from_camera.inverse();
+  const Vec3 o = camera_from_world.point(ray.o);
+  const Vec3 d = glm::normalize(camera_from_world.vector(ray.d));
+  *cos_theta = d.z;
+  if (!(d.z > 0.f)) return false;
+  // Every ray through a lens point and the film point's image on the plane of focus (the plane
+  // z = 1 for a pinhole, whose rays all leave the origin): that image, seen from the pinhole,
+  // is the film point (generate_ray's construction inverted).
+  const float z = s_.lens_radius > 0.f ? s_.focal_distance : 1.f;
+  const Vec3 focus = o + d * ((z - o.z) / d.z);
+  const Vec2 screen(focus.x / (focus.z * tan_half_fov_), focus.y / (focus.z * tan_half_fov_));
+  const Vec4& w = s_.screen_window;
+  const Vec2 p((screen.x - w[0]) / (w[1] - w[0]) * float(resolution_.x),
+               (w[3] - screen.y) / (w[3] - w[2]) * float(resolution_.y));
+  *p_raster = p;
+  return p.x >= 0.f && p.y >= 0.f && p.x <= float(resolution_.x) && p.y <= float(resolution_.y);
+}
+
+float PerspectiveCamera::we(const Ray& ray, Vec2* p_raster) const {
+  float cos_theta = 0.f;
+  Vec2 p(0.f);
+  const bool in = on_film(ray, &cos_theta, &p);
+  if (p_raster) *p_raster = p;
+  if (!in) return 0.f;
+  return 1.f / (film_area_ * lens_area_ * sqr(sqr(cos_theta)));
+}
+
+void PerspectiveCamera::pdf_we(const Ray& ray, float* pdf_pos, float* pdf_dir) const {
+  float cos_theta = 0.f;
+  Vec2 p(0.f);
+  if (!on_film(ray, &cos_theta, &p)) {
+    *pdf_pos = *pdf_dir = 0.f;
+    return;
+  }
+  *pdf_pos = 1.f / lens_area_;
+  *pdf_dir = 1.f / (film_area_ * cos_theta * cos_theta * cos_theta);
+}
+
+std::optional<CameraWiSample> PerspectiveCamera::sample_wi(const Vec3& p_ref, float time, Vec2 u) const {
+  Transform scratch;
+  const Transform& world_from_camera = placed_at(motion_, world_from_camera_, time, scratch);
+  const Vec2 lens = s_.lens_radius * sample_uniform_disk_concentric(u);
+  CameraWiSample cs;
+  cs.p_lens = world_from_camera.point(Vec3(lens, 0.f));
+  cs.n_lens = glm::normalize(world_from_camera.vector(Vec3(0.f, 0.f, 1.f)));
+  Vec3 wi = cs.p_lens - p_ref;
+  const float dist2 = glm::dot(wi, wi);
+  if (!(dist2 > 0.f)) return std::nullopt;
+  wi /= std::sqrt(dist2);
+  const float cos_lens = std::abs(glm::dot(cs.n_lens, wi));
+  if (!(cos_lens > 0.f)) return std::nullopt;  // grazing the lens plane: no film point sees it
+  cs.wi = wi;
+  cs.pdf = dist2 / (cos_lens * lens_area_);
+  cs.Wi = we(Ray{cs.p_lens, -wi, kInfinity, time}, &cs.p_raster);
+  if (!(cs.Wi > 0.f) || !std::isfinite(cs.pdf)) return std::nullopt;
+  return cs;
 }
 
 Vec3 PerspectiveCamera::camera_direction(Vec2 p) const {
@@ -46,7 +110,8 @@ const PluginSpec& perspective_camera_spec() {
   static const PluginSpec spec{
       "Camera",
       "a perspective projection, with an optional thin lens",
-      "`perspective` as pbrt-v4. `thinlens` is another name for it; `pinhole` is the same camera with "
+      "`perspective` as pbrt-v4, with its importance (We, PDF_We, SampleWi), so `bdpt` connects light paths to it "
+      "(t = 1). `thinlens` is another name for it; `pinhole` is the same camera with "
       "`lensradius` 0 (any other value is an error). Neither exists in pbrt-v4.",
       {
           param::real("fov", 90).open_range(0, 180).with_unit("deg").describe("across the shorter image axis"),

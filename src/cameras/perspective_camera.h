@@ -1,5 +1,7 @@
 // pbrt-v4's perspective camera: a pinhole, or a thin lens when lensradius > 0.
-// Registered as "perspective", "pinhole" (lens radius must be 0) and "thinlens".
+// Registered as "perspective", "pinhole" (lens radius must be 0) and "thinlens". It defines
+// importance (pbrt-v4's PerspectiveCamera::We, PDF_We, SampleWi), so bdpt connects light paths
+// to it (t = 1).
 #pragma once
 #include <memory>
 
@@ -27,6 +29,10 @@ class PerspectiveCamera : public Camera {
   std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;
   using Camera::generate_ray;
   std::string to_string() const override;
+  bool has_importance() const override { return true; }
+  float we(const Ray& ray, Vec2* p_raster = nullptr) const override;
+  void pdf_we(const Ray& ray, float* pdf_pos, float* pdf_dir) const override;
+  std::optional<CameraWiSample> sample_wi(const Vec3& p_ref, float time, Vec2 u) const override;
   // Camera-space direction (not normalised, z = 1) through a raster position.
   Vec3 camera_direction(Vec2 p_raster) const;
 
@@ -36,6 +42,12 @@ class PerspectiveCamera : public Camera {
   IVec2 resolution_;
   Settings s_;
   float tan_half_fov_;
+  float film_area_;  // of the full film on the camera-space plane z = 1 (pbrt-v4's A)
+  float lens_area_;  // pi r^2; 1 for a pinhole (pbrt-v4)
+
+  // cos theta of a world-space ray against the viewing axis, and where it lands on the film;
+  // false when it points away from the film or lands off it.
+  bool on_film(const Ray& ray, float* cos_theta, Vec2* p_raster) const;
 };
 
 const PluginSpec& perspective_camera_spec();  // perspective, thinlens, pinhole

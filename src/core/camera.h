@@ -51,6 +51,16 @@ struct CameraRay {
   IVec2 pixel_offset[kSpectrumSamples] = {};
 };
 
+// Light arriving at a point from the camera's lens (Camera::sample_wi, pbrt-v4's CameraWiSample).
+struct CameraWiSample {
+  float Wi = 0.f;      // importance the lens point sends towards the reference point
+  Vec3 wi{0.f};        // unit direction from the reference point to the lens point
+  float pdf = 0.f;     // density of the lens point, per unit solid angle at the reference point
+  Vec2 p_raster{0.f};  // where that ray lands on the full film, in pixels
+  Vec3 p_lens{0.f};    // the lens point (world)
+  Vec3 n_lens{0.f};    // the lens's normal (world): the camera's viewing axis
+};
+
 class Camera {
  public:
   virtual ~Camera() = default;
@@ -77,6 +87,25 @@ class Camera {
   // True when the camera may send a wavelength to another pixel (CameraRay::pixel_offset) for
   // samples that allow it (CameraSample::splat).
   virtual bool splats() const { return false; }
+
+  // Importance (pbrt-v4's We, PDF_We, SampleWi): an optional capability, which light tracing
+  // (bdpt's t = 1 strategies) needs. A camera without it (the default) is reached only
+  // through its own rays. Importance is normalised over the full film, whose raster is
+  // [0, resolution]: a ray that lands outside has none. Not spectral: one value for every
+  // wavelength.
+  virtual bool has_importance() const { return false; }
+  // The importance a ray leaving the lens carries (zero off the film); *p_raster, when given,
+  // receives where it lands.
+  virtual float we(const Ray& /*ray*/, Vec2* /*p_raster*/ = nullptr) const { return 0.f; }
+  // The densities with which generate_ray's rays would make `ray`: of its origin per unit lens
+  // area, of its direction per unit solid angle (as pbrt-v4, uniform over the film's area on the
+  // plane at distance 1). Zero off the film.
+  virtual void pdf_we(const Ray& /*ray*/, float* pdf_pos, float* pdf_dir) const { *pdf_pos = *pdf_dir = 0.f; }
+  // A lens point seen from `p_ref` at `time`, from a [0,1)^2 sample; empty when it has no
+  // importance there (behind the camera, off the film).
+  virtual std::optional<CameraWiSample> sample_wi(const Vec3& /*p_ref*/, float /*time*/, Vec2 /*u*/) const {
+    return std::nullopt;
+  }
   virtual std::string to_string() const = 0;
 
  private:

@@ -15,6 +15,10 @@ struct BdptIntegrator::Walk {
   Sampler& sampler;
   ScratchBuffer& arena;
   RayTally& tally;
+  LightSplats* splats = nullptr;  // t = 1 strategies go here; null: none
+  // The fewest camera vertices of a strategy used for this sample: 1 when the camera ray can
+  // be made by t = 1 too (splats, and the ray lands on the film), else 2.
+  int min_t = 2;
 };
 
 namespace {
@@ -71,13 +75,26 @@ BdptIntegrator::BdptIntegrator(const Scene& scene, int max_depth)
     : Integrator(scene), max_depth_(max_depth), lights_(scene.lights()), scene_radius_(scene_radius_of(scene)) {}
 
 std::string BdptIntegrator::to_string() const {
-  return fmt::format("bdpt integrator: maxdepth {}, {} light(s), power light sampling, strategies t >= {}", max_depth_,
-                     scene_.lights().size(), kMinCameraVertices);
+  return fmt::format("bdpt integrator: maxdepth {}, {} light(s), power light sampling, strategies {}", max_depth_,
+                     scene_.lights().size(),
+                     light_tracing_ ? "t >= 1 (t = 1 with a camera that has importance)" : "t >= 2");
 }
 
 SampledSpectrum BdptIntegrator::radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
                                          ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible) const {
   Walk w{sampler, arena, tally};
+  return estimate(ray, lambda, w, visible);
+}
+
+SampledSpectrum BdptIntegrator::radiance_and_splats(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
+                                                    ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible,
+                                                    LightSplats& splats) const {
+  Walk w{sampler, arena, tally, uses_light_splats(splats.camera()) ? &splats : nullptr};
+  return estimate(ray, lambda, w, visible);
+}
+
+SampledSpectrum BdptIntegrator::estimate(const Ray& ray, SampledWavelengths& lambda, Walk& w,
+                                         VisibleSurface* visible) const {
   // pbrt-v4's lengths: a camera subpath of up to maxdepth + 2 vertices (maxdepth bounces plus
   // the camera and a light found at the end), a light subpath of up to maxdepth + 1.
   // Per thread, kept between samples: no allocation per sample once grown.
@@ -95,21 +112,36 @@ SampledSpectrum BdptIntegrator::radiance(const Ray& ray, SampledWavelengths& lam
   // image its MIS weights give s = 1 (measured: 20 % too dark with a projection light; pbrt-v4
   // loops to nLight and has this bias where its SampleLe fails).
   const int s_max = std::max(n_light, 1);
-  for (int t = kMinCameraVertices; t <= n_camera; ++t)
+  for (int t = 2; t <= n_camera; ++t)
     for (int s = 0; s <= s_max; ++s) {
       const int depth = s + t - 2;
       if (depth > max_depth_) break;
       L += connect(lambda, light_path, camera_path, s, t, w);
     }
+  // t = 1: a light-path vertex seen by the camera (s = 1 would be a light seen directly,
+  // which s = 0 makes, as pbrt-v4 leaves out). connect() splats these.
+  if (w.splats)
+    for (int s = 2; s <= n_light && s - 1 <= max_depth_; ++s) connect(lambda, light_path, camera_path, s, 1, w);
   return L;
 }
 
 int BdptIntegrator::camera_subpath(const Ray& ray, SampledWavelengths& lambda, Walk& w, BdptVertex* path,
                                    VisibleSurface* visible) const {
   path[0] = endpoint(BdptVertexType::Camera, ray.o, Vec3(0.f), SampledSpectrum(1.f), ray.time);
-  // The camera's directional density only enters the weights of t = 1 strategies, which are
-  // not used: any positive value leaves every weight unchanged.
-  return random_walk(ray, lambda, w, SampledSpectrum(1.f), 1.f, max_depth_ + 1, false, path + 1, visible) + 1;
+  // The camera's directional density enters only the weights of t = 1 strategies; without
+  // them any positive value leaves every weight unchanged. A ray that lands off the film (a
+  // wide filter's samples beyond its edge) t = 1 cannot make: its weights leave t = 1 out.
+  float pdf_dir = 1.f;
+  w.min_t = 2;
+  if (w.splats) {
+    float pdf_pos = 0.f, dir = 0.f;
+    w.splats->camera().pdf_we(ray, &pdf_pos, &dir);
+    if (dir > 0.f && std::isfinite(dir)) {
+      pdf_dir = dir;
+      w.min_t = 1;
+    }
+  }
+  return random_walk(ray, lambda, w, SampledSpectrum(1.f), pdf_dir, max_depth_ + 1, false, path + 1, visible) + 1;
 }
 
 int BdptIntegrator::light_subpath(SampledWavelengths& lambda, float time, Walk& w, BdptVertex* path) const {
@@ -252,9 +284,18 @@ float BdptIntegrator::pdf_light_origin(const BdptVertex& lv, const BdptVertex& n
   return pdf_pos * lights_.pmf(light);
 }
 
-float BdptIntegrator::pdf(const BdptVertex& v, const BdptVertex* prev, const BdptVertex& next) const {
+float BdptIntegrator::pdf(const BdptVertex& v, const BdptVertex* prev, const BdptVertex& next,
+                          const Camera* camera) const {
   if (v.type == BdptVertexType::Light) return pdf_light(v, next);
-  // Only surface vertices are asked: the camera's density belongs to t = 1 strategies.
+  if (v.type == BdptVertexType::Camera) {
+    // The camera's directional density (t = 1 strategies only).
+    Vec3 wn = next.p() - v.p();
+    const float ln = glm::dot(wn, wn);
+    if (!camera || !(ln > 0.f)) return 0.f;
+    float pdf_pos = 0.f, pdf_dir = 0.f;
+    camera->pdf_we(Ray{v.p(), wn / std::sqrt(ln), kInfinity, v.si.time}, &pdf_pos, &pdf_dir);
+    return v.convert_density(pdf_dir, next);
+  }
   if (v.type != BdptVertexType::Surface || !prev) return 0.f;
   Vec3 wn = next.p() - v.p(), wp = prev->p() - v.p();
   const float ln = glm::dot(wn, wn), lp = glm::dot(wp, wp);
@@ -269,6 +310,22 @@ SampledSpectrum BdptIntegrator::connect(const SampledWavelengths& lambda, BdptVe
   if (s != 0 && pt.type == BdptVertexType::Light) return SampledSpectrum(0.f);
   SampledSpectrum L(0.f);
   BdptVertex sampled;
+  Vec2 p_raster(0.f);
+  if (t == 1) {
+    // A point on the lens sampled from a light-path vertex (pbrt-v4's t = 1 branch).
+    const BdptVertex& qs = light_path[s - 1];
+    const Vec2 u = w.sampler.get_2d();
+    if (!qs.connectible()) return L;
+    const std::optional<CameraWiSample> cs = w.splats->camera().sample_wi(qs.p(), qs.si.time, u);
+    if (!cs) return L;
+    p_raster = cs->p_raster;
+    sampled = endpoint(BdptVertexType::Camera, cs->p_lens, cs->n_lens, SampledSpectrum(cs->Wi / cs->pdf), qs.si.time);
+    L = qs.beta * qs.f(sampled, true) * sampled.beta;
+    if (qs.on_surface()) L *= std::abs(glm::dot(cs->wi, qs.ns()));
+    if (is_black(L) || !is_finite(L) || !unoccluded(qs, sampled, w)) return SampledSpectrum(0.f);
+    w.splats->add(p_raster, L * mis_weight(light_path, camera_path, sampled, s, t, w), lambda);
+    return SampledSpectrum(0.f);
+  }
   if (s == 0) {
     // The camera path found an emitter.
     L = emitted(pt, camera_path[t - 2], lambda) * pt.beta;
@@ -306,26 +363,29 @@ SampledSpectrum BdptIntegrator::connect(const SampledWavelengths& lambda, BdptVe
     if (!unoccluded(pt, qs, w)) return SampledSpectrum(0.f);
   }
   if (is_black(L) || !is_finite(L)) return SampledSpectrum(0.f);
-  return L * mis_weight(light_path, camera_path, sampled, s, t);
+  return L * mis_weight(light_path, camera_path, sampled, s, t, w);
 }
 
 float BdptIntegrator::mis_weight(BdptVertex* light_path, BdptVertex* camera_path, const BdptVertex& sampled, int s,
-                                 int t) const {
+                                 int t, const Walk& w) const {
   if (s + t == 2) return 1.f;
   BdptVertex* qs = s > 0 ? &light_path[s - 1] : nullptr;
   BdptVertex* pt = &camera_path[t - 1];
   BdptVertex* qs_minus = s > 1 ? &light_path[s - 2] : nullptr;
-  BdptVertex* pt_minus = &camera_path[t - 2];  // t >= 2
+  BdptVertex* pt_minus = t > 1 ? &camera_path[t - 2] : nullptr;
+  const Camera* camera = w.splats ? &w.splats->camera() : nullptr;
   // The strategy's own connection: its vertices as this strategy made them, then the reverse
   // densities that only the connection defines (pbrt-v4's a1 ... a7).
   Assign<BdptVertex> a1;
   if (s == 1) a1 = Assign<BdptVertex>(qs, sampled);
+  if (t == 1) a1 = Assign<BdptVertex>(pt, sampled);
   Assign<bool> a2(&pt->d.delta, false), a3;
   if (qs) a3 = Assign<bool>(&qs->d.delta, false);
   Assign<float> a4(&pt->d.pdf_rev, s > 0 ? pdf(*qs, qs_minus, *pt) : pdf_light_origin(*pt, *pt_minus));
-  Assign<float> a5(&pt_minus->d.pdf_rev, s > 0 ? pdf(*pt, qs, *pt_minus) : pdf_light(*pt, *pt_minus));
+  Assign<float> a5;
+  if (pt_minus) a5 = Assign<float>(&pt_minus->d.pdf_rev, s > 0 ? pdf(*pt, qs, *pt_minus) : pdf_light(*pt, *pt_minus));
   Assign<float> a6, a7;
-  if (qs) a6 = Assign<float>(&qs->d.pdf_rev, pdf(*pt, pt_minus, *qs));
+  if (qs) a6 = Assign<float>(&qs->d.pdf_rev, pdf(*pt, pt_minus, *qs, camera));
   if (qs_minus) a7 = Assign<float>(&qs_minus->d.pdf_rev, pdf(*qs, pt, *qs_minus));
 
   thread_local std::vector<BdptDensities> cam, lig;
@@ -334,19 +394,22 @@ float BdptIntegrator::mis_weight(BdptVertex* light_path, BdptVertex* camera_path
   for (int i = 0; i < t; ++i) cam[size_t(i)] = camera_path[i].d;
   for (int i = 0; i < s; ++i) lig[size_t(i)] = light_path[i].d;
   const bool delta_light = s > 0 && light_path[0].is_delta_light();
-  return bdpt_mis_weight(cam.data(), t, lig.data(), s, delta_light, kMinCameraVertices);
+  return bdpt_mis_weight(cam.data(), t, lig.data(), s, delta_light, w.min_t);
 }
 
 const PluginSpec& bdpt_integrator_spec() {
   static const PluginSpec spec{
       "Integrator",
       "bidirectional path tracing (pbrt-v4's algorithm and MIS weights), surfaces",
-      "Strategies with t >= 2 camera vertices only: a light path is never connected to the camera lens, so a caustic "
-      "of a point, spot or distant light on a diffuse surface seen directly is missed (as by `path`). "
-      "Scenes with participating media are rendered by `volpath`, with a warning. Infinite lights with a portal "
+      "Strategies t = 1 (light paths connected to the lens, splatted) with the perspective camera only; other "
+      "cameras, `--adaptive` and several MPI processes take t >= 2 alone, which miss a caustic of a point, spot or "
+      "distant light on a diffuse surface seen directly (as `path` does). Scenes with participating media are rendered "
+      "by `volpath`, with a warning. Infinite lights with a portal "
       "are refused. Rough refraction at light-path vertices takes the adjoint BSDF "
       "by reversing the pair.",
       {param::integer("maxdepth", 5).range(0, 10000).describe("bounces"),
+       param::boolean("lighttracing", true)
+           .describe("eyetrace's (not pbrt-v4's): `false` leaves out the t = 1 strategies"),
        param::boolean("regularize", false).describe("`true` warns and is ignored"),
        param::boolean("visualizestrategies", false).describe("`true` warns and is ignored"),
        param::boolean("visualizeweights", false).describe("`true` warns and is ignored")}};
@@ -368,7 +431,9 @@ std::unique_ptr<Integrator> create_bdpt_integrator(const IntegratorContext& ctx)
       throw SceneError(Diagnostic{p.loc(), "", Severity::Error,
                                   "integrator \"bdpt\" cannot start light paths from an infinite light seen through a "
                                   "portal; use \"path\" or \"volpath\""});
-  return std::make_unique<BdptIntegrator>(ctx.scene, max_depth);
+  auto bdpt = std::make_unique<BdptIntegrator>(ctx.scene, max_depth);
+  bdpt->set_light_tracing(p.get_bool("lighttracing"));
+  return bdpt;
 }
 
 }  // namespace eyetrace

@@ -10,6 +10,8 @@
 // and (sum + splat) / weight is the mean. Kept apart from the pixel's own sum so that each
 // sum receives its terms in an order that does not depend on how the render was cut into
 // passes (the integrator takes a tile's samples index by index, pixels within).
+// bdpt's light tracing (t = 1) adds to the same splat sums through add_splat, already weighted
+// by the pixel filter and its integral (render/light_splats.h), after each pass on one thread.
 //
 // A spectral film (pbrt-v4's Film "spectral") also keeps, per pixel, one sum per wavelength
 // bucket: equal buckets over [lambda_min, lambda_max]. A sample's wavelengths are the renderer's

@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
+#include "core/error.h"
 #include "render/film.h"
 
 namespace eyetrace {
@@ -49,8 +52,9 @@ class SampleBatch {
   // (box filter: see Film).
   // allow_splat false: every wavelength counts in the sample's own pixel only (adaptive
   // sampling gives the pixels of a tile different sample counts, which splats cannot share).
+  // light_splats: where the integrator's light splats go (null: radiance() alone).
   SampleBatch(const Integrator& integrator, const Camera& camera, Film& film, ThreadState& ts, RayTally& tally,
-              uint64_t& lost, const PixelBounds& tile, bool allow_splat)
+              uint64_t& lost, const PixelBounds& tile, bool allow_splat, LightSplats* light_splats)
       : integrator_(integrator),
         camera_(camera),
         film_(film),
@@ -58,7 +62,8 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        splat_(allow_splat && camera.splats() && film.filter().constant()) {}
+        splat_(allow_splat && camera.splats() && film.filter().constant()),
+        light_splats_(light_splats) {}
   bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
 
@@ -93,7 +98,13 @@ class SampleBatch {
     SampledWavelengths& lambda = lambdas_[i];
     VisibleSurface visible;
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
-    SampledSpectrum L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs);
+    SampledSpectrum L(0.f);
+    if (light_splats_) {
+      light_splats_->start_sample(indices_[i]);
+      L = integrator_.radiance_and_splats(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs, *light_splats_);
+    } else {
+      L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs);
+    }
     ts_.arena.reset();
     if (vs && visible.set)
       set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
@@ -120,6 +131,7 @@ class SampleBatch {
   uint64_t& lost_;
   PixelBounds tile_;
   bool splat_;
+  LightSplats* light_splats_;
   IVec2 pixels_[kCameraBatch];
   int indices_[kCameraBatch];
   CameraSample samples_[kCameraBatch];
@@ -155,7 +167,12 @@ class RenderLoop {
         states_([&] {
           return ThreadState{sampler.clone(), ScratchBuffer()};
         }),
-        arena_(opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency()) {
+        arena_(opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency()),
+        light_splats_(integrator.uses_light_splats(camera) && !tp.adaptive() && group.size() == 1) {
+    if (light_splats_) {
+      tile_splats_.assign(tp_.done.size(), LightSplats(camera));
+      splatter_.emplace(film);
+    }
     total_ = double(own_area()) * spp_;
     for (size_t t = 0; t < tp_.done.size(); ++t)
       if (group_.owns_tile(t, tp_.done.size())) samples_done_ += own_samples(t);
@@ -167,12 +184,15 @@ class RenderLoop {
       // Tiles behind (a resumed film stopped mid-pass) catch up first, to the same target.
       const int first = group_.min(own_min_done());
       if (group_.any(stopped()) || first >= spp_) break;
-      const int end = std::min(spp_, first + pass);
+      int end = std::min(spp_, first + pass);
+      if (light_splats_) end = std::min(end, first + light_splat_pass_cap());
       const double seconds = group_.max(timed_pass([&](size_t t) {
         if (tp_.done[t] >= end) return;
         render_tile(t, [&](IVec2) { return std::pair(tp_.done[t], end); });
         tp_.done[t] = end;
       }));
+      // Every tile has finished the pass (a stop waits for it with light splats).
+      if (light_splats_) splatter_->flush(film_, tile_splats_, first, end);
       if (group_.any(stopped())) break;
       if (opts_.on_pass) opts_.on_pass(tp_);
       if (opts_.pass_samples <= 0) pass = next_pass_samples(end - first, seconds, opts_.pass_seconds);
@@ -250,6 +270,12 @@ class RenderLoop {
     }
     return r;
   }
+  // The most samples per pixel a pass may take with light splats: kLightSplatPassSamples camera
+  // samples, at least one per pixel.
+  int light_splat_pass_cap() const {
+    const uint64_t area = std::max<uint64_t>(1, own_area());
+    return int(std::clamp<uint64_t>(kLightSplatPassSamples / area, 1, uint64_t(spp_)));
+  }
   int own_min_done() const {
     int m = spp_;
     for (size_t t = 0; t < tp_.done.size(); ++t)
@@ -265,7 +291,7 @@ class RenderLoop {
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, tp_.done.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t t = r.begin(); t != r.end(); ++t)
-          if (group_.owns_tile(t, tp_.done.size()) && !stopped()) body(t);
+          if (group_.owns_tile(t, tp_.done.size()) && (light_splats_ || !stopped())) body(t);
       });
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -282,8 +308,9 @@ class RenderLoop {
     RayTally tally;
     uint64_t lost = 0, n = 0;
     {
-      SampleBatch batch(integrator_, camera_, film_, ts, tally, lost, tb, !tp_.adaptive());
-      if (batch.splats()) {
+      SampleBatch batch(integrator_, camera_, film_, ts, tally, lost, tb, !tp_.adaptive(),
+                        light_splats_ ? &tile_splats_[t] : nullptr);
+      if (batch.splats() || light_splats_) {
         // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
         // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
         // mono eye on the figure scene), so only where splats happen (uniform renders, where
@@ -327,6 +354,9 @@ class RenderLoop {
   std::atomic<uint64_t> samples_done_{0};
   std::mutex progress_mutex_;
   std::chrono::steady_clock::time_point last_report_ = std::chrono::steady_clock::now();
+  const bool light_splats_;
+  std::vector<LightSplats> tile_splats_;  // per tile: its splats of the pass in flight
+  std::optional<LightSplatter> splatter_;
 };
 
 }  // namespace
@@ -350,6 +380,11 @@ void Integrator::render(const Camera& camera, const Sampler& sampler, Film& film
   }
   if (!tp.matches(b) || tp.adaptive() != bool(adaptive) || (adaptive && tp.pixel_done.size() != b.area()))
     throw std::invalid_argument("Integrator::render: tile progress does not match the film");
+  if (uses_light_splats(camera) && (adaptive || group.size() > 1))
+    warn(SourceLoc{}, adaptive ? "--adaptive: the integrator's light tracing strategies (bdpt, t = 1) need the same "
+                                 "samples in every pixel; they are not used"
+                               : "several processes: the integrator's light tracing strategies (bdpt, t = 1) "
+                                 "add light to other ranks' pixels; they are not used");
   RenderLoop loop(*this, camera, sampler, film, opts, counters, tp, group);
   if (adaptive)
     loop.adaptive(*adaptive);

@@ -14,6 +14,7 @@
 #include "core/sampler.h"
 #include "core/visible_surface.h"
 #include "render/adaptive_sampling.h"
+#include "render/light_splats.h"
 #include "render/render_group.h"
 #include "render/tile_progress.h"
 
@@ -53,10 +54,13 @@ struct RenderOptions {
   // Out: where the render stopped. Null: the render keeps its own.
   TileProgress* tiles = nullptr;
   // Checked before each tile: once true, tiles not yet started in the pass are skipped and
-  // render() returns (tiles in flight finish their pass range, so every tile stays whole).
+  // render() returns (tiles in flight finish their pass range, so every tile stays whole). With
+  // light splats the pass is finished first, so that every tile's splats are in the film.
   const std::atomic<bool>* stop = nullptr;
   // Samples per pixel in each pass; 0 picks pass sizes so that a pass takes about
   // pass_seconds (1, 2, 4, ... samples, at most doubling). The image does not depend on it.
+  // With light splats a pass is at most kLightSplatPassSamples camera samples (at least one
+  // sample per pixel), which bounds the splats held until the pass ends.
   int pass_samples = 0;
   double pass_seconds = 1.0;
   // Called after every complete pass, on the calling thread, with no tile in flight: the
@@ -75,6 +79,7 @@ struct RenderOptions {
 // The camera dimensions of one sample (pixel 2-D, lens 2-D, time, wavelength), drawn at the
 // start of sample `index` of `pixel`; the integrator continues at dimension kCameraDimensions.
 inline constexpr int kCameraDimensions = 6;
+inline constexpr uint64_t kLightSplatPassSamples = uint64_t(1) << 18;
 CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index);
 
 class Integrator {
@@ -88,6 +93,18 @@ class Integrator {
   virtual SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
                                    RayTally& tally, VisibleSurface* visible = nullptr) const = 0;
   virtual std::string to_string() const = 0;
+
+  // Light splatting (render/light_splats.h): an integrator whose samples can also add light to
+  // other pixels through `camera` (bdpt's t = 1 strategies) says so here, and makes that
+  // estimate in radiance_and_splats, while radiance() makes the estimate without them (the
+  // same expectation). The tile loop uses it in uniform renders of one process; adaptive
+  // sampling and several processes take radiance() (see render()).
+  virtual bool uses_light_splats(const Camera& /*camera*/) const { return false; }
+  virtual SampledSpectrum radiance_and_splats(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
+                                              ScratchBuffer& arena, RayTally& tally, VisibleSurface* visible,
+                                              LightSplats& /*splats*/) const {
+    return radiance(ray, lambda, sampler, arena, tally, visible);
+  }
 
   // Renders every pixel of film's pixel bounds with `sampler`'s samples per pixel. Virtual for
   // integrators that need a loop of their own (sppm: camera and photon passes per iteration);

@@ -1,5 +1,6 @@
 // The MIS weights of bidirectional path tracing (integrators/bdpt_mis.h) on random paths: for
-// every path, the weights of the strategies the renderer uses (t >= 2 camera vertices, both
+// every path, the weights of the strategies the renderer uses (t >= 1 camera vertices with a
+// camera that has importance, t >= 2 without (or for a camera ray off the film), both
 // connection vertices non-specular, s = 0 only for a light that can be hit) sum to 1, which is
 // what makes the estimator unbiased; and each equals the balance heuristic computed directly
 // from the product of the vertex densities of its strategy (an independent formula).

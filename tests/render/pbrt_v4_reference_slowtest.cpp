@@ -214,11 +214,14 @@ TEST(PbrtV4Reference, CameraShutterIntervalIsTheExposureTime) { expect_matches_p
 // Motion blur: a moving, growing sphere (an animated shape), a turning box (an animated
 // ObjectInstance) and a panning camera, with the shutter reaching past the end time.
 TEST(PbrtV4Reference, MotionBlurOfShapeInstanceAndCameraPastTheEndTime) { expect_matches_pbrt_v4("motion"); }
-// pbrt-v4's bidirectional path tracer against eyetrace's (strategies with t >= 2 only: no
-// specular surface here, so the same image in expectation).
+// pbrt-v4's bidirectional path tracer against eyetrace's (both with t = 1 strategies; the
+// image does not depend on them in expectation, here without specular surfaces).
 TEST(PbrtV4Reference, BdptIntegratorInABoxLitFromAbove) { expect_matches_pbrt_v4("bdpt"); }
 // The same with light paths from a point, a spot and a distant light (Light::sample_le).
 TEST(PbrtV4Reference, BdptIntegratorWithPointSpotAndDistantLights) { expect_matches_pbrt_v4("bdpt-lights"); }
+// bdpt's t = 1 strategies: the caustic a glass sphere focuses from a point light onto a diffuse
+// floor, seen directly, which only light paths connected to the camera carry.
+TEST(PbrtV4Reference, BdptCausticOfAPointLightSeenDirectly) { expect_matches_pbrt_v4("bdpt-caustic"); }
 // Stochastic progressive photon mapping, at the same radius, iterations (128: the test's samples
 // per pixel, and pbrt-v4's --spp) and photons on both sides, so that both carry the same
 // finite-radius bias. Pixels share photons, so they are not independent as the relative-MSE
