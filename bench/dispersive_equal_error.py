@@ -5,12 +5,12 @@
 # the eyetrace processes), so other load on the machine does not skew the ratio.
 # Usage: bench/dispersive_equal_error.py [box|gaussian]  (the figure scene's pixel filter is a
 # box; "gaussian" renders it with pbrt-v4's default filter instead). Run from anywhere after
-# building build/bin/eyetrace; writes its renders into the current directory. About 3 minutes.
+# building build/bin/eyetrace (or with EYETRACE=path/to/eyetrace); writes its renders into the current directory. About 3 minutes.
 import json, math, os, resource, subprocess, sys
 import numpy as np, OpenImageIO as oiio
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-B = os.path.join(ROOT, "build/bin/eyetrace")
+B = os.environ.get("EYETRACE", os.path.join(ROOT, "build/bin/eyetrace"))  # another build: EYETRACE=path
 FILTER = sys.argv[1] if len(sys.argv) > 1 else "box"
 CAMS = {"mono": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
         "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3'}

@@ -228,15 +228,26 @@ std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, 
   optics::TraceResult forward[kSpectrumSamples - 1];
   for (int k = 1; k < kSpectrumSamples; ++k)
     forward[k - 1] = system_.trace_range(back_in(hero), 0, system_.image_index(), double(lambda[k]));
-  weigh_wavelengths(cs, lambda, pending, forward, &*ray);
+  weigh_wavelengths(cs, lambda, pending, forward, &*ray, nullptr);
   return ray;
+}
+
+void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelengths* lambdas,
+                                     std::optional<CameraRay>* rays, size_t count) const {
+  trace_rays(samples, lambdas, rays, nullptr, count);
+}
+
+void LensSystemCamera::generate_rays_splatting(const CameraSample* samples, SampledWavelengths* lambdas,
+                                               std::optional<CameraRay>* rays, SampleSplats* splats,
+                                               size_t count) const {
+  trace_rays(samples, lambdas, rays, splats, count);
 }
 
 // The batch trace overlaps the rays' latency chains. A dispersive eye traces the hero
 // wavelength; with the pixel's filter known, the secondaries' rays are traced back in for
 // spectral MIS, else they are terminated.
-void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelengths* lambdas,
-                                     std::optional<CameraRay>* rays, size_t count) const {
+void LensSystemCamera::trace_rays(const CameraSample* samples, SampledWavelengths* lambdas,
+                                  std::optional<CameraRay>* rays, SampleSplats* splats, size_t count) const {
   constexpr size_t kBatch = optics::kTraceBatchSize;
   constexpr int kSecondary = kSpectrumSamples - 1;
   PendingRay pending[kBatch];
@@ -273,7 +284,8 @@ void LensSystemCamera::generate_rays(const CameraSample* samples, SampledWavelen
     for (size_t j = 0; j < live; ++j) {
       const size_t i = index[j];
       if (!dispersive_ || !rays[i] || lambdas[i].secondary_terminated()) continue;
-      weigh_wavelengths(samples[i], lambdas[i], pending[j], forward_results + mis, &*rays[i]);
+      weigh_wavelengths(samples[i], lambdas[i], pending[j], forward_results + mis, &*rays[i],
+                        splats ? splats + i : nullptr);
       mis += kSecondary;
     }
   }

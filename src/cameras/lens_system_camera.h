@@ -26,13 +26,14 @@
 #include "cameras/wave_psf_table.h"
 #include "core/animated_transform.h"
 #include "core/camera.h"
+#include "core/splatting_camera.h"
 #include "optics/prescription.h"
 #include "optics/sequential_trace.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 
-class LensSystemCamera : public Camera {
+class LensSystemCamera : public Camera, public SplattingCamera {
  public:
   struct Settings {
     FieldMapping mapping = FieldMapping::Angle;
@@ -63,6 +64,10 @@ class LensSystemCamera : public Camera {
   std::optional<CameraRay> generate_ray(const CameraSample& sample, SampledWavelengths& lambda) const override;
   void generate_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
                      size_t count) const override;
+  // With a smooth pixel filter, the dispersive eye's wavelengths splat with the filter's weights
+  // around where they land (spectral_mis.cpp).
+  void generate_rays_splatting(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
+                               SampleSplats* splats, size_t count) const override;
   using Camera::generate_ray;
   using Camera::generate_rays;
   // Spectral MIS needs each wavelength's density of the ray, which diffraction makes a
@@ -120,13 +125,18 @@ class LensSystemCamera : public Camera {
   void build_psf_table(double corner_arc);
   // Spectral MIS: the ray that left the eye at the hero wavelength, traced back in at each
   // secondary wavelength (forward[k - 1] for wavelength k), weighs every wavelength.
+  // splats: null, or (smooth filter) where each wavelength splats.
   void weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
-                         const optics::TraceResult* forward, CameraRay* out) const;
-  WavelengthTerms hero_terms(const CameraSample& cs, const PendingRay& hero, double lambda_nm) const;
+                         const optics::TraceResult* forward, CameraRay* out, SampleSplats* splats) const;
+  WavelengthTerms hero_terms(const CameraSample& cs, const PendingRay& hero, double lambda_nm,
+                             WavelengthSplat* spread) const;
   WavelengthTerms secondary_terms(const CameraSample& cs, glm::dvec2 pixel_centre, const optics::TraceResult& forward,
-                                  double lambda_nm) const;
+                                  double lambda_nm, WavelengthSplat* spread) const;
   double filter_at(const CameraSample& cs, glm::dvec2 pixel_centre, double screen_radius, glm::dvec2 meridian,
-                   IVec2* offset) const;
+                   IVec2* offset, WavelengthSplat* spread) const;
+  static double spread_at(const CameraSample& cs, glm::dvec2 raster, WavelengthSplat* spread);
+  void trace_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
+                  SampleSplats* splats, size_t count) const;
   static double area_jacobian(double screen_radius, double height, double slope);
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation(const optics::CompiledSystem& system);

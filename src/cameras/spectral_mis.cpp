@@ -27,6 +27,21 @@
 // sample's own tile (so each pixel is written by one thread); the techniques whose landing
 // pixels lie in that tile share the weight (the balance heuristic over them: for a pair of
 // wavelengths "both in one tile" is symmetric, so the weights of every ray still sum to 1).
+//
+// With a smooth filter (generate_rays_splatting) every wavelength k splats into every pixel P'
+// of the sample's tile T whose filter reaches its landing point s_k, with the filter's value
+// f_P'(s_k), as pbrt-v3 splatted whole samples. The techniques are then "a sample of any pixel
+// P of T, hero wavelength j", and the balance heuristic over all of them uses
+// u_j = D(s_j) / (area n^2 G J)_j with D(s) = sum over P in T of |f_P(s)| (the filter's
+// density, up to its normalisation, summed over the pixels whose samples could have put their
+// hero at s). The sample that was drawn, from pixel P with density pdf_P(s_0) = |f_P(s_0)| /
+// (|filter_weight| integral f), then gives pixel P' at wavelength k
+//     |filter_weight| 4 C f_P'(s_k) L_k / (n_k^2 J(s_k) sum_j u_j):
+// the weights of every ray sum to 1 over all (P, j) for every target pixel, and the sampler's
+// own filter weight carries the difference between its tabulated density and |f| / integral f,
+// so the estimate of every pixel is unbiased. On a sample whose four wavelengths land together
+// this is the pbrt-v3 splat f_P'(s) / D(s) of the whole sample, without its colour noise.
+#include <algorithm>
 #include <cmath>
 
 #include "cameras/lens_system_camera.h"
@@ -37,11 +52,12 @@ namespace eyetrace {
 // relative to the centre of the sample's pixel; 0 outside the filter's support. A sample that
 // may splat (constant filter) counts the point in whichever pixel of its tile holds it: offset
 // receives that pixel's position relative to the sample's own.
-double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, double rho, glm::dvec2 m,
-                                   IVec2* offset) const {
+double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, double rho, glm::dvec2 m, IVec2* offset,
+                                   WavelengthSplat* spread) const {
   // Upright image: retina direction (mx, my) is screen direction (mx, -my) (see the header).
   const double px = (rho * m.x - screen_window_[0]) * inv_screen_scale_.x;
   const double py = (screen_window_[3] + rho * m.y) * inv_screen_scale_.y;
+  if (spread) return spread_at(cs, glm::dvec2(px, py), spread);
   if (cs.splat) {
     const IVec2 pixel(int(std::floor(px)), int(std::floor(py)));
     if (!(pixel.x >= cs.splat_lo.x && pixel.y >= cs.splat_lo.y && pixel.x < cs.splat_hi.x && pixel.y < cs.splat_hi.y))
@@ -54,6 +70,35 @@ double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, do
   return cs.filter->evaluate(o);
 }
 
+// A smooth filter's splat of a wavelength landing at raster point s: the pixels of the tile whose
+// filter reaches s, the filter's one-dimensional factors there (Filter::evaluate_axis), and
+// D(s), the sum of |f| over those pixels; 0 when no pixel of the tile is reached.
+double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, WavelengthSplat* spread) {
+  const Filter& f = *cs.filter;
+  const Vec2 r = f.radius();
+  // Pixel x (centre x + 0.5) is reached when |s.x - x - 0.5| <= r.x.
+  const int x0 = std::max(cs.splat_lo.x, int(std::ceil(s.x - 0.5 - r.x)));
+  const int x1 = std::min(cs.splat_hi.x - 1, int(std::floor(s.x - 0.5 + r.x)));
+  const int y0 = std::max(cs.splat_lo.y, int(std::ceil(s.y - 0.5 - r.y)));
+  const int y1 = std::min(cs.splat_hi.y - 1, int(std::floor(s.y - 0.5 + r.y)));
+  spread->nx = spread->ny = 0;
+  if (!(x1 >= x0 && y1 >= y0 && std::isfinite(s.x) && std::isfinite(s.y))) return 0.0;
+  spread->first = IVec2(x0, y0);
+  spread->nx = std::min(x1 - x0 + 1, WavelengthSplat::kMaxSpan);
+  spread->ny = std::min(y1 - y0 + 1, WavelengthSplat::kMaxSpan);
+  double sx = 0.0, sy = 0.0;
+  for (int i = 0; i < spread->nx; ++i) {
+    spread->wx[i] = f.evaluate_axis(float(s.x - (x0 + i + 0.5)), 0);
+    sx += std::abs(spread->wx[i]);
+  }
+  for (int i = 0; i < spread->ny; ++i) {
+    spread->wy[i] = f.evaluate_axis(float(s.y - (y0 + i + 0.5)), 1);
+    sy += std::abs(spread->wy[i]);
+  }
+  if (!(sx * sy > 0.0)) spread->nx = spread->ny = 0;
+  return sx * sy;
+}
+
 // Retina area per screen area at screen radius rho (arc a at height h, d arc / d rho = slope):
 // the mapping is radial, so it is (d arc / d rho) (h / rho), which tends to slope^2 at the
 // centre (dh / da = 1 there).
@@ -62,9 +107,11 @@ double LensSystemCamera::area_jacobian(double rho, double h, double slope) {
 }
 
 LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSample& cs, const PendingRay& hero,
-                                                               double lambda_nm) const {
+                                                               double lambda_nm, WavelengthSplat* spread) const {
   WavelengthTerms t;
-  t.filter = cs.splat ? 1.0 : cs.filter->evaluate(cs.filter_offset);
+  t.filter = spread     ? spread_at(cs, glm::dvec2(cs.p_film), spread)
+             : cs.splat ? 1.0
+                        : cs.filter->evaluate(cs.filter_offset);
   double slope = 0.0;
   if (mapping_.screen_radius_for_arc(hero.arc, angles_, &slope) < 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
@@ -82,7 +129,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
 // retina (the trace's end) and the sampling plane (its straight path in the vitreous).
 LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const CameraSample& cs, glm::dvec2 centre,
                                                                     const optics::TraceResult& forward,
-                                                                    double lambda_nm) const {
+                                                                    double lambda_nm, WavelengthSplat* spread) const {
   if (!forward.ok()) return {};
   const glm::dvec3& x = forward.ray.origin;
   const glm::dvec3 dir = glm::normalize(forward.ray.direction);  // towards the retina (+z)
@@ -95,7 +142,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const double rho = mapping_.screen_radius_for_arc(a, angles_, &slope);
   if (rho < 0.0) return {};
   WavelengthTerms t;
-  t.filter = filter_at(cs, centre, rho, m, &t.offset);
+  t.filter = filter_at(cs, centre, rho, m, &t.offset, spread);
   if (t.filter == 0.0) return {};
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
   glm::dvec2 p, nr;
@@ -112,9 +159,12 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
 }
 
 void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWavelengths& lambda, const PendingRay& hero,
-                                         const optics::TraceResult* forward, CameraRay* out) const {
+                                         const optics::TraceResult* forward, CameraRay* out,
+                                         SampleSplats* splats) const {
+  // Splats with a smooth filter (see the top of the file); a box filter keeps its own splats.
+  WavelengthSplat* spread = splats && cs.splat && !cs.filter->constant() ? splats->wavelength : nullptr;
   WavelengthTerms terms[kSpectrumSamples];
-  terms[0] = hero_terms(cs, hero, lambda[0]);
+  terms[0] = hero_terms(cs, hero, lambda[0], spread);
   if (!(terms[0].u > 0.0 && std::isfinite(terms[0].u))) {
     lambda.terminate_secondary();  // the hero alone, with its plain weight (never seen in tests)
     return;
@@ -124,8 +174,17 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
   const glm::dvec2 centre(std::floor(double(cs.p_film.x) - double(cs.filter_offset.x)) + 0.5,
                           std::floor(double(cs.p_film.y) - double(cs.filter_offset.y)) + 0.5);
   for (int k = 1; k < kSpectrumSamples; ++k) {
-    terms[k] = secondary_terms(cs, centre, forward[k - 1], lambda[k]);
+    terms[k] = secondary_terms(cs, centre, forward[k - 1], lambda[k], spread ? spread + k : nullptr);
     sum_u += terms[k].u;
+  }
+  if (spread) {
+    const double scale = kSpectrumSamples * normalisation_ / sum_u;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      const double w = terms[k].filter == 0.0 ? 0.0 : scale / terms[k].n2_jacobian;
+      out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;
+      if (out->weight[k] == 0.f) spread[k].nx = spread[k].ny = 0;
+    }
+    return;
   }
   const double scale = kSpectrumSamples * normalisation_ * (terms[0].filter < 0.0 ? -1.0 : 1.0) / sum_u;
   for (int k = 0; k < kSpectrumSamples; ++k) {

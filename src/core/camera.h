@@ -30,8 +30,10 @@ struct CameraSample {
   const Filter* filter = nullptr;
   Vec2 filter_offset{0.f};
   // The pixels (absolute raster bounds [lo, hi), the sample's tile) into which the camera may
-  // send a wavelength that landed in another pixel (CameraRay::pixel_offset), with a constant
-  // filter only. Without: each wavelength counts in the sample's own pixel or not at all.
+  // send a wavelength that landed in another pixel: with a constant filter by
+  // CameraRay::pixel_offset, with a smooth one by the filter's weights around the landing point
+  // (core/splatting_camera.h). Without: each wavelength counts in the sample's own pixel or not
+  // at all.
   bool splat = false;
   IVec2 splat_lo{0}, splat_hi{0};
 };

@@ -19,6 +19,13 @@ class Filter {
   virtual Vec2 radius() const = 0;
   virtual float evaluate(Vec2 p) const = 0;
   virtual FilterSample sample(Vec2 u) const = 0;
+  // Every filter is a product of one-dimensional factors, f(x, y) = evaluate_axis(x, 0) *
+  // evaluate_axis(y, 1) (tests/filters/separable_filters_test.cpp): a dispersive eye splats
+  // with them (core/wavelength_splat.h). The default divides out f(0, 0); filters override it
+  // where the factor is cheaper on its own.
+  virtual float evaluate_axis(float t, int axis) const {
+    return axis == 0 ? evaluate(Vec2(t, 0.f)) / evaluate(Vec2(0.f)) : evaluate(Vec2(0.f, t));
+  }
   // True when the filter has one value over its whole support (a box): every sample then has
   // weight 1, and radiance may be splatted to another pixel without changing the pixel's weight.
   virtual bool constant() const { return false; }

@@ -32,21 +32,22 @@ GaussianFilter::GaussianFilter(Vec2 radius, float sigma)
     : radius_(radius),
       sigma_(sigma),
       integral_(float(shifted_gaussian_integral(radius.x, sigma) * shifted_gaussian_integral(radius.y, sigma))),
+      norm_(1.0 / std::sqrt(std::numbers::pi * (2.0 * double(sigma) * double(sigma)))),
+      edge_{std::exp(-double(radius.x) * radius.x / (2.0 * double(sigma) * double(sigma))),
+            std::exp(-double(radius.y) * radius.y / (2.0 * double(sigma) * double(sigma)))},
       sampler_(*this, table_cells(radius, sigma), integral_) {}
 
-double GaussianFilter::shifted_gaussian(double x, double r) const {
+double GaussianFilter::shifted_gaussian(double x, int axis) const {
+  const double r = radius_[axis];
   if (std::abs(x) >= r) return 0.0;
   double s2 = 2.0 * double(sigma_) * double(sigma_);
-  double norm = 1.0 / std::sqrt(std::numbers::pi * s2);
   double a = (r * r - x * x) / s2;
   // Close to the radius G(x) - G(r) cancels: G(r) (e^a - 1) keeps the digits.
-  if (a < 1.0) return norm * std::exp(-r * r / s2) * std::expm1(a);
-  return norm * (std::exp(-x * x / s2) - std::exp(-r * r / s2));
+  if (a < 1.0) return norm_ * edge_[axis] * std::expm1(a);
+  return norm_ * (std::exp(-x * x / s2) - edge_[axis]);
 }
 
-float GaussianFilter::evaluate(Vec2 p) const {
-  return float(shifted_gaussian(p.x, radius_.x) * shifted_gaussian(p.y, radius_.y));
-}
+float GaussianFilter::evaluate(Vec2 p) const { return float(shifted_gaussian(p.x, 0) * shifted_gaussian(p.y, 1)); }
 
 std::string GaussianFilter::to_string() const {
   return fmt::format("GaussianFilter[xradius={} yradius={} sigma={}]", radius_.x, radius_.y, sigma_);

@@ -16,6 +16,7 @@ class GaussianFilter : public Filter {
   GaussianFilter(Vec2 radius, float sigma);
   Vec2 radius() const override { return radius_; }
   float evaluate(Vec2 p) const override;
+  float evaluate_axis(float t, int axis) const override { return float(shifted_gaussian(t, axis)); }
   FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
   std::string to_string() const override;
   float integral() const { return integral_; }
@@ -24,12 +25,15 @@ class GaussianFilter : public Filter {
   static float min_sigma(Vec2 radius);
 
  private:
-  // g(x) for |x| < r, 0 beyond.
-  double shifted_gaussian(double x, double r) const;
+  // g(x) for |x| < r, 0 beyond, r the radius along `axis`.
+  double shifted_gaussian(double x, int axis) const;
 
   Vec2 radius_;
   float sigma_;
   float integral_;
+  // Constants of shifted_gaussian, set before the sampler tabulates evaluate(): 1 / sqrt(pi s2)
+  // and G(r) / norm = exp(-r^2 / s2) per axis (s2 = 2 sigma^2).
+  double norm_, edge_[2];
   filter_sampling::FilterSampler sampler_;
 };
 

@@ -133,6 +133,31 @@ bool Film::add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelen
   return true;
 }
 
+bool Film::add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  const RGB rgb = sample_rgb(L, lambda);
+  int bucket[kSpectrumSamples];
+  double term[kSpectrumSamples];
+  if (!(is_finite(rgb) &&
+        (!buckets_.spectral() || bucket_terms(clamped_radiance(L, lambda), lambda, 1.f, bucket, term)))) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  for (int r = 0; r < s.ny; ++r)
+    for (int c = 0; c < s.nx; ++c) {
+      const double w = double(s.wx[c]) * double(s.wy[r]);
+      const size_t i_px = index(s.first + IVec2(c, r));
+      Pixel& px = pixels_[i_px];
+      px.splat[0] += w * rgb.r;
+      px.splat[1] += w * rgb.g;
+      px.splat[2] += w * rgb.b;
+      if (!buckets_.spectral()) continue;
+      double* splats = &bucket_sums_[(i_px * 2 + 1) * size_t(buckets_.count)];
+      for (int i = 0; i < kSpectrumSamples; ++i)
+        if (bucket[i] >= 0) splats[bucket[i]] += w * term[i];
+    }
+  return true;
+}
+
 RGB Film::pixel_value(IVec2 p) const {
   const Pixel& px = pixels_[index(p)];
   if (px.weight == 0) return RGB(0.f);

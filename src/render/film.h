@@ -9,7 +9,9 @@
 // weight: a box filter gives every sample weight 1, so the pixel's weight counts its samples
 // and (sum + splat) / weight is the mean. Kept apart from the pixel's own sum so that each
 // sum receives its terms in an order that does not depend on how the render was cut into
-// passes (the integrator takes a tile's samples index by index, pixels within).
+// passes (the integrator takes a tile's samples index by index, pixels within). With a smooth
+// filter each wavelength splats into the pixels around where it landed, with the filter's
+// weights (add_splats), again within the tile.
 // bdpt's light tracing (t = 1) adds to the same splat sums through add_splat, already weighted
 // by the pixel filter and its integral (render/light_splats.h), after each pass on one thread.
 //
@@ -43,6 +45,7 @@
 #include "core/filter.h"
 #include "core/math.h"
 #include "core/spectrum.h"
+#include "core/wavelength_splat.h"
 #include "render/gbuffer.h"
 #include "render/image_io.h"
 #include "render/pixel_sensor.h"
@@ -141,6 +144,10 @@ class Film {
   // Adds radiance L, already weighted, to `pixel`'s splat sums (R, G, B and, for a spectral
   // film, the buckets). Returns false (and counts it) when any term is not finite.
   bool add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda);
+  // The same for a block of pixels, pixel (first.x + c, first.y + r) receiving L times
+  // s.wx[c] * s.wy[r] (a dispersive eye's wavelength splatted with a smooth filter's weights):
+  // the colour is formed (and clamped) once, for L.
+  bool add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const SampledWavelengths& lambda);
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;

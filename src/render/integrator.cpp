@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/splatting_camera.h"
 #include "render/film.h"
 
 namespace eyetrace {
@@ -42,6 +43,16 @@ struct ThreadState {
 // which hides the latency of their dependent surface-by-surface arithmetic.
 constexpr int kCameraBatch = 16;
 
+// The camera that splats a smooth filter's weights around each wavelength's landing point, when
+// this render can use it: a dispersive camera that does, a filter that is not constant (a box
+// has its own splats) and not wider than the splats serve.
+const SplattingCamera* smooth_splatter(const Camera& camera, const Filter& filter) {
+  if (!camera.splats() || filter.constant()) return nullptr;
+  const Vec2 r = filter.radius();
+  if (!(r.x <= SplattingCamera::kMaxFilterRadius && r.y <= SplattingCamera::kMaxFilterRadius)) return nullptr;
+  return dynamic_cast<const SplattingCamera*>(&camera);
+}
+
 // Collects camera samples in the order the tile loop makes them and, per batch, generates
 // their rays together and integrates each in the same order: the image is bit for bit the
 // one of a sample-at-a-time loop, since every sample's stream restarts at its own
@@ -62,7 +73,8 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        splat_(allow_splat && camera.splats() && film.filter().constant()),
+        smooth_(allow_splat ? smooth_splatter(camera, film.filter()) : nullptr),
+        splat_(allow_splat && camera.splats() && (film.filter().constant() || smooth_)),
         light_splats_(light_splats) {}
   bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
@@ -79,7 +91,10 @@ class SampleBatch {
   }
 
   void flush() {
-    camera_.generate_rays(samples_, lambdas_, rays_, size_t(count_));
+    if (smooth_)
+      smooth_->generate_rays_splatting(samples_, lambdas_, rays_, splats_, size_t(count_));
+    else
+      camera_.generate_rays(samples_, lambdas_, rays_, size_t(count_));
     for (int i = 0; i < count_; ++i) integrate(i);
     count_ = 0;
   }
@@ -113,6 +128,20 @@ class SampleBatch {
       return;
     }
     L *= cr->weight;
+    if (smooth_) {
+      // Every wavelength splats around where it landed (core/splatting_camera.h); the sample's
+      // own pixel keeps its filter weight, which the splats are averaged by.
+      film_.add_sample(pixels_[i], SampledSpectrum(0.f), lambda, filter_weight, vs);
+      const float scale = std::abs(filter_weight);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        const WavelengthSplat& s = splats_[i].wavelength[k];
+        if (s.nx == 0 || L[k] == 0.f) continue;
+        SampledSpectrum one(0.f);
+        one[k] = L[k] * scale;
+        film_.add_splats(s, one, lambda);
+      }
+      return;
+    }
     // Wavelengths a splatting camera sent to other pixels of the tile go there.
     for (int k = 1; k < kSpectrumSamples; ++k) {
       if (cr->pixel_offset[k] == IVec2(0)) continue;
@@ -130,6 +159,7 @@ class SampleBatch {
   RayTally& tally_;
   uint64_t& lost_;
   PixelBounds tile_;
+  const SplattingCamera* smooth_;
   bool splat_;
   LightSplats* light_splats_;
   IVec2 pixels_[kCameraBatch];
@@ -137,6 +167,7 @@ class SampleBatch {
   CameraSample samples_[kCameraBatch];
   SampledWavelengths lambdas_[kCameraBatch];
   std::optional<CameraRay> rays_[kCameraBatch];
+  SampleSplats splats_[kCameraBatch];
   int count_ = 0;
 };
 

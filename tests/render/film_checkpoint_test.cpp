@@ -52,6 +52,9 @@ const std::string kSpectral =
 const std::string kSplattingEyeSpectral =
     view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"spectral\" \"integer nbuckets\" 5", "\"box\"");
 const std::string kSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"rgb\"", "\"box\"");
+// With a smooth filter every wavelength splats with the filter's weights (core/wavelength_splat.h).
+const std::string kSmoothSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6",
+                                             "\"spectral\" \"integer nbuckets\" 5", "\"gaussian\"");
 
 RenderSetup setup_scene(const std::string& v = kRgb) {
   set_warnings_enabled(false);
@@ -95,11 +98,13 @@ TEST(FilmCheckpoint, AccumulatorsRestoreExactly) {
 
 class FilmCheckpointOf : public ::testing::TestWithParam<std::string> {};
 std::string view_name(const ::testing::TestParamInfo<std::string>& info) {
-  static const char* const kNames[] = {"rgb", "spectral", "splatting_eye", "splatting_eye_spectral"};
+  static const char* const kNames[] = {"rgb", "spectral", "splatting_eye", "splatting_eye_spectral",
+                                       "smooth_splatting_eye_spectral"};
   return kNames[info.index];
 }
 INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf,
-                         ::testing::Values(kRgb, kSpectral, kSplattingEye, kSplattingEyeSpectral), view_name);
+                         ::testing::Values(kRgb, kSpectral, kSplattingEye, kSplattingEyeSpectral, kSmoothSplattingEye),
+                         view_name);
 
 // The eye case is only a test of splats if it splats: a dispersive eye with a box filter sends
 // some wavelengths to neighbouring pixels (accumulators 4-6 of a pixel).
@@ -108,6 +113,19 @@ TEST(FilmCheckpoint, SplattingEyeSplats) {
   size_t splatted = 0;
   for (size_t p = 0; p < acc.size(); p += Film::kAccumulatorsPerPixel) splatted += acc[p + 4] != 0.0;
   EXPECT_GT(splatted, acc.size() / Film::kAccumulatorsPerPixel / 4);  // half the view is black sky
+}
+
+// With a Gaussian filter the dispersive eye puts every wavelength into the splat sums (4-6), the
+// pixels' own sums (0-2) stay 0, and most lit pixels receive splats.
+TEST(FilmCheckpoint, SmoothSplattingEyeSplatsEverything) {
+  const std::vector<double> acc = reference(kSmoothSplattingEye);
+  const size_t per_pixel = Film::kAccumulatorsPerPixel + 2 * 5;
+  size_t splatted = 0;
+  for (size_t p = 0; p < acc.size(); p += per_pixel) {
+    EXPECT_EQ(acc[p], 0.0);
+    splatted += acc[p + 4] != 0.0;
+  }
+  EXPECT_GT(splatted, acc.size() / per_pixel / 4);  // half the view is black sky
 }
 
 TEST_P(FilmCheckpointOf, ImageDoesNotDependOnPassSizesOrThreads) {

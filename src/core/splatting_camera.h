@@ -1,0 +1,34 @@
+// A camera whose wavelengths of one sample land in different places on the film (a dispersive
+// eye) and that can say where, so that the integrator splats each wavelength with the pixel
+// filter's weights over the pixels around its landing point (docs/spectral.md, "Splats with a
+// smooth filter"). An addition beside core/camera.h that only the integrator's splatting path
+// uses: cameras that implement it are found by dynamic_cast.
+#pragma once
+#include <cstddef>
+#include <optional>
+
+#include "core/camera.h"
+#include "core/wavelength_splat.h"
+
+namespace eyetrace {
+
+struct SampleSplats {
+  WavelengthSplat wavelength[kSpectrumSamples];
+};
+
+class SplattingCamera {
+ public:
+  virtual ~SplattingCamera() = default;
+  // As Camera::generate_rays. For samples with CameraSample::splat and a filter that is not
+  // constant, each wavelength's weight then no longer holds the filter: wavelength k adds
+  //   |filter_weight| * weight[k] * L[k] * wx[c] * wy[r]
+  // to pixel (first.x + c, first.y + r) of splats[i].wavelength[k] (and nothing to the sample's
+  // own pixel beyond its filter weight). Other samples are as generate_rays makes them.
+  virtual void generate_rays_splatting(const CameraSample* samples, SampledWavelengths* lambdas,
+                                       std::optional<CameraRay>* rays, SampleSplats* splats, size_t count) const = 0;
+  // Largest filter radius (pixels, per axis) the splats serve; wider filters keep spectral MIS
+  // within the pixel.
+  static constexpr float kMaxFilterRadius = 0.5f * (WavelengthSplat::kMaxSpan - 1);
+};
+
+}  // namespace eyetrace
