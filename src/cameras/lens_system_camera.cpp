@@ -15,8 +15,6 @@ namespace eyetrace {
 
 namespace {
 
-// Closest a retina point may come to the sampling plane (the directions degenerate there).
-constexpr double kMinPlaneGap_mm = 0.5;
 // Relative widening of the pupil tables of a dispersive eye: they are traced at the reference
 // wavelength, and the region through which rays pass moves with the wavelength (the lens
 // between the sampling plane and the iris disperses). The dense containment test at 360 and

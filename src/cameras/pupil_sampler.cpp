@@ -5,12 +5,12 @@
 #include <glm/geometric.hpp>
 
 #include "cameras/chief_ray.h"
+#include "core/constants.h"
 
 namespace eyetrace {
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
 // Boundary search: bisection stops at this fraction of the radius (the returned radius is the
 // outer end, so the tolerance only widens the polygon).
 constexpr double kBoundaryTolerance = 1e-4;
@@ -229,8 +229,8 @@ PupilSampler::PupilSampler(const optics::CompiledSystem& system, const RetinaSur
       directions_(o.directions) {
   inv_step_ = intervals_ / max_arc_;
   for (int j = 0; j < directions_; ++j) {
-    cos_.push_back(std::cos(kTwoPi * j / directions_));
-    sin_.push_back(std::sin(kTwoPi * j / directions_));
+    cos_.push_back(std::cos(kTwoPiDouble * j / directions_));
+    sin_.push_back(std::sin(kTwoPiDouble * j / directions_));
   }
   const RegionTracer tracer{system, z_plane, o.scan_half_width_mm, cos_, sin_};
   const std::vector<Node> nodes = trace_nodes(tracer, retina, chief, intervals_ + 1, 1.0 / inv_step_);
@@ -269,7 +269,7 @@ void PupilSampler::build_distribution(size_t i) {
   const size_t k = static_cast<size_t>(directions_);
   const float* radii = &radii_[i * k];
   float* cdf = &cdf_[i * k];
-  const double sin_step = std::sin(kTwoPi / directions_);
+  const double sin_step = std::sin(kTwoPiDouble / directions_);
   double total = 0.0;
   for (int j = 0; j < directions_; ++j) {
     total += 0.5 * double(radii[j]) * double(radii[(j + 1) % directions_]) * sin_step;
@@ -309,8 +309,8 @@ bool PupilSampler::contains(double a, glm::dvec2 q) const {
   const int i = std::min(static_cast<int>(a * inv_step_), intervals_ - 1);
   const glm::dvec2 p = q - centre(a);
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
-  const int j = std::min(static_cast<int>(phi / kTwoPi * directions_), directions_ - 1);
+  if (phi < 0.0) phi += kTwoPiDouble;
+  const int j = std::min(static_cast<int>(phi / kTwoPiDouble * directions_), directions_ - 1);
   const int k = (j + 1) % directions_;
   const float* radii = &radii_[static_cast<size_t>(i * directions_)];
   const glm::dvec2 b = double(radii[j]) * glm::dvec2(cos_[static_cast<size_t>(j)], sin_[static_cast<size_t>(j)]);

@@ -16,9 +16,6 @@ namespace {
 constexpr double kNodeStep_mm = 0.05;
 // Uniform angle samples of the inverse table per degree.
 constexpr double kInverseSamplesPerDegree = 32.0;
-// Closest approach of a retina point to the sampling plane that still gives well-conditioned
-// directions.
-constexpr double kMinPlaneGap_mm = 0.5;
 
 // Index of the node interval containing x in a sorted vector (clamped).
 size_t interval_of(const std::vector<double>& xs, double x) {

@@ -22,6 +22,10 @@ namespace eyetrace {
 
 enum class FieldMapping { Angle, Flat, Retina };
 
+// Closest a retina point may come to the sampling plane: nearer, the directions to it degenerate
+// (are ill-conditioned). The field-angle table and the eye camera's retina limit both stop there.
+inline constexpr double kMinPlaneGap_mm = 0.5;
+
 // "angle", "flat", "retina"; parse returns false for anything else.
 const char* to_string(FieldMapping m);
 bool parse_field_mapping(const std::string& text, FieldMapping* out);

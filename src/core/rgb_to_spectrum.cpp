@@ -19,7 +19,7 @@ namespace eyetrace {
 
 namespace {
 
-constexpr uint32_t kMagic = 0x31533252u;  // "R2S1"
+constexpr uint32_t kRgbToSpectrumMagic = 0x31533252u;  // "R2S1"
 
 // [0, 1], NaN to 0.
 float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }
@@ -29,7 +29,7 @@ float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }
 const RGBToSpectrumTable& RGBToSpectrumTable::srgb() {
   static const RGBToSpectrumTable table = [] {
     const uint32_t* h = eyetrace_rgb2spec_srgb_header;
-    if (h[0] != kMagic || h[1] < 2 || h[1] > 256 || h[2] != 0 || h[3] != 0) {
+    if (h[0] != kRgbToSpectrumMagic || h[1] < 2 || h[1] > 256 || h[2] != 0 || h[3] != 0) {
       std::fprintf(stderr, "eyetrace: the embedded RGB -> spectrum table is damaged (rebuild)\n");
       std::abort();
     }

@@ -6,6 +6,7 @@
 #include "core/diagnostic.h"
 #include "core/error.h"
 #include "core/material.h"
+#include "integrators/interface_crossings.h"
 #include "integrators/volpath_integrator.h"
 #include "render/scene.h"
 
@@ -22,10 +23,6 @@ struct BdptIntegrator::Walk {
 };
 
 namespace {
-
-// Interface (null-material) crossings do not count as bounces; bound them anyway so that a
-// degenerate scene cannot loop forever (as `path`).
-constexpr int kMaxCrossings = 256;
 
 float scene_radius_of(const Scene& scene) {
   const float r = scene.bounds().radius();
@@ -178,7 +175,7 @@ int BdptIntegrator::random_walk(Ray ray, SampledWavelengths& lambda, Walk& w, Sa
   if (max_depth == 0) return 0;
   int bounces = 0;
   float pdf_fwd = pdf;
-  for (int crossings = 0; crossings < kMaxCrossings && !is_black(beta); ++crossings) {
+  for (int crossings = 0; crossings < kMaxInterfaceCrossings && !is_black(beta); ++crossings) {
     BdptVertex& vertex = path[bounces];
     BdptVertex& prev = path[bounces - 1];
     SurfaceInteraction si;

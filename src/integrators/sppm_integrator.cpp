@@ -12,6 +12,7 @@
 #include "core/material.h"
 #include "core/sampling.h"
 #include "integrators/direct_light_sample.h"
+#include "integrators/interface_crossings.h"
 #include "integrators/sppm_pixel.h"
 #include "integrators/visible_point_grid.h"
 #include "render/film.h"
@@ -26,8 +27,6 @@ constexpr int64_t kPhotonBatch = 4096;
 // Batches traced before their deposits are added to the pixels (about 262,000 photons): enough
 // work per group for many threads, few enough that the deposit lists stay small.
 constexpr int64_t kBatchesPerMerge = 64;
-// Interface (null-material) crossings do not count as bounces; bound them anyway.
-constexpr int kMaxCrossings = 256;
 
 // Van der Corput's radical inverse of i in `base`: each iteration's wavelengths and time, as
 // pbrt-v4 draws them (bases 3 and 5), so that successive iterations cover them evenly.
@@ -66,7 +65,7 @@ struct Deposit {
   RGB phi;
 };
 
-struct ThreadState {
+struct SppmThreadState {
   std::unique_ptr<Sampler> sampler;
   ScratchBuffer camera_arena;  // visible points' BSDFs: kept until the iteration ends
   ScratchBuffer photon_arena;  // reset after every photon
@@ -95,7 +94,7 @@ class SppmIntegrator::Run {
         pixels_(b_.area()),
         photons_(in.options_.photons_per_iteration > 0 ? uint64_t(in.options_.photons_per_iteration)
                                                        : uint64_t(b_.area())),
-        states_([&] { return ThreadState{sampler.clone(), ScratchBuffer(), ScratchBuffer(), {}, 0, 0, 0}; }),
+        states_([&] { return SppmThreadState{sampler.clone(), ScratchBuffer(), ScratchBuffer(), {}, 0, 0, 0}; }),
         arena_(opts.threads > 0 ? opts.threads : tbb::this_task_arena::max_concurrency()) {
     for (SppmPixel& px : pixels_) px.radius = in.options_.radius;
   }
@@ -106,7 +105,7 @@ class SppmIntegrator::Run {
     const float time = radical_inverse(5, uint64_t(iter));
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<int>(b_.lo.y, b_.hi.y), [&](const tbb::blocked_range<int>& r) {
-        ThreadState& ts = states_.local();
+        SppmThreadState& ts = states_.local();
         for (int y = r.begin(); y != r.end(); ++y)
           for (int x = b_.lo.x; x < b_.hi.x; ++x) camera_path(IVec2(x, y), iter, lambda, time, ts);
       });
@@ -116,7 +115,7 @@ class SppmIntegrator::Run {
     report(2 * iter + 2, 2 * iterations);
     if (in_.record_) record(*in_.record_);
     arena_.execute([&] { tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) { sppm_update(pixels_[i]); }); });
-    for (ThreadState& ts : states_) ts.camera_arena.reset();
+    for (SppmThreadState& ts : states_) ts.camera_arena.reset();
   }
 
   // The estimate after `iterations`, one sample of weight 1 per pixel.
@@ -130,7 +129,7 @@ class SppmIntegrator::Run {
   }
 
   void count(RenderCounters& c) const {
-    for (const ThreadState& ts : states_) {
+    for (const SppmThreadState& ts : states_) {
       c.samples += ts.camera_rays;
       c.camera_rays += ts.camera_rays;
       c.camera_rays_lost += ts.lost;
@@ -147,7 +146,7 @@ class SppmIntegrator::Run {
   void report(int done, int total) {
     if (!opts_.on_progress) return;
     uint64_t rays = 0;
-    for (const ThreadState& ts : states_) rays += ts.tally.rays;
+    for (const SppmThreadState& ts : states_) rays += ts.tally.rays;
     opts_.on_progress(double(done) / total, rays);
   }
 
@@ -160,7 +159,7 @@ class SppmIntegrator::Run {
   }
 
   // The camera path of `pixel` in iteration `iter`: its direct light and visible point.
-  void camera_path(IVec2 pixel, int iter, const SampledWavelengths& pass_lambda, float time, ThreadState& ts) {
+  void camera_path(IVec2 pixel, int iter, const SampledWavelengths& pass_lambda, float time, SppmThreadState& ts) {
     SppmPixel& px = pixels_[index(pixel)];
     CameraSample cs = draw_camera_sample(film_, *ts.sampler, pixel, iter);
     cs.time = time;
@@ -187,13 +186,13 @@ class SppmIntegrator::Run {
   // Follows a camera ray as pbrt-v4's SPPM does: emission (MIS-weighted after a non-specular
   // bounce) and light sampling at each vertex until the first diffuse one (or a glossy one at
   // the last depth) leaves a visible point; one more ray there collects emission only.
-  SampledSpectrum trace_camera(Ray ray, SampledWavelengths& lambda, ThreadState& ts, VisiblePoint& vp) const {
+  SampledSpectrum trace_camera(Ray ray, SampledWavelengths& lambda, SppmThreadState& ts, VisiblePoint& vp) const {
     SampledSpectrum L(0.f), beta(1.f);
     bool specular = true;  // the camera ray counts as specular: emission it sees is taken whole
     float p_b = 0.f, eta_scale = 1.f;
     LightSampleContext prev;
     int depth = 0;
-    for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
+    for (int crossings = 0; crossings < kMaxInterfaceCrossings; ++crossings) {
       SurfaceInteraction si;
       ++ts.tally.rays;
       const bool hit = scene_.intersect(ray, &si);
@@ -265,7 +264,7 @@ class SppmIntegrator::Run {
       const int64_t group_end = std::min(batches, group + kBatchesPerMerge);
       arena_.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int64_t>(group, group_end, 1), [&](const tbb::blocked_range<int64_t>& r) {
-          ThreadState& ts = states_.local();
+          SppmThreadState& ts = states_.local();
           for (int64_t batch = r.begin(); batch != r.end(); ++batch) {
             const uint64_t first = uint64_t(batch) * kPhotonBatch, end = std::min(photons_, first + kPhotonBatch);
             for (uint64_t i = first; i < end; ++i) {
@@ -289,7 +288,7 @@ class SppmIntegrator::Run {
   // One photon from a light chosen by power (pbrt-v4): its flux lands on visible points near
   // every surface it meets after the first (light sampling already took the direct light).
   void trace_photon(uint64_t index, const VisiblePointGrid& grid, const SampledWavelengths& pass_lambda,
-                    ThreadState& ts, std::vector<Deposit>& out) const {
+                    SppmThreadState& ts, std::vector<Deposit>& out) const {
     PhotonRng rng(in_.options_.seed, index);
     float pmf = 0.f;
     const Light* light = in_.lights_.sample(rng.get_1d(), &pmf);
@@ -308,7 +307,7 @@ class SppmIntegrator::Run {
       if (!scene_.intersect(ray, &si)) break;
       const BSDF* bsdf = si.material ? si.material->bsdf(si, lambda, ts.photon_arena) : nullptr;
       if (!bsdf) {  // an interface: the photon passes, no bounce counted, nothing deposited
-        if (++crossings == kMaxCrossings) break;
+        if (++crossings == kMaxInterfaceCrossings) break;
         ray = spawn_ray(si, ray.d);
         --depth;
         continue;
@@ -332,7 +331,7 @@ class SppmIntegrator::Run {
   }
 
   void deposit(const VisiblePointGrid& grid, const Vec3& p, const Vec3& wi, const SampledSpectrum& beta,
-               const SampledWavelengths& lambda, ThreadState& ts, std::vector<Deposit>& out) const {
+               const SampledWavelengths& lambda, SppmThreadState& ts, std::vector<Deposit>& out) const {
     grid.for_each_candidate(p, [&](uint32_t i) {
       const SppmPixel& px = pixels_[i];
       const Vec3 d = px.vp.p - p;
@@ -357,7 +356,7 @@ class SppmIntegrator::Run {
   const PixelBounds b_;
   std::vector<SppmPixel> pixels_;
   const uint64_t photons_;
-  tbb::enumerable_thread_specific<ThreadState> states_;
+  tbb::enumerable_thread_specific<SppmThreadState> states_;
   tbb::task_arena arena_;
 };
 

@@ -8,6 +8,7 @@
 #include "core/material.h"
 #include "core/medium.h"
 #include "core/sampling.h"
+#include "integrators/interface_crossings.h"
 #include "integrators/majorant_tracking.h"
 #include "integrators/subsurface_exit.h"
 #include "render/scene.h"
@@ -15,9 +16,6 @@
 namespace eyetrace {
 
 namespace {
-
-// Interface crossings do not count as bounces; bound them so a degenerate scene cannot loop.
-constexpr int kMaxCrossings = 256;
 
 // The average over the wavelengths the sample still carries: with the secondary wavelengths
 // terminated (a dispersive surface, the eye) the path is the hero's alone, sampled by it, and
@@ -97,7 +95,7 @@ VolPathIntegrator::ShadowTransmittance VolPathIntegrator::transmittance(Ray ray,
                                                                         RayTally& tally) const {
   ShadowTransmittance tr;
   std::optional<TrackingRng> rng;  // seeded by the first ray through a heterogeneous medium
-  for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
+  for (int crossings = 0; crossings < kMaxInterfaceCrossings; ++crossings) {
     SurfaceInteraction si;
     ++tally.rays;
     ++tally.shadow_rays;
@@ -241,7 +239,7 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     const float light_pdf = lights_.pmf(light) * light->pdf_li(prev_ctx, ray.d, at);
     L += beta * Le / carried_average(r_u + r_l * light_pdf, lambda);
   };
-  while (crossings < kMaxCrossings) {
+  while (crossings < kMaxInterfaceCrossings) {
     SurfaceInteraction si;
     ++tally.rays;
     const bool hit = scene_.intersect(ray, &si);

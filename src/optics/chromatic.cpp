@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "optics/launch_plane.h"
 #include "optics/medium.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -27,13 +28,6 @@ void check_wavelength(const char* option, double lambda_nm) {
   if (!(lambda_nm >= kMinWavelength_nm && lambda_nm <= kMaxWavelength_nm))
     throw OpticsError(fmt::format("{}: {} nm is outside [{}, {}] nm, the wavelengths the dispersion laws are used for",
                                   option, lambda_nm, kMinWavelength_nm, kMaxWavelength_nm));
-}
-
-// Most negative z the first surface reaches inside its clear aperture, minus 1 mm (as spot.cpp).
-double launch_plane(const Prescription& p) {
-  const Surface& s = p.surfaces.front();
-  const double h = std::min(s.limited() ? s.semi_diameter_mm : 50.0, s.profile.max_height());
-  return std::min(0.0, s.profile.sag(h * h)) - 1.0;
 }
 
 std::string describe_loss(const Prescription& p, const TraceResult& t) {

@@ -12,13 +12,13 @@ namespace eyetrace::optics {
 
 namespace {
 
-constexpr double kMaxCylinder_D = 20.0;
+constexpr double kMaxCornealCylinder_D = 20.0;
 
 // Checks the options and makes surface 0 a biconic with equal meridians at axis_deg.
 void make_cornea_biconic(Prescription& p, double cylinder_D, double& axis_deg) {
-  if (!std::isfinite(cylinder_D) || std::abs(cylinder_D) > kMaxCylinder_D)
-    throw OpticsError("cylinder",
-                      fmt::format("{} D is outside [-{}, {}] D", cylinder_D, kMaxCylinder_D, kMaxCylinder_D));
+  if (!std::isfinite(cylinder_D) || std::abs(cylinder_D) > kMaxCornealCylinder_D)
+    throw OpticsError("cylinder", fmt::format("{} D is outside [-{}, {}] D", cylinder_D, kMaxCornealCylinder_D,
+                                              kMaxCornealCylinder_D));
   if (!(axis_deg >= 0.0 && axis_deg <= 180.0))
     throw OpticsError("axis", fmt::format("{} deg is outside [0, 180] deg", axis_deg));
   if (p.surfaces.empty() || p.surfaces[0].role != SurfaceRole::Refract ||

@@ -6,14 +6,13 @@
 #include <complex>
 #include <numbers>
 
+#include "optics/constants.h"
 #include "optics/fft.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace::optics {
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 glm::dvec2 centroid_um(const Psf& psf) {
   return {psf.centroid_rad.x / psf.sample_x_rad * psf.sample_x_um,

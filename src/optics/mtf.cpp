@@ -8,13 +8,12 @@
 
 #include <fmt/format.h>
 
+#include "optics/constants.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace::optics {
 
 namespace {
-
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 // |OTF(k)| / OTF(0) along one axis for k = 0 .. N/2.
 std::vector<double> axis_mtf(const Psf& psf, bool along_y) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "optics/chromatic.h"
+#include "optics/constants.h"
 #include "optics/encircled_energy.h"
 #include "optics/luminous_efficiency.h"
 #include "optics/medium.h"
@@ -16,9 +17,6 @@
 namespace eyetrace::optics {
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 // One wavelength's PSF as the sum needs it, beside the component's summary: its pupil's phasors
 // (for the peak between samples) and its low-frequency spectrum (for the encircled energy).

@@ -81,7 +81,7 @@ double meeting_height(const SurfaceProfile& a, double z_a, const SurfaceProfile&
 namespace {
 
 constexpr double kMaxIndex = 10.0;
-constexpr double kMaxThickness_mm = 1e6;  // 1 km
+constexpr double kMaxSurfaceThickness_mm = 1e6;  // 1 km
 
 std::string label(const Prescription& p, size_t i) { return fmt::format("surface {} '{}'", i, p.surfaces[i].name); }
 
@@ -129,9 +129,9 @@ void validate_surface(const Prescription& p, size_t i) {
   if (s.thickness_mm < 0.0)
     throw OpticsError(fmt::format("{}: thickness {} mm is negative", label(p, i), s.thickness_mm));
   // Beyond this, squared distances in the ray-conic intersection lose every significant digit.
-  if (s.thickness_mm > kMaxThickness_mm)
+  if (s.thickness_mm > kMaxSurfaceThickness_mm)
     throw OpticsError(
-        fmt::format("{}: thickness {} mm is more than {} mm", label(p, i), s.thickness_mm, kMaxThickness_mm));
+        fmt::format("{}: thickness {} mm is more than {} mm", label(p, i), s.thickness_mm, kMaxSurfaceThickness_mm));
   if (s.index_after < 1.0)
     throw OpticsError(fmt::format("{}: index {} of medium '{}' is below 1", label(p, i), s.index_after, s.medium));
   // No optical material comes near this; far beyond it, eta^2 in Snell's law overflows.

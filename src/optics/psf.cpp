@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "optics/chromatic.h"
+#include "optics/constants.h"
 #include "optics/encircled_energy.h"
 #include "optics/fft.h"
 #include "optics/optics_error.h"
@@ -20,8 +21,6 @@
 namespace eyetrace::optics {
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 int automatic_fft_size(int grid) {
   int n = 1;

@@ -13,9 +13,9 @@ namespace eyetrace::optics {
 
 namespace {
 
-constexpr double kMaxCylinder_D = 10.0;
+constexpr double kMaxSpectacleCylinder_D = 10.0;
 constexpr double kMaxVertexDistance_mm = 50.0;
-constexpr double kMaxThickness_mm = 30.0;
+constexpr double kMaxSpectacleThickness_mm = 30.0;
 
 void check(const char* option, double value, double lo, double hi, const char* unit) {
   if (!std::isfinite(value) || value < lo || value > hi)
@@ -24,7 +24,7 @@ void check(const char* option, double value, double lo, double hi, const char* u
 
 void check_options(const SpectacleLens& l) {
   check("spectaclesphere", l.sphere_D, -kMaxSpectaclePower_D, kMaxSpectaclePower_D, "D");
-  check("spectaclecylinder", l.cylinder_D, -kMaxCylinder_D, kMaxCylinder_D, "D");
+  check("spectaclecylinder", l.cylinder_D, -kMaxSpectacleCylinder_D, kMaxSpectacleCylinder_D, "D");
   check("spectacleaxis", l.axis_deg, 0.0, 180.0, "deg");
   if (!std::isfinite(l.vertex_distance_mm) || !(l.vertex_distance_mm > 0.0) ||
       l.vertex_distance_mm > kMaxVertexDistance_mm)
@@ -33,9 +33,9 @@ void check_options(const SpectacleLens& l) {
                                   l.vertex_distance_mm, kMaxVertexDistance_mm));
   check("spectacleindex", l.index, 1.3, 2.0, "");
   if (l.centre_thickness_mm && !(std::isfinite(*l.centre_thickness_mm) && *l.centre_thickness_mm > 0.0 &&
-                                 *l.centre_thickness_mm <= kMaxThickness_mm))
+                                 *l.centre_thickness_mm <= kMaxSpectacleThickness_mm))
     throw OpticsError("spectaclethickness",
-                      fmt::format("{} mm is outside (0, {}] mm", *l.centre_thickness_mm, kMaxThickness_mm));
+                      fmt::format("{} mm is outside (0, {}] mm", *l.centre_thickness_mm, kMaxSpectacleThickness_mm));
   if (l.base_curve_D) check("spectaclebasecurve", *l.base_curve_D, -kMaxSpectaclePower_D, kMaxSpectaclePower_D, "D");
 }
 
@@ -82,7 +82,7 @@ double edge_thickness_mm(const LensShape& s, double t_mm) {
 // front's reduced vergence, weakly), so bisection on [2, 30] mm finds it.
 double default_thickness_mm(const SpectacleLens& l, double front_D) {
   auto edge = [&](double t) { return edge_thickness_mm(shape(l, front_D, t), t); };
-  double lo = kDefaultSpectacleThickness_mm, hi = kMaxThickness_mm;
+  double lo = kDefaultSpectacleThickness_mm, hi = kMaxSpectacleThickness_mm;
   if (!(edge(lo) < kMinSpectacleEdge_mm)) return lo;
   if (!(edge(hi) >= kMinSpectacleEdge_mm)) return hi;  // too strong a lens: add_spectacle_lens says so
   for (int i = 0; i < 60; ++i) {

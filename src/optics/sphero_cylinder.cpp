@@ -27,7 +27,7 @@ RayMatrix4 operator*(const RayMatrix4& m, const RayMatrix4& n) {  // m after n
 // A phase plate refracts by n u' = n u - grad W = n u - H y to first order (H: its curvature
 // matrix at the centre, phase_plate.h); its tilt terms add prism only and are left out, as
 // decentrations are.
-RayMatrix4 refraction(const Prescription& p, int i) {
+RayMatrix4 refraction4(const Prescription& p, int i) {
   const Surface& s = p.surfaces[i];
   if (s.role == SurfaceRole::Image) return {};
   RayMatrix4 m;
@@ -39,7 +39,7 @@ RayMatrix4 refraction(const Prescription& p, int i) {
   return m;
 }
 
-RayMatrix4 transfer(double distance_mm, double index) {
+RayMatrix4 transfer4(double distance_mm, double index) {
   RayMatrix4 m;
   m.B = {distance_mm / index, 0.0, 0.0, distance_mm / index};
   return m;
@@ -60,8 +60,8 @@ Mat2 curvature_matrix(const SurfaceProfile& s) {
 RayMatrix4 system_matrix4(const Prescription& p, int first, int last) {
   RayMatrix4 m;
   for (int i = first; i <= last; ++i) {
-    m = refraction(p, i) * m;
-    if (i < last) m = transfer(p.surfaces[i].thickness_mm, p.surfaces[i].index_after) * m;
+    m = refraction4(p, i) * m;
+    if (i < last) m = transfer4(p.surfaces[i].thickness_mm, p.surfaces[i].index_after) * m;
   }
   return m;
 }

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "optics/launch_plane.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
 
@@ -16,7 +17,7 @@ namespace eyetrace::optics {
 
 namespace {
 
-struct Launcher {
+struct SpotLauncher {
   const CompiledSystem& system;
   glm::dvec3 source;     // point source (finite distance)
   glm::dvec3 direction;  // beam direction (source at infinity)
@@ -36,13 +37,6 @@ struct Launcher {
   }
 };
 
-// Most negative z the first surface reaches inside its clear aperture, minus a margin.
-double launch_plane(const Prescription& p) {
-  const Surface& s = p.surfaces.front();
-  const double h = std::min(s.limited() ? s.semi_diameter_mm : 50.0, s.profile.max_height());
-  return std::min(0.0, s.profile.sag(h * h)) - 1.0;
-}
-
 }  // namespace
 
 SpotResult trace_spot(const Prescription& p, const SpotOptions& options) {
@@ -56,12 +50,12 @@ SpotResult trace_spot(const Prescription& p, const SpotOptions& options) {
   const CompiledSystem system(p);
   const ParaxialData para = paraxial_analysis(p);
   const double theta = options.field_deg * std::numbers::pi / 180.0;
-  Launcher launch{system,
-                  {},
-                  {0.0, -std::sin(theta), std::cos(theta)},
-                  std::isinf(options.object_distance_m),
-                  para.entrance_pupil.position_mm,
-                  std::min(launch_plane(p), para.entrance_pupil.position_mm - 1.0)};
+  SpotLauncher launch{system,
+                      {},
+                      {0.0, -std::sin(theta), std::cos(theta)},
+                      std::isinf(options.object_distance_m),
+                      para.entrance_pupil.position_mm,
+                      std::min(launch_plane(p), para.entrance_pupil.position_mm - 1.0)};
   launch.source =
       glm::dvec3(0.0, 0.0, para.entrance_pupil.position_mm) - options.object_distance_m * 1000.0 * launch.direction;
   if (!launch.at_infinity && launch.source.z >= launch.z_start)

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "optics/constants.h"
 #include "optics/mtf.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -18,11 +19,11 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+double round6_no_minus_zero(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
 
-double round6(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
-
-json pair(double sagittal, double tangential) { return json::array({round6(sagittal), round6(tangential)}); }
+json pair(double sagittal, double tangential) {
+  return json::array({round6_no_minus_zero(sagittal), round6_no_minus_zero(tangential)});
+}
 
 // The polychromatic object's lines (or its error).
 std::string format_polychromatic(const json& poly) {
@@ -66,15 +67,15 @@ json wave_optics_json(const Prescription& p, const WavefrontOptions& options, co
   json mtf = json::array();
   for (const MtfPoint& m : compute_mtf(psf, freqs))
     mtf.push_back({{"freq_cpd", m.freq_cpd},
-                   {"tangential", round6(m.tangential)},
-                   {"sagittal", round6(m.sagittal)},
-                   {"tangential_cyc_per_mm", round6(m.tangential_cyc_per_mm)},
-                   {"sagittal_cyc_per_mm", round6(m.sagittal_cyc_per_mm)}});
+                   {"tangential", round6_no_minus_zero(m.tangential)},
+                   {"sagittal", round6_no_minus_zero(m.sagittal)},
+                   {"tangential_cyc_per_mm", round6_no_minus_zero(m.tangential_cyc_per_mm)},
+                   {"sagittal_cyc_per_mm", round6_no_minus_zero(m.sagittal_cyc_per_mm)}});
   const double arcmin = 60.0 / kRadPerDeg;
-  json f = {{"strehl", round6(psf.strehl)},
-            {"strehl_at_chief_ray", round6(psf.strehl_phasor)},
-            {"ee50_um", round6(psf.ee50_um)},
-            {"ee80_um", round6(psf.ee80_um)},
+  json f = {{"strehl", round6_no_minus_zero(psf.strehl)},
+            {"strehl_at_chief_ray", round6_no_minus_zero(psf.strehl_phasor)},
+            {"ee50_um", round6_no_minus_zero(psf.ee50_um)},
+            {"ee80_um", round6_no_minus_zero(psf.ee80_um)},
             {"mtf", mtf},
             {"psf",
              {{"grid", psf.grid},
@@ -105,10 +106,10 @@ json polychromatic_json(const Prescription& p, const WavefrontOptions& options, 
   for (const MtfPoint& m : polychromatic_mtf(psf, freqs)) {
     const MtfPoint limit = polychromatic_diffraction_limit(psf, m.freq_cpd);
     mtf.push_back({{"freq_cpd", m.freq_cpd},
-                   {"tangential", round6(m.tangential)},
-                   {"sagittal", round6(m.sagittal)},
-                   {"tangential_cyc_per_mm", round6(m.tangential_cyc_per_mm)},
-                   {"sagittal_cyc_per_mm", round6(m.sagittal_cyc_per_mm)},
+                   {"tangential", round6_no_minus_zero(m.tangential)},
+                   {"sagittal", round6_no_minus_zero(m.sagittal)},
+                   {"tangential_cyc_per_mm", round6_no_minus_zero(m.tangential_cyc_per_mm)},
+                   {"sagittal_cyc_per_mm", round6_no_minus_zero(m.sagittal_cyc_per_mm)},
                    {"diffraction_limit", pair(limit.sagittal, limit.tangential)}});
   }
   int grid_max = 0;
@@ -124,9 +125,9 @@ json polychromatic_json(const Prescription& p, const WavefrontOptions& options, 
               {"count", psf.components.size()}}},
             {"source", psf.source_name},
             {"reference_wavelength_nm", psf.reference_wavelength_nm},
-            {"strehl", round6(psf.strehl)},
-            {"ee50_um", round6(psf.ee50_um)},
-            {"ee80_um", round6(psf.ee80_um)},
+            {"strehl", round6_no_minus_zero(psf.strehl)},
+            {"ee50_um", round6_no_minus_zero(psf.ee50_um)},
+            {"ee80_um", round6_no_minus_zero(psf.ee80_um)},
             {"centroid_um", pair(psf.centroid_um.x, psf.centroid_um.y)},
             {"peak_um", pair(psf.peak_um.x, psf.peak_um.y)},
             {"grid_max", grid_max},

@@ -73,7 +73,7 @@ double sphere_crossing(const Path& path, const glm::dvec3& centre, double radius
 
 // The object point's rays: through (x, y) on the entrance-pupil plane z_pupil, started on the
 // chief ray's launch plane (in front of the first surface).
-struct Launcher {
+struct WavefrontLauncher {
   bool at_infinity;
   glm::dvec3 direction;  // beam direction (infinity)
   glm::dvec3 source;     // finite object
@@ -95,8 +95,8 @@ struct Samples {
 };
 
 // OPD over the grid cells of the disc, relative to the chief ray (whose OPD is 0 by construction).
-Samples sample_pupil(const PathTracer& tracer, const Launcher& launch, const WavefrontResult& geo, double chief_length,
-                     double n_image, int grid) {
+Samples sample_pupil(const PathTracer& tracer, const WavefrontLauncher& launch, const WavefrontResult& geo,
+                     double chief_length, double n_image, int grid) {
   Samples s;
   const double r = geo.pupil_radius_mm;
   for (int i = 0; i < grid; ++i)
@@ -183,7 +183,7 @@ WavefrontResult trace_wavefront(const Prescription& p, const WavefrontOptions& o
   const bool at_infinity = std::isinf(o.object_distance_m);
   const glm::dvec3 source = glm::dvec3(0.0, 0.0, out.entrance_pupil_z_mm) - o.object_distance_m * 1000.0 * beam;
   const Ray& c = chief.object_ray;
-  const Launcher launch{at_infinity, beam, source, out.entrance_pupil_z_mm, c.origin.z};
+  const WavefrontLauncher launch{at_infinity, beam, source, out.entrance_pupil_z_mm, c.origin.z};
   out.pupil_centre_mm = glm::dvec2(c.origin + (out.entrance_pupil_z_mm - c.origin.z) / c.direction.z * c.direction);
 
   const CompiledSystem sys(o.clip_at_stop ? p_lambda : without_stop_clipping(p_lambda));

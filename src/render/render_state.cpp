@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kMagic = "EYETRACE-RENDER-STATE\n";
+constexpr std::string_view kRenderStateMagic = "EYETRACE-RENDER-STATE\n";
 
 // Native byte order: a state file is for resuming on the machine (or kind of machine) that
 // wrote it. The byte-order mark below makes any other reader refuse it instead of misreading.
@@ -77,7 +77,7 @@ class Reader {
 
 void write_render_state(const std::string& path, const RenderState& s) {
   Writer w;
-  w.bytes().append(kMagic);
+  w.bytes().append(kRenderStateMagic);
   w.put(kByteOrderMark);
   w.put(RenderState::kVersion);
   w.put(s.fingerprint);
@@ -121,13 +121,13 @@ RenderState read_render_state(const std::string& path) {
                     path));
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Reader r(bytes, path);
-  if (bytes.compare(0, kMagic.size(), kMagic) != 0) r.corrupt("not an eyetrace render state");
-  if (bytes.size() < kMagic.size() + 8 + 8) r.corrupt("it ends early");
+  if (bytes.compare(0, kRenderStateMagic.size(), kRenderStateMagic) != 0) r.corrupt("not an eyetrace render state");
+  if (bytes.size() < kRenderStateMagic.size() + 8 + 8) r.corrupt("it ends early");
   uint64_t stored_sum;
   std::memcpy(&stored_sum, bytes.data() + bytes.size() - 8, 8);
   if (fnv1a(std::string_view(bytes).substr(0, bytes.size() - 8)) != stored_sum)
     r.corrupt("its checksum does not match");
-  for (size_t i = 0; i < kMagic.size(); ++i) r.get<char>();
+  for (size_t i = 0; i < kRenderStateMagic.size(); ++i) r.get<char>();
   if (r.get<uint32_t>() != kByteOrderMark) r.corrupt("it was written on a machine of another byte order");
   uint32_t version = r.get<uint32_t>();
   if (version != RenderState::kVersion)

@@ -44,12 +44,10 @@ void forget_errors(RTCDevice device) {
   g_errors.erase(device);
 }
 
-bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // Rays Embree must never see: non-finite origin or direction, a zero direction (no
 // direction to report wo for) or an empty/NaN [0, tmax] interval.
 bool traceable(const Ray& ray) {
-  return finite3(ray.o) && finite3(ray.d) && (ray.d.x != 0.f || ray.d.y != 0.f || ray.d.z != 0.f) && ray.tmax > 0.f;
+  return is_finite(ray.o) && is_finite(ray.d) && (ray.d.x != 0.f || ray.d.y != 0.f || ray.d.z != 0.f) && ray.tmax > 0.f;
 }
 
 // `time`: the ray's time as Embree's fraction of the way between the two time steps of the

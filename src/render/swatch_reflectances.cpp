@@ -5,7 +5,7 @@ namespace eyetrace {
 namespace {
 
 constexpr int kSamples = 36;  // 380, 390, ..., 730 nm
-constexpr double kFirstNm = 380.0, kStepNm = 10.0;
+constexpr double kSwatchFirstNm = 380.0, kSwatchStepNm = 10.0;
 
 // pbrt-v4's values (commit 5f7a606, src/pbrt/film.cpp), copied number for number.
 constexpr double kSwatches[kSwatchCount][kSamples] = {
@@ -86,7 +86,7 @@ constexpr double kSwatches[kSwatchCount][kSamples] = {
 }  // namespace
 
 double swatch_reflectance(int i, double lambda_nm) {
-  const double x = (lambda_nm - kFirstNm) / kStepNm;
+  const double x = (lambda_nm - kSwatchFirstNm) / kSwatchStepNm;
   if (!(x >= 0.0 && x <= kSamples - 1)) return 0.0;
   const int k = x < kSamples - 1 ? int(x) : kSamples - 2;
   const double t = x - k;

@@ -18,14 +18,14 @@ std::string place_of(const Token& open, const Token& at) {
 
 enum class ValueKind { Numbers, Integers, Bools, Strings, Spectrum };
 
-struct ParamType {
+struct TypeKeyword {
   const char* name;
   ValueKind kind;
   size_t tuple;  // values per element: 3 for point3, 1 for float
 };
 
 // pbrt-v4's parameter types, plus the pbrt-v3 spellings it still reads.
-constexpr ParamType kParamTypes[] = {
+constexpr TypeKeyword kParamTypes[] = {
     {"float", ValueKind::Numbers, 1},     {"integer", ValueKind::Integers, 1},  {"bool", ValueKind::Bools, 1},
     {"string", ValueKind::Strings, 1},    {"texture", ValueKind::Strings, 1},   {"point2", ValueKind::Numbers, 2},
     {"vector2", ValueKind::Numbers, 2},   {"point3", ValueKind::Numbers, 3},    {"vector3", ValueKind::Numbers, 3},
@@ -34,7 +34,7 @@ constexpr ParamType kParamTypes[] = {
     {"spectrum", ValueKind::Spectrum, 1}, {"blackbody", ValueKind::Numbers, 1},
 };
 
-const ParamType* find_type(const std::string& name) {
+const TypeKeyword* find_type(const std::string& name) {
   for (const auto& t : kParamTypes)
     if (name == t.name) return &t;
   return nullptr;
@@ -55,7 +55,7 @@ std::vector<std::string> split_words(const std::string& s) {
 // Adds value tokens to one parameter, checking each against the declared type.
 class ValueReader {
  public:
-  ValueReader(Tokenizer& tok, Param& p, const ParamType& type) : tok_(tok), p_(p), type_(type) {}
+  ValueReader(Tokenizer& tok, Param& p, const TypeKeyword& type) : tok_(tok), p_(p), type_(type) {}
 
   // `open` is the '[' the value sits in, if any (for the missing-']' hint).
   void add(const Token& t, const Token* open) {
@@ -139,7 +139,7 @@ class ValueReader {
 
   Tokenizer& tok_;
   Param& p_;
-  const ParamType& type_;
+  const TypeKeyword& type_;
 };
 
 Param declare(const Tokenizer& tok, const Token& decl) {

@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "core/lerp.h"
+
 namespace eyetrace {
 
 namespace {
-
-Vec3 lerp(float t, const Vec3& a, const Vec3& b) { return (1.f - t) * a + t * b; }
 
 // Degree elevation: the cubic whose control points are these is the quadratic (q0, q1, q2).
 BezierSegment elevate_quadratic(const Vec3& q0, const Vec3& q1, const Vec3& q2) {

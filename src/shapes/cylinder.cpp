@@ -1,13 +1,10 @@
 #include "shapes/cylinder.h"
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
-
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925;
-}
 
 Cylinder::Cylinder(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin,
                    double zmax, double phimax_deg)
@@ -15,7 +12,7 @@ Cylinder::Cylinder(const Transform& world_from_object, bool reverse_orientation,
       radius_(radius),
       zmin_(zmin),
       zmax_(zmax),
-      phimax_(std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPi) {
+      phimax_(std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPiDouble) {
   // The tube unrolls to a phimax r by (zmax - zmin) rectangle. World area exact for similarity
   // transforms (analytic_shape.h).
   area_ = phimax_ * radius_ * (zmax_ - zmin_) * area_scale();
@@ -28,9 +25,9 @@ void Cylinder::object_bounds(glm::dvec3* lo, glm::dvec3* hi) const {
 
 bool Cylinder::cut_away(const glm::dvec3& p) const {
   if (p.z < zmin_ || p.z > zmax_) return true;
-  if (phimax_ >= kTwoPi) return false;
+  if (phimax_ >= kTwoPiDouble) return false;
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
+  if (phi < 0.0) phi += kTwoPiDouble;
   return phi > phimax_;
 }
 
@@ -66,7 +63,7 @@ void Cylinder::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
     p.x = radius_;
   }
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
+  if (phi < 0.0) phi += kTwoPiDouble;
   // pbrt-v4's parameterisation: u around (phi / phimax), v along the axis from zmin.
   const double u = phi / phimax_, v = (p.z - zmin_) / (zmax_ - zmin_);
   const glm::dvec3 dpdu(-phimax_ * p.y, phimax_ * p.x, 0.0), dpdv(0.0, 0.0, zmax_ - zmin_);

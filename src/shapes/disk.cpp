@@ -1,13 +1,10 @@
 #include "shapes/disk.h"
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
-
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925;
-}
 
 Disk::Disk(const Transform& world_from_object, bool reverse_orientation, double height, double radius,
            double inner_radius, double phimax_deg)
@@ -15,7 +12,7 @@ Disk::Disk(const Transform& world_from_object, bool reverse_orientation, double 
       height_(height),
       radius_(radius),
       inner_radius_(inner_radius),
-      phimax_(std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPi) {
+      phimax_(std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPiDouble) {
   // An affine map scales every area in a plane by the same factor, so the world area (and
   // uniform sampling) is exact for any transform.
   area_ = 0.5 * phimax_ * (radius_ * radius_ - inner_radius_ * inner_radius_) * plane_area_scale();
@@ -34,9 +31,9 @@ std::optional<double> Disk::hit_object(const DRay& r, double tmin, double tmax) 
   double x = r.o.x + t * r.d.x, y = r.o.y + t * r.d.y;
   double dist2 = x * x + y * y;
   if (dist2 > radius_ * radius_ || dist2 < inner_radius_ * inner_radius_) return std::nullopt;
-  if (phimax_ < kTwoPi) {
+  if (phimax_ < kTwoPiDouble) {
     double phi = std::atan2(y, x);
-    if (phi < 0.0) phi += kTwoPi;
+    if (phi < 0.0) phi += kTwoPiDouble;
     if (phi > phimax_) return std::nullopt;
   }
   return t;
@@ -49,7 +46,7 @@ void Disk::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   p.z = height_;
   double r_hit = std::sqrt(p.x * p.x + p.y * p.y);
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
+  if (phi < 0.0) phi += kTwoPiDouble;
   // pbrt's parameterisation: u around, v from the rim (0) to the inner radius (1).
   double u = phi / phimax_;
   double v = (radius_ - r_hit) / (radius_ - inner_radius_);

@@ -1,23 +1,20 @@
 #include "shapes/sphere.h"
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
-
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925;
-}
 
 Sphere::Sphere(const Transform& world_from_object, bool reverse_orientation, double radius, double zmin, double zmax,
                double phimax_deg)
     : AnalyticShape(world_from_object, reverse_orientation), radius_(radius) {
   zmin_ = std::clamp(std::min(zmin, zmax), -radius, radius);
   zmax_ = std::clamp(std::max(zmin, zmax), -radius, radius);
-  phimax_ = std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPi;
+  phimax_ = std::clamp(phimax_deg, 0.0, 360.0) / 360.0 * kTwoPiDouble;
   theta_zmin_ = std::acos(std::clamp(zmin_ / radius, -1.0, 1.0));
   theta_zmax_ = std::acos(std::clamp(zmax_ / radius, -1.0, 1.0));
-  full_ = zmin_ <= -radius && zmax_ >= radius && phimax_ >= kTwoPi;
+  full_ = zmin_ <= -radius && zmax_ >= radius && phimax_ >= kTwoPiDouble;
   // Archimedes: a spherical zone's area is 2 pi r times its height, so a wedge of it is
   // phimax r (zmax - zmin). World area exact for similarity transforms (see header).
   area_ = phimax_ * radius_ * (zmax_ - zmin_) * area_scale();
@@ -31,9 +28,9 @@ void Sphere::object_bounds(glm::dvec3* lo, glm::dvec3* hi) const {
 bool Sphere::cut_away(const glm::dvec3& p) const {
   if (full_) return false;
   if (p.z < zmin_ || p.z > zmax_) return true;
-  if (phimax_ >= kTwoPi) return false;
+  if (phimax_ >= kTwoPiDouble) return false;
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
+  if (phi < 0.0) phi += kTwoPiDouble;
   return phi > phimax_;
 }
 
@@ -62,7 +59,7 @@ void Sphere::surface_at(glm::dvec3 p, SurfaceInteraction* si) const {
   double len = glm::length(p);
   p = len > 0.0 ? p * (radius_ / len) : glm::dvec3(0.0, 0.0, radius_);
   double phi = std::atan2(p.y, p.x);
-  if (phi < 0.0) phi += kTwoPi;
+  if (phi < 0.0) phi += kTwoPiDouble;
   double cos_theta = std::clamp(p.z / radius_, -1.0, 1.0);
   double theta = std::acos(cos_theta), sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   double rxy = std::sqrt(p.x * p.x + p.y * p.y);

@@ -10,8 +10,6 @@ namespace eyetrace {
 
 namespace {
 
-bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // Unit vector along `v` even when |v|^2 would under- or overflow in float; zero if v is zero
 // or not finite.
 Vec3 robust_normalize(const Vec3& v) {
@@ -63,7 +61,7 @@ void TriangleMesh::validate(MeshData& mesh, const MeshSource& src) const {
   if (!mesh.uvs.empty() && mesh.uvs.size() != nv)
     params.fail(src.uv, src.context + fmt::format("{} uv values given for {} vertices", mesh.uvs.size(), nv));
   for (size_t i = 0; i < nv; ++i)
-    if (!finite3(mesh.positions[i])) params.fail(src.p, src.context + fmt::format("vertex {} is not finite", i));
+    if (!is_finite(mesh.positions[i])) params.fail(src.p, src.context + fmt::format("vertex {} is not finite", i));
 }
 
 void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, const MeshSource& src) {
@@ -71,7 +69,7 @@ void TriangleMesh::build(MeshData& mesh, const Transform& world_from_object, con
   positions_.reserve(vertex_count_ + 1);
   for (size_t i = 0; i < vertex_count_; ++i) {
     Vec3 p = world_from_object.point(mesh.positions[i]);
-    if (!finite3(p))
+    if (!is_finite(p))
       src.params.fail(src.p, src.context + fmt::format("vertex {} is not finite after the object's transform", i));
     positions_.push_back(p);
   }
@@ -241,7 +239,7 @@ SurfaceInteraction TriangleMesh::interaction(const Ray& ray, float t, unsigned p
     si.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
     si.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
     Vec3 cr = glm::cross(si.dpdu, si.dpdv);
-    ok = finite3(cr) && glm::dot(cr, cr) > 0.f;
+    ok = is_finite(cr) && glm::dot(cr, cr) > 0.f;
   }
   if (!ok) coordinate_system(si.n, &si.dpdu, &si.dpdv);
   si.wo = -glm::normalize(ray.d);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/lerp.h"
 #include "core/spectrum.h"
 #include "textures/perlin_noise.h"
 #include "textures/texture_mapping.h"
@@ -14,8 +15,6 @@ namespace {
 constexpr float kColours[9][3] = {{.58f, .58f, .6f}, {.58f, .58f, .6f}, {.58f, .58f, .6f},
                                   {.5f, .5f, .5f},   {.6f, .59f, .58f}, {.58f, .58f, .6f},
                                   {.58f, .58f, .6f}, {.2f, .2f, .33f},  {.58f, .58f, .6f}};
-
-RGB lerp(float t, const RGB& a, const RGB& b) { return (1.f - t) * a + t * b; }
 
 class MarbleTexture final : public SpectrumTexture {
  public:

@@ -25,9 +25,12 @@ using test::TempDir;
 
 const std::string kScene = EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt";
 
+// Target 0.15 with a cap of 256: pixels stop anywhere from 16 to 256 samples (33 of the 1024
+// take the cap), 70 per pixel on average, 13 times fewer than target 0.05 with a cap of 1024,
+// which kept almost every pixel at 512 or 1024 (the sanitizer build's heaviest test).
 std::vector<std::string> adaptive_args(const std::string& output, const std::string& threads = "1") {
-  return {"render", kScene, "--resolution", "32x32",          "--max-spp", "1024",      "--threads", threads, "--seed",
-          "7",      "-q",   "--adaptive",   "--target-error", "0.05",      "--min-spp", "8",         "-o",    output};
+  return {"render", kScene, "--resolution", "32x32",          "--max-spp", "256",       "--threads", threads, "--seed",
+          "7",      "-q",   "--adaptive",   "--target-error", "0.15",      "--min-spp", "8",         "-o",    output};
 }
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -119,14 +122,14 @@ TEST(RenderAdaptive, StatsAndSppImageAgree) {
   EXPECT_EQ(lo, d["min"].get<double>());
   EXPECT_EQ(hi, d["max"].get<double>());
   EXPECT_GE(lo, 8.f) << "every pixel takes the first pass";
-  EXPECT_LE(hi, 1024.f);
+  EXPECT_LE(hi, 256.f);
   EXPECT_LT(lo, hi) << "the Cornell box has pixels that stop early and pixels that take the cap";
   EXPECT_DOUBLE_EQ(sum / img.pixels.size(), d["mean"].get<double>());
   EXPECT_DOUBLE_EQ(sum, double(j["samples"].get<uint64_t>()));
   size_t pixels = 0;
   for (const auto& h : d["histogram"]) pixels += h["pixels"].get<size_t>();
   EXPECT_EQ(pixels, 32u * 32u);
-  EXPECT_EQ(j["adaptive"]["target_error"].get<double>(), 0.05);
+  EXPECT_EQ(j["adaptive"]["target_error"].get<double>(), 0.15);
 }
 
 }  // namespace

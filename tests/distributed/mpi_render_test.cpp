@@ -55,6 +55,11 @@ bool same_pixels(const std::string& a, const std::string& b) {
 
 #if EYETRACE_WITH_MPI
 
+// Samples per pixel of the renders that are interrupted: 128 passes of 8 after the first
+// checkpoint, about a second on two cores in Release, so a signal or a killed rank lands
+// mid-render (4096 made the two tests that use it the heaviest of the Release suite's fast tests).
+const std::string kLongSpp = "1024";
+
 // The eyetrace processes mpirun started (its children named eyetrace), from /proc.
 std::vector<pid_t> eyetrace_children(pid_t parent) {
   std::vector<pid_t> kids;
@@ -148,7 +153,7 @@ TEST(MpiRender, AdaptiveRenderIsTheSameOverRanks) {
 TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
   TempDir dir("eyetrace_mpi");
   const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr"), log = dir.file("mpi.log");
-  const std::vector<std::string> args = render_args(out, "4096");
+  const std::vector<std::string> args = render_args(out, kLongSpp);
   const pid_t pid = spawn_mpirun(2, with(args, {"--checkpoint", "0", "--pass-samples", "8"}), log);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(test::wait_for_file(out + ".state", pid)) << read_text(log);
@@ -157,7 +162,7 @@ TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
   ASSERT_TRUE(fs::exists(out + ".state")) << read_text(log);
   EXPECT_EQ(read_image_attribute(out, "eyetrace:interrupted"), "1") << read_text(log);
   ASSERT_EQ(run_mpirun(3, with(args, {"--resume"}), dir.file("resume.log")), 0) << read_text(dir.file("resume.log"));
-  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "4096", "2"), dir.file("ref.log")), 0);
+  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, kLongSpp, "2"), dir.file("ref.log")), 0);
   EXPECT_TRUE(same_pixels(out, ref));
   EXPECT_FALSE(fs::exists(out + ".state"));
 }
@@ -165,7 +170,7 @@ TEST(MpiRender, SigintWritesThePartialImageAndResumeFinishesIt) {
 TEST(MpiRender, AKilledRankEndsTheJobWithinSecondsAndResumeFinishesIt) {
   TempDir dir("eyetrace_mpi");
   const std::string out = dir.file("out.exr"), ref = dir.file("ref.exr"), log = dir.file("mpi.log");
-  const std::vector<std::string> args = render_args(out, "4096");
+  const std::vector<std::string> args = render_args(out, kLongSpp);
   const pid_t pid = spawn_mpirun(2, with(args, {"--checkpoint", "0", "--pass-samples", "8"}), log);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(test::wait_for_file(out + ".state", pid)) << read_text(log);
@@ -194,7 +199,7 @@ TEST(MpiRender, AKilledRankEndsTheJobWithinSecondsAndResumeFinishesIt) {
   EXPECT_NE(read_text(log).find("exited on signal 9"), std::string::npos) << read_text(log);
   // The last checkpoint is whole (written through a rename) and finishes the image.
   ASSERT_EQ(run_mpirun(2, with(args, {"--resume"}), dir.file("resume.log")), 0) << read_text(dir.file("resume.log"));
-  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, "4096", "2"), dir.file("ref.log")), 0);
+  ASSERT_EQ(test::run_eyetrace_logged(render_args(ref, kLongSpp, "2"), dir.file("ref.log")), 0);
   EXPECT_TRUE(same_pixels(out, ref));
 }
 
