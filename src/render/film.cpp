@@ -112,25 +112,13 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
   return true;
 }
 
+// One pixel with weight 1: the same sums, bit for bit (w = 1 * 1 multiplies exactly).
 bool Film::add_splat(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda) {
-  const RGB rgb = sample_rgb(L, lambda);
-  int bucket[kSpectrumSamples];
-  double term[kSpectrumSamples];
-  if (!(is_finite(rgb) &&
-        (!buckets_.spectral() || bucket_terms(clamped_radiance(L, lambda), lambda, 1.f, bucket, term)))) {
-    nonfinite_.fetch_add(1, std::memory_order_relaxed);
-    return false;
-  }
-  const size_t i_px = index(pixel);
-  Pixel& px = pixels_[i_px];
-  px.splat[0] += rgb.r;
-  px.splat[1] += rgb.g;
-  px.splat[2] += rgb.b;
-  if (!buckets_.spectral()) return true;
-  double* splats = &bucket_sums_[(i_px * 2 + 1) * size_t(buckets_.count)];
-  for (int i = 0; i < kSpectrumSamples; ++i)
-    if (bucket[i] >= 0) splats[bucket[i]] += term[i];
-  return true;
+  WavelengthSplat one;
+  one.first = pixel;
+  one.nx = one.ny = 1;
+  one.wx[0] = one.wy[0] = 1.f;
+  return add_splats(one, L, lambda);
 }
 
 bool Film::add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const SampledWavelengths& lambda) {

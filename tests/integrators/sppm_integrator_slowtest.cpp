@@ -10,87 +10,25 @@
 //   is left out).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
-#include "render/film.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "../support/masked_renders.h"
 
 namespace eyetrace {
 namespace {
 
-const std::string kDataDir = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/";
+using test::masked;
+using test::masked_pair;
+using test::MeanAndError;
+using test::replaced;
+using test::with_line;
 
-std::string read_scene(const std::string& name) {
-  std::ifstream in(kDataDir + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_scene(const std::string& name) { return test::read_pbrt_v4_scene(name); }
 
-// `text` with the first occurrence of `from` replaced by `to` (which must be there).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
-// The line of `text` starting with `prefix`, replaced by `line`.
-std::string with_line(const std::string& text, const std::string& prefix, const std::string& line) {
-  const size_t at = text.find("\n" + prefix);
-  EXPECT_NE(at, std::string::npos) << prefix;
-  const size_t end = text.find('\n', at + 1);
-  return text.substr(0, at + 1) + line + text.substr(end);
-}
-
-Image render(const std::string& text, int spp, uint64_t seed = 1) {
-  SceneDescription desc = parse_scene_string(text, "sppm-slow.pbrt", kDataDir);
-  RenderOverrides o;
-  o.resolution = IVec2(32, 32);
-  o.spp = spp;
-  o.seed = seed;
-  RenderSetup s = build_render_setup(desc, o);
-  RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, RenderOptions{}, counters);
-  EXPECT_EQ(counters.nonfinite_samples.load(), 0u);
-  return s.film->image();
-}
+Image render(const std::string& text, int spp, uint64_t seed = 1) { return test::render_32(text, spp, seed); }
 
 double mean(const Image& im) {
   double sum = 0;
   for (float v : im.pixels) sum += v;
   return sum / double(im.pixels.size());
-}
-
-// The mean over the pixels where mask is set (all channels).
-double masked(const Image& im, const std::vector<bool>& mask) {
-  double sum = 0, n = 0;
-  for (size_t p = 0; p < mask.size(); ++p) {
-    if (!mask[p]) continue;
-    for (int c = 0; c < 3; ++c) sum += im.pixels[p * 3 + c] / 3.0;
-    n += 1;
-  }
-  return sum / n;
-}
-
-// Two renders that differ only in their seed (the path tracer's: independent pixels): the masked
-// mean of their average and its standard error, sqrt(sum_p (a1_p - a2_p)^2 / 4) / n, since
-// (a1 - a2)^2 / 4 estimates the variance of (a1 + a2) / 2 in each pixel.
-struct MeanAndError {
-  double mean = 0, std_error = 0;
-};
-MeanAndError masked_pair(const Image& a1, const Image& a2, const std::vector<bool>& mask) {
-  double var = 0, n = 0;
-  for (size_t p = 0; p < mask.size(); ++p) {
-    if (!mask[p]) continue;
-    double d = 0;
-    for (int c = 0; c < 3; ++c) d += (a1.pixels[p * 3 + c] - a2.pixels[p * 3 + c]) / 3.0;
-    var += d * d / 4;
-    n += 1;
-  }
-  return {0.5 * (masked(a1, mask) + masked(a2, mask)), std::sqrt(var) / n};
 }
 
 // Iterations in powers of 3: each iteration renders all pixels at the same wavelengths (radical
@@ -114,26 +52,9 @@ TEST(SppmIntegrator, DiffuseBoxConvergesToThePathTracersMean) {
 
 TEST(SppmIntegrator, CausticOfAPointLightCarriesThePowerPathFindsThroughASphereLight) {
   const std::string caustic = read_scene("sppm-caustic.pbrt");
-  const std::string point = "LightSource \"point\" \"point3 from\" [-1.5 2.5 0] \"rgb I\" [10 10 10]";
-  // A sphere of radius r and radiance L emits I = pi r^2 L in every direction: the point's power.
-  auto sphere = [&](const std::string& text, double r) {
-    const double L = 10.0 / (kPiDouble * r * r);
-    return replaced(text, point,
-                    fmt::format("AttributeBegin\nTranslate -1.5 2.5 0\nAreaLightSource \"diffuse\" \"rgb L\" [{0} {0} "
-                                "{0}]\nMaterial \"diffuse\" \"rgb reflectance\" [0 0 0]\nShape \"sphere\" \"float "
-                                "radius\" {1}\nAttributeEnd",
-                                L, r));
-  };
+  auto sphere = [](const std::string& text, double r) { return test::caustic_with_sphere_light(text, r); };
   const std::string path = with_line(caustic, "Integrator", "Integrator \"path\" \"integer maxdepth\" 5");
-  // The floor pixels: the floor made an emitter of radiance 1 and the glass black, seen directly.
-  std::string floor_text = with_line(caustic, "Integrator", "Integrator \"path\" \"integer maxdepth\" 0");
-  floor_text = replaced(floor_text, "Material \"diffuse\" \"rgb reflectance\" [0.7 0.7 0.7]",
-                        "AreaLightSource \"diffuse\" \"rgb L\" [1 1 1]");
-  floor_text = replaced(floor_text, "Material \"dielectric\" \"float eta\" 1.5",
-                        "Material \"diffuse\" \"rgb reflectance\" [0 0 0]");
-  const Image floor = render(floor_text, 16);
-  std::vector<bool> mask(size_t(floor.width) * floor.height);
-  for (size_t p = 0; p < mask.size(); ++p) mask[p] = floor.pixels[p * 3 + 1] > 0.999f;
+  const std::vector<bool> mask = test::caustic_floor_pixels(caustic);
 
   const double path_point = masked(render(path, 256), mask);
   const MeanAndError path_sphere =
