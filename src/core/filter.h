@@ -19,6 +19,8 @@ class Filter {
   virtual Vec2 radius() const = 0;
   virtual float evaluate(Vec2 p) const = 0;
   virtual FilterSample sample(Vec2 u) const = 0;
+  // The filter's signed integral over its support (what normalises sample weights and splats).
+  virtual float integral() const = 0;
   // Every filter is a product of one-dimensional factors, f(x, y) = evaluate_axis(x, 0) *
   // evaluate_axis(y, 1) (tests/filters/separable_filters_test.cpp): a dispersive eye splats
   // with them (core/wavelength_splat.h). The default divides out f(0, 0); filters override it

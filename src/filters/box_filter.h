@@ -17,7 +17,7 @@ class BoxFilter : public Filter {
   FilterSample sample(Vec2 u) const override;
   bool constant() const override { return true; }
   std::string to_string() const override;
-  float integral() const { return 4.f * radius_.x * radius_.y; }
+  float integral() const override { return 4.f * radius_.x * radius_.y; }
 
  private:
   Vec2 radius_;

@@ -19,7 +19,7 @@ class GaussianFilter : public Filter {
   float evaluate_axis(float t, int axis) const override { return float(shifted_gaussian(t, axis)); }
   FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
   std::string to_string() const override;
-  float integral() const { return integral_; }
+  float integral() const override { return integral_; }
 
   // The smallest sigma whose shape the sampling table resolves, for a given radius.
   static float min_sigma(Vec2 radius);

@@ -21,7 +21,7 @@ class MitchellFilter : public Filter {
   FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
   std::string to_string() const override;
   // The cubic integrates to 1 over [-2, 2] for every B and C, so f integrates to rx ry / 4.
-  float integral() const { return radius_.x * radius_.y / 4.f; }
+  float integral() const override { return radius_.x * radius_.y / 4.f; }
 
   // The 1D kernel on [-2, 2] (zero outside).
   float mitchell_1d(float x) const;

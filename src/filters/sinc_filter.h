@@ -23,7 +23,7 @@ class SincFilter : public Filter {
   FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
   std::string to_string() const override;
   // The signed integral of f over its support (separable: the product of the two axes').
-  float integral() const { return integral_; }
+  float integral() const override { return integral_; }
 
   // sin(pi x) / (pi x), 1 at 0.
   static double sinc(double x);

@@ -18,7 +18,7 @@ class TriangleFilter : public Filter {
   }
   FilterSample sample(Vec2 u) const override;
   std::string to_string() const override;
-  float integral() const { return sqr(radius_.x) * sqr(radius_.y); }
+  float integral() const override { return sqr(radius_.x) * sqr(radius_.y); }
 
  private:
   Vec2 radius_;

@@ -6,25 +6,8 @@
 
 namespace eyetrace {
 
-namespace {
-
-// The filter's integral by the midpoint rule on a 256 x 256 grid over its support: exact for
-// the box and triangle filters (constant or linear on every cell), within 1e-4 for the smooth
-// ones; computed here because Filter does not state it.
-double filter_integral(const Filter& f) {
-  constexpr int n = 256;
-  const Vec2 r = f.radius();
-  double sum = 0;
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x)
-      sum += f.evaluate(Vec2(-r.x + (x + 0.5f) * 2.f * r.x / n, -r.y + (y + 0.5f) * 2.f * r.y / n));
-  return sum * (4.0 * double(r.x) * double(r.y)) / (double(n) * n);
-}
-
-}  // namespace
-
 LightSplatter::LightSplatter(const Film& film) {
-  const double integral = filter_integral(film.filter());
+  const double integral = film.filter().integral();
   const double pixels = double(film.resolution().x) * double(film.resolution().y);
   const double area = double(film.bounds().area());
   scale_ = integral != 0 && area > 0 ? float(pixels / area / integral) : 0.f;

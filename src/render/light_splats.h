@@ -48,8 +48,7 @@ class LightSplats {
   std::vector<LightSplat> list_;
 };
 
-// Adds splats to a film as the render loop does. Made once per render: it measures the
-// filter's integral.
+// Adds splats to a film as the render loop does. Made once per render.
 class LightSplatter {
  public:
   explicit LightSplatter(const Film& film);
