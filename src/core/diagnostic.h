@@ -48,6 +48,11 @@ class DiagnosticList {
   static size_t limit();
   void add(const Diagnostic& d);
   void add_all(const std::vector<Diagnostic>& ds);
+  // Puts `other`'s diagnostics before the pos-th kept one, as if they had been added there:
+  // the list becomes what adding the whole sequence in that order would have made (the same
+  // kept ones, duplicates and count beyond the limit). Imports parsed on other threads join
+  // the errors of the importing file this way, in statement order.
+  void splice(size_t pos, const DiagnosticList& other);
   bool empty() const { return kept_.empty(); }
   const std::vector<Diagnostic>& kept() const { return kept_; }
   size_t suppressed() const { return suppressed_; }

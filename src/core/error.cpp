@@ -54,6 +54,21 @@ void DiagnosticList::add_all(const std::vector<Diagnostic>& ds) {
   for (const Diagnostic& d : ds) add(d);
 }
 
+void DiagnosticList::splice(size_t pos, const DiagnosticList& other) {
+  // Every diagnostic a list did not keep came after `limit` distinct ones of that list, so it
+  // comes after as many in the spliced sequence too: the kept ones are all that can be kept.
+  std::vector<Diagnostic> sequence(kept_.begin(), kept_.begin() + std::ptrdiff_t(std::min(pos, kept_.size())));
+  sequence.insert(sequence.end(), other.kept_.begin(), other.kept_.end());
+  sequence.insert(sequence.end(), kept_.begin() + std::ptrdiff_t(std::min(pos, kept_.size())), kept_.end());
+  std::set<std::string> seen = std::move(seen_);
+  seen.insert(other.seen_.begin(), other.seen_.end());
+  kept_.clear();
+  seen_.clear();
+  add_all(sequence);
+  seen_ = std::move(seen);
+  suppressed_ = seen_.size() - kept_.size();  // every distinct one is either kept or counted
+}
+
 void DiagnosticList::throw_if_any() const {
   if (kept_.empty()) return;
   std::vector<Diagnostic> all = kept_;
@@ -119,22 +134,44 @@ std::vector<Diagnostic> WarningCollector::warnings() const {
   return list_.kept();
 }
 
-void warn(const SourceLoc& loc, const std::string& message) {
-  {
-    std::lock_guard<std::mutex> lock(g_warn_mutex);
-    if (g_collector) {
-      g_collector->list_.add(Diagnostic{loc, "", Severity::Warning, message});
-      return;
-    }
-  }
-  if (g_warnings_fatal)
-    throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
-  std::string text = Diagnostic{loc, "", Severity::Warning, message}.to_string();
+namespace {
+thread_local std::vector<Diagnostic>* t_capture = nullptr;
+}  // namespace
+
+// A warning that is not fatal: to the collector, or printed once.
+void deliver_warning(const Diagnostic& d) {
   std::lock_guard<std::mutex> lock(g_warn_mutex);
+  if (g_collector) {
+    g_collector->list_.add(d);
+    return;
+  }
   static std::set<std::string> seen;
+  std::string text = d.to_string();
   if (!seen.insert(text).second) return;
   ++g_warning_count;
   if (g_warnings_enabled) std::fprintf(stderr, "%s\n", text.c_str());
+}
+
+WarningCapture::WarningCapture(std::vector<Diagnostic>* into) : outer_(t_capture) { t_capture = into; }
+WarningCapture::~WarningCapture() { t_capture = outer_; }
+
+void deliver_warnings(const std::vector<Diagnostic>& warnings) {
+  for (const Diagnostic& d : warnings) deliver_warning(d);
+}
+
+void warn(const SourceLoc& loc, const std::string& message) {
+  bool collecting;
+  {
+    std::lock_guard<std::mutex> lock(g_warn_mutex);
+    collecting = g_collector != nullptr;
+  }
+  if (!collecting && g_warnings_fatal)
+    throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
+  Diagnostic d{loc, "", Severity::Warning, message};
+  if (t_capture)
+    t_capture->push_back(std::move(d));
+  else
+    deliver_warning(d);
 }
 
 static size_t edit_distance(const std::string& a, const std::string& b) {

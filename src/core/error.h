@@ -49,7 +49,7 @@ class WarningCollector {
   std::vector<Diagnostic> warnings() const;
 
  private:
-  friend void warn(const SourceLoc& loc, const std::string& message);
+  friend void deliver_warning(const Diagnostic& d);
   DiagnosticList list_;
   WarningCollector* outer_;
 };
@@ -58,6 +58,22 @@ template <typename... Args>
 [[noreturn]] void fail(const SourceLoc& loc, fmt::format_string<Args...> f, Args&&... args) {
   throw_error(loc, fmt::format(f, std::forward<Args>(args)...));
 }
+
+// While alive, the warnings of this thread are appended to *into, in order, instead of being
+// delivered (a fatal one still throws at once); deliver_warnings() delivers them later as warn()
+// would have. The parser keeps the warnings of Imports parsed on other threads this way, to
+// deliver them in statement order. Captures nest (the innermost wins) and are per thread.
+class WarningCapture {
+ public:
+  explicit WarningCapture(std::vector<Diagnostic>* into);
+  ~WarningCapture();
+  WarningCapture(const WarningCapture&) = delete;
+  WarningCapture& operator=(const WarningCapture&) = delete;
+
+ private:
+  std::vector<Diagnostic>* outer_;
+};
+void deliver_warnings(const std::vector<Diagnostic>& warnings);
 
 // "did you mean" helper: the closest candidate by edit distance, or "" if none is close.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);

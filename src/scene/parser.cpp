@@ -44,7 +44,7 @@ std::optional<std::string> read_whole_file(const fs::path& path, std::string* er
 
 }  // namespace
 
-SceneParser::SceneParser(fs::path search_dir) {
+SceneParser::SceneParser(fs::path search_dir, const ParseOptions& options) : options_(options) {
   desc_.search_dir = search_dir.string();
   desc_.camera.name = "perspective";
   // pbrt-v4 starts with one anonymous diffuse material so shapes before any Material have one.
@@ -78,8 +78,11 @@ TokenFile SceneParser::token_file(const fs::path& path) {
   return TokenFile{path.string(), canonical.string(), path.parent_path().string()};
 }
 
+// The top-level parser holds its warnings back too (sync() delivers them), so that those of
+// the Imports it merges later take their places among them.
 void SceneParser::parse_file(const fs::path& path) {
   Tokenizer tok(read_scene_text(path, nullptr), token_file(path));
+  WarningCapture capture(&warnings_);
   run(tok);
 }
 
@@ -87,6 +90,7 @@ void SceneParser::parse_text(std::string text, const std::string& filename) {
   std::error_code ec;
   fs::path as_file = fs::weakly_canonical(fs::path(desc_.search_dir) / filename, ec);
   Tokenizer tok(std::move(text), TokenFile{filename, as_file.string(), desc_.search_dir});
+  WarningCapture capture(&warnings_);
   run(tok);
 }
 
@@ -103,6 +107,7 @@ void SceneParser::run(Tokenizer& tok) {
         fail(loc, "unexpected {} where a directive (Shape, AttributeBegin, ...) was expected", t.describe());
       auto it = handlers().find(t.text);
       if (it == handlers().end()) unknown_directive(t, loc);
+      if (!pending_.empty() && needs_imports_merged(t.text)) sync();
       (this->*(it->second))(tok, loc);
     } catch (const SceneError& e) {
       errors_.add_all(e.diagnostics());
@@ -147,16 +152,18 @@ void SceneParser::unknown_directive(const Token& t, const SourceLoc& loc) const 
 }
 
 SceneDescription SceneParser::finish(const std::string& top_file) {
+  sync();
   check_end(top_file);
   errors_.throw_if_any();
   return std::move(desc_);
 }
 
 ParsedScene SceneParser::finish_collecting(const std::string& top_file) {
+  sync();
   check_end(top_file);
   ParsedScene r;
   r.errors = errors_.kept();
-  r.buildable = !cut_short_ && in_world_;
+  r.buildable = !cut_short_ && !import_cut_short_ && in_world_;
   r.desc = std::move(desc_);
   return r;
 }
@@ -198,21 +205,30 @@ fs::path SceneParser::resolve_include(const std::string& name, const SourceLoc& 
   throw_missing_file(loc, "", fmt::format("{} \"{}\": file not found (looked for {})", directive, name, looked));
 }
 
-// As pbrt-v4, the included file's tokens are spliced in where the Include stands: a directive
-// begun in it may end after it, and one begun before it may take its parameters from it.
-void SceneParser::include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
+// The files open around an Include or Import are those of this parser's tokenizer, after the
+// files that imported this one (each Import has a parser of its own).
+fs::path SceneParser::included_file(Tokenizer& tok, const SourceLoc& loc, const char* directive) {
   std::string name = read_name(tok, directive, "file name");
   fs::path path = resolve_include(name, loc, directive, tok.current_file().dir);
-  TokenFile file = token_file(path);
-  const std::vector<const TokenFile*> open = tok.open_files();
+  const std::string canonical = token_file(path).canonical;
+  std::vector<std::string> open = ancestors_;
+  for (const TokenFile* f : tok.open_files()) open.push_back(f->canonical);
   for (size_t i = 0; i < open.size(); ++i) {
-    if (open[i]->canonical != file.canonical) continue;
+    if (open[i] != canonical) continue;
     std::string chain;
-    for (size_t j = i; j < open.size(); ++j) chain += fs::path(open[j]->canonical).filename().string() + " -> ";
-    fail(loc, "recursive Include of \"{}\" ({}{})", path.string(), chain, fs::path(file.canonical).filename().string());
+    for (size_t j = i; j < open.size(); ++j) chain += fs::path(open[j]).filename().string() + " -> ";
+    fail(loc, "recursive {} of \"{}\" ({}{})", directive, path.string(), chain,
+         fs::path(canonical).filename().string());
   }
   if (open.size() >= kMaxIncludeDepth) fail(loc, "Include nesting is deeper than {} files", kMaxIncludeDepth);
-  tok.include(read_scene_text(path, &loc), std::move(file));
+  return path;
+}
+
+// As pbrt-v4, the included file's tokens are spliced in where the Include stands: a directive
+// begun in it may end after it, and one begun before it may take its parameters from it.
+void SceneParser::include(Tokenizer& tok, const SourceLoc& loc) {
+  fs::path path = included_file(tok, loc, "Include");
+  tok.include(read_scene_text(path, &loc), token_file(path));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -267,18 +283,18 @@ fs::path absolute_dir(const std::string& dir) {
 
 }  // namespace
 
-SceneDescription parse_scene_file(const std::string& path) {
+SceneDescription parse_scene_file(const std::string& path, const ParseOptions& options) {
   std::error_code ec;
   fs::path abs = fs::absolute(path, ec);
-  SceneParser parser(abs.parent_path().lexically_normal());
+  SceneParser parser(abs.parent_path().lexically_normal(), options);
   parser.parse_file(path);
   return parser.finish(path);
 }
 
-ParsedScene parse_scene_file_collecting(const std::string& path) {
+ParsedScene parse_scene_file_collecting(const std::string& path, const ParseOptions& options) {
   std::error_code ec;
   fs::path abs = fs::absolute(path, ec);
-  SceneParser parser(abs.parent_path().lexically_normal());
+  SceneParser parser(abs.parent_path().lexically_normal(), options);
   try {
     parser.parse_file(path);
   } catch (const SceneError& e) {  // the top file itself cannot be read
@@ -288,7 +304,7 @@ ParsedScene parse_scene_file_collecting(const std::string& path) {
 }
 
 SceneDescription parse_scene_string(std::string_view text, const std::string& filename, const std::string& search_dir) {
-  SceneParser parser(absolute_dir(search_dir));
+  SceneParser parser(absolute_dir(search_dir), ParseOptions{});
   parser.parse_text(std::string(text), filename);
   return parser.finish(filename);
 }

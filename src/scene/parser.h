@@ -1,6 +1,7 @@
 // Parser for pbrt-v4's scene text format. Errors are SceneErrors that name file:line:col
 // and the offending token or parameter; unknown directives are errors, never skipped.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -8,8 +9,16 @@
 
 namespace eyetrace {
 
+struct ParseOptions {
+  // An Import of a file at least this large (bytes on disk) is parsed on a task of its own, in
+  // parallel with the rest, as pbrt-v4 does; a smaller one in place. Either way the result is
+  // the same. 0: every Import on a task; SIZE_MAX: none.
+  std::uintmax_t import_task_min_bytes = kDefaultImportTaskMinBytes;
+  static constexpr std::uintmax_t kDefaultImportTaskMinBytes = 256 * 1024;
+};
+
 // Reads a scene file (and everything it Includes/Imports).
-SceneDescription parse_scene_file(const std::string& path);
+SceneDescription parse_scene_file(const std::string& path, const ParseOptions& options = {});
 
 // For `eyetrace check`: what parsed, and every error instead of a thrown SceneError. Directives
 // that failed are left out of `desc`; `buildable` is false when the rest cannot be built on
@@ -19,7 +28,7 @@ struct ParsedScene {
   std::vector<Diagnostic> errors;
   bool buildable = true;
 };
-ParsedScene parse_scene_file_collecting(const std::string& path);
+ParsedScene parse_scene_file_collecting(const std::string& path, const ParseOptions& options = {});
 
 // Parses scene text held in memory; `filename` is used in messages, `search_dir` resolves
 // Include/Import and relative paths.

@@ -368,6 +368,7 @@ void SceneParser::color_space(Tokenizer& tok, const SourceLoc& loc) {
     warn(loc,
          fmt::format("per-object color spaces are not supported; ColorSpace \"{}\" applies to the whole scene", name));
   desc_.color_space = name;
+  color_space_set_ = true;
 }
 
 void SceneParser::option(Tokenizer& tok, const SourceLoc& loc) {
@@ -421,7 +422,7 @@ void SceneParser::area_light_source(Tokenizer& tok, const SourceLoc& loc) {
   light.world_from_object = current_transform(loc, "AreaLightSource");
   light.reverse_orientation = state_.reverse_orientation;
   desc_.area_lights.push_back(std::move(light));
-  state_.area_light = int(desc_.area_lights.size()) - 1;
+  state_.area_light = area_light_base_ + int(desc_.area_lights.size()) - 1;
 }
 
 void SceneParser::material(Tokenizer& tok, const SourceLoc& loc) {
@@ -429,7 +430,7 @@ void SceneParser::material(Tokenizer& tok, const SourceLoc& loc) {
   SceneEntity m = read_entity(tok, loc, "Material");
   m.params = with_attributes(std::move(m.params), state_.material_attributes);
   desc_.materials.push_back(std::move(m));
-  state_.material = MaterialRef{int(desc_.materials.size()) - 1, ""};
+  state_.material = MaterialRef{material_base_ + int(desc_.materials.size()) - 1, ""};
 }
 
 void SceneParser::make_named_material(Tokenizer& tok, const SourceLoc& loc) {
@@ -448,9 +449,9 @@ void SceneParser::make_named_material(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::named_material(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "NamedMaterial");
   std::string name = read_name(tok, "NamedMaterial", "material name");
-  if (!desc_.named_materials.count(name))
+  if (!named_material_locs_.count(name))
     fail(loc, "NamedMaterial: no material named \"{}\" has been defined with MakeNamedMaterial{}", name,
-         hint_suffix(name, keys_of(desc_.named_materials)));
+         hint_suffix(name, keys_of(named_material_locs_)));
   state_.material = MaterialRef{-1, name};
 }
 
@@ -518,15 +519,21 @@ void SceneParser::object_begin(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "ObjectBegin", "object name");
   if (current_object_)
     fail(loc, "ObjectBegin \"{}\" inside the definition of \"{}\" (instances cannot nest)", name, *current_object_);
-  if (auto it = desc_.instances.find(name); it != desc_.instances.end())
-    fail(loc, "ObjectBegin: object \"{}\" is already defined at {}", name, it->second.loc.to_string());
+  if (auto it = instance_locs_.find(name); it != instance_locs_.end())
+    fail(loc, "ObjectBegin: object \"{}\" is already defined at {}", name, it->second.to_string());
   push_block(loc, "ObjectBegin");
   desc_.instances[name] = InstanceDefinition{name, loc, {}};
+  instance_locs_[name] = loc;
   current_object_ = name;
 }
 
 void SceneParser::object_end(Tokenizer&, const SourceLoc& loc) {
   require_world(loc, "ObjectEnd");
+  if (is_import_ && current_object_ && blocks_.empty())
+    fail(loc,
+         "ObjectEnd in an imported file cannot end the ObjectBegin \"{}\" of the file that imports it (as in "
+         "pbrt-v4)",
+         *current_object_);
   pop_block(loc, "ObjectEnd", "ObjectBegin");
   current_object_.reset();
 }
@@ -536,9 +543,9 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "ObjectInstance", "object name");
   if (current_object_)
     fail(loc, "ObjectInstance \"{}\" inside the definition of \"{}\" (instances cannot nest)", name, *current_object_);
-  if (!desc_.instances.count(name))
+  if (!instance_locs_.count(name))
     fail(loc, "ObjectInstance: no object named \"{}\" has been defined with ObjectBegin{}", name,
-         hint_suffix(name, keys_of(desc_.instances)));
+         hint_suffix(name, keys_of(instance_locs_)));
   if (state_.singular_at) {
     warn(loc, fmt::format("ObjectInstance \"{}\" dropped: the transform made singular at {} maps it to something "
                           "flat, without a normal",
@@ -553,8 +560,8 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
   std::string name = read_name(tok, "MakeNamedMedium", "medium name");
   ParameterList params = read_parameter_list(tok, loc, desc_.search_dir);
-  if (auto it = desc_.media.find(name); it != desc_.media.end())
-    fail(loc, "MakeNamedMedium: medium \"{}\" is already defined at {}", name, it->second.loc.to_string());
+  if (auto it = medium_locs_.find(name); it != medium_locs_.end())
+    fail(loc, "MakeNamedMedium: medium \"{}\" is already defined at {}", name, it->second.to_string());
   if (!params.has("type"))
     fail(loc, "MakeNamedMedium \"{}\": missing the \"string type\" parameter (e.g. \"homogeneous\")", name);
   TransformedEntity m;
@@ -563,6 +570,7 @@ void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {
   m.loc = loc;
   m.world_from_object = current_transform(loc, "MakeNamedMedium");
   desc_.media[name] = std::move(m);
+  medium_locs_[name] = loc;
 }
 
 // Names only: pbrt-v4 resolves them when the scene is built, so a medium may be defined after

@@ -3,11 +3,15 @@
 // everything else uses core/parser.h.
 #pragma once
 #include <array>
+#include <exception>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <tbb/task_group.h>
 
 #include "scene/parser.h"
 #include "scene/scene_description.h"
@@ -57,7 +61,10 @@ std::vector<std::string> keys_of(const Map& m) {
 
 class SceneParser {
  public:
-  explicit SceneParser(fs::path search_dir);
+  SceneParser(fs::path search_dir, const ParseOptions& options);
+  ~SceneParser();
+  SceneParser(const SceneParser&) = delete;
+  SceneParser& operator=(const SceneParser&) = delete;
   void parse_file(const fs::path& path);
   void parse_text(std::string text, const std::string& filename);
   SceneDescription finish(const std::string& top_file);
@@ -66,6 +73,22 @@ class SceneParser {
  private:
   using Handler = void (SceneParser::*)(Tokenizer&, const SourceLoc&);
   static const std::map<std::string, Handler, std::less<>>& handlers();
+
+  // Import (scene_import.cpp). pbrt-v4's CopyForImport: an imported file is parsed by a parser
+  // of its own that starts from a copy of the graphics state at the Import (and the names
+  // defined so far), on a task of its own when the file is large. What it defines is merged
+  // into this parser in the order of the Import statements (pbrt-v4's MergeImported), so the
+  // scene is the one a parse in order would make. Until then this parser goes on only with
+  // directives that need nothing the imports define (shapes, transforms, blocks);
+  // any other first waits for them and merges them (sync()).
+  struct PendingImport;
+  SceneParser(const SceneParser& parent, const std::vector<std::string>& ancestors);
+  void import_file(const fs::path& path, const SourceLoc& at);
+  bool needs_imports_merged(std::string_view directive) const;
+  void sync();
+  void merge(SceneParser& child, size_t shapes_at, size_t warnings_at);
+  void check_import_end();
+  void deliver_root_warnings();
 
   void run(Tokenizer& tok);
   void check_end(const std::string& top_file);
@@ -95,9 +118,10 @@ class SceneParser {
   static TokenFile token_file(const fs::path& path);
 
   // Directives.
-  void include(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Include"); }
-  void import(Tokenizer& tok, const SourceLoc& loc) { include_like(tok, loc, "Import"); }
-  void include_like(Tokenizer& tok, const SourceLoc& loc, const char* directive);
+  void include(Tokenizer& tok, const SourceLoc& loc);
+  void import(Tokenizer& tok, const SourceLoc& loc);
+  // The file an Include or Import names, checked against recursion and the nesting limit.
+  fs::path included_file(Tokenizer& tok, const SourceLoc& loc, const char* directive);
   void attribute_begin(Tokenizer&, const SourceLoc& loc);
   void attribute_end(Tokenizer&, const SourceLoc& loc);
   void transform_begin(Tokenizer&, const SourceLoc& loc);
@@ -140,18 +164,38 @@ class SceneParser {
   void make_named_medium(Tokenizer& tok, const SourceLoc& loc);
   void medium_interface(Tokenizer& tok, const SourceLoc& loc);
 
+  ParseOptions options_;
   SceneDescription desc_;
   GraphicsState state_;
   std::vector<OpenBlock> blocks_;
   std::map<std::string, TransformPair> coordinate_systems_;
   std::map<std::string, SourceLoc> options_seen_;
   std::map<std::pair<std::string, std::string>, SourceLoc> texture_names_;
-  std::map<std::string, SourceLoc> named_material_locs_;
+  std::map<std::string, SourceLoc> named_material_locs_, medium_locs_, instance_locs_;
   std::optional<std::string> current_object_;
   DiagnosticList errors_;   // every failed directive, reported together by finish()
   bool cut_short_ = false;  // an error ended the parse before the end of the text
   bool in_world_ = false;
   bool warned_transform_begin_ = false;
+
+  // An imported file's parser numbers its anonymous materials and area lights on from the
+  // importing parser's (desc_ holds only its own); merge() renumbers them.
+  int material_base_ = 0, area_light_base_ = 0;
+  bool is_import_ = false;
+  bool color_space_set_ = false;        // by a ColorSpace directive in this file
+  bool import_cut_short_ = false;       // an imported file's text was cut short by an error
+  std::vector<std::string> ancestors_;  // canonical names of the files importing this one
+  std::vector<Diagnostic> warnings_;    // this file's warnings, delivered in statement order
+  std::exception_ptr failure_;          // what a task ended with that is not a SceneError
+  std::vector<std::unique_ptr<PendingImport>> pending_;
+  std::unique_ptr<tbb::task_group> tasks_;
+};
+
+// An Import parsed (or being parsed) by `child`, and where its shapes, errors and warnings go
+// in this parser's lists: where they stood at the Import.
+struct SceneParser::PendingImport {
+  std::unique_ptr<SceneParser> child;
+  size_t shapes_at = 0, errors_at = 0, warnings_at = 0;
 };
 
 }  // namespace eyetrace::parsing
