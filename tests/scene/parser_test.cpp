@@ -240,7 +240,7 @@ TEST(ParserFiles, IncludeIsTextualAndRelativeToTheIncludingFile) {
   // ...until the enclosing AttributeEnd in the including file.
   EXPECT_EQ(d.shapes[2].material.index, 0);
   EXPECT_TRUE(d.shapes[2].world_from_object.is_identity());
-  EXPECT_EQ(d.shapes[3].name, "cylinder");  // Import behaves like Include
+  EXPECT_EQ(d.shapes[3].name, "cylinder");  // Imported, in statement order (scene_import_test.cpp)
   EXPECT_EQ(d.shapes[0].loc.line, 2);
   EXPECT_EQ(fs::path(d.shapes[0].loc.file).filename(), "grandchild.pbrt");
   EXPECT_EQ(fs::path(d.shapes[0].loc.file).parent_path().filename(), "inc");
