@@ -3,6 +3,7 @@
 
 #include <sys/resource.h>
 
+#include <tbb/task_arena.h>
 #include <chrono>
 #include <climits>
 #include <exception>
@@ -271,7 +272,9 @@ uint64_t state_fingerprint(const RenderArgs& a, Job& job) {
 
 std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   auto job = std::make_unique<Job>();
-  job->desc = parse_scene_file(a.scene);
+  // Large Imports are parsed on tasks: --threads bounds them as it bounds the render.
+  tbb::task_arena parse_arena(a.threads > 0 ? a.threads : tbb::task_arena::automatic);
+  parse_arena.execute([&] { job->desc = parse_scene_file(a.scene); });
   RenderRequest request;
   request.camera = a.camera;
   request.resolution = a.resolution;
