@@ -205,5 +205,41 @@ TEST(CheckCommand, UnterminatedStringStopsIt) {
   EXPECT_EQ(r.output.find("nosuchshape\": "), std::string::npos) << r.output;
 }
 
+// Imported files large enough to be parsed on tasks of their own (ParseOptions'
+// 256 KiB default), each with errors and a warning: the same listing at every run, each in
+// its place, as the files read in order give it.
+TEST(CheckCommand, ImportsOnTasksListTheSameDiagnosticsEveryRun) {
+  TempDir dir("eyetrace-check");
+  std::string points, indices;
+  for (int i = 0; i < 12000; ++i) points += "0 0 0 1 0 0 0 1 0 ", indices += "0 1 2 ";
+  for (int k = 0; k < 3; ++k)
+    write(dir, "p" + std::to_string(k) + ".pbrt",
+          "WorldEnd\nShape \"trianglemesh\" \"point3 P\" [" + points + "] \"integer indices\" [" + indices +
+              "]\nScale 0 1 1\nShape \"sphere\" \"float radius\" -1\n");
+  ASSERT_GE(std::filesystem::file_size(dir.file("p0.pbrt")), 256u * 1024u);
+  const std::string scene = write(dir, "main.pbrt",
+                                  "WorldBegin\nImport \"p0.pbrt\"\nRotate 1 0 0 0\nImport \"p1.pbrt\"\nWorldEnd\n"
+                                  "Import \"p2.pbrt\"\nImport \"missing.pbrt\"\n");
+  std::string expected = scene + ":3:1: error: Rotate: the rotation axis is the zero vector\n" + scene +
+                         ":5:1: warning: WorldEnd is pbrt-v3 syntax and is ignored (pbrt-v4 scenes end at the end of "
+                         "the file)\n" +
+                         scene + ":7:1: error: Import \"missing.pbrt\": file not found (looked for \"" +
+                         dir.file("missing.pbrt") + "\")\n";
+  for (int k = 0; k < 3; ++k) {
+    const std::string part = dir.file("p" + std::to_string(k) + ".pbrt");
+    expected += part +
+                ":1:1: warning: WorldEnd is pbrt-v3 syntax and is ignored (pbrt-v4 scenes end at the end of "
+                "the file)\n" +
+                part + ":3:1: error: Scale: a zero factor makes the transform singular\n" + part +
+                ":4:16: error: parameter \"radius\": -1 is outside (0, inf)\n";
+  }
+  expected += scene + ": 8 errors (1 missing file), 4 warnings: it does not render\n";
+  for (int run = 0; run < 5; ++run) {
+    const RunResult r = run_eyetrace("check " + scene);
+    EXPECT_EQ(r.status, 1) << r.output;
+    ASSERT_EQ(r.output, expected) << "run " << run;
+  }
+}
+
 }  // namespace
 }  // namespace eyetrace
