@@ -12,7 +12,7 @@ namespace eyetrace {
 struct ParseOptions {
   // An Import of a file at least this large (bytes on disk) is parsed on a task of its own, in
   // parallel with the rest, as pbrt-v4 does; a smaller one in place. Either way the result is
-  // the same. 0: every Import on a task; SIZE_MAX: none.
+  // the same. 0: every Import on a task; the largest value: none.
   std::uintmax_t import_task_min_bytes = kDefaultImportTaskMinBytes;
   static constexpr std::uintmax_t kDefaultImportTaskMinBytes = 256 * 1024;
 };
