@@ -304,6 +304,20 @@ TEST(SceneImport, TheImportedFilesStateEndsWithIt) {
     EXPECT_FALSE(s.shapes[1].reverse_orientation);
     EXPECT_TRUE(s.shapes[1].world_from_object.is_identity());
   }
+  // Coordinate systems named before the Import are known in it (pbrt-v4's imported parser
+  // starts without them, warns and ignores the CoordSysTransform); one named in it ends with it.
+  write(d / "coords.pbrt", "CoordSysTransform \"here\"\nShape \"disk\"\nCoordinateSystem \"inside\"\n");
+  write(d / "coords_main.pbrt",
+        "WorldBegin\nTranslate 0 5 0\nCoordinateSystem \"here\"\nIdentity\nImport \"coords.pbrt\"\n"
+        "CoordSysTransform \"inside\"\n");
+  for (const ParseOptions& options : {kNoTasks, kAllOnTasks}) {
+    ParsedScene p = parse_scene_file_collecting((d / "coords_main.pbrt").string(), options);
+    ASSERT_EQ(p.desc.shapes.size(), 1u);
+    EXPECT_EQ(p.desc.shapes[0].world_from_object.point(Vec3(0.f)), Vec3(0, 5, 0));
+    ASSERT_EQ(p.errors.size(), 1u);
+    EXPECT_EQ(where(p.errors[0].loc), "coords_main.pbrt:6:1");
+    EXPECT_EQ(p.errors[0].message, "CoordSysTransform: no coordinate system named \"inside\"");
+  }
   write(d / "params.pbrt", "\"float radius\" 3\n");
   write(d / "split.pbrt", "WorldBegin\nShape \"sphere\"\nImport \"params.pbrt\"\n");
   EXPECT_NE(error_of(d / "split.pbrt").find("params.pbrt:1:1: error: unexpected string \"float radius\""),
