@@ -342,6 +342,8 @@ optics::Prescription realistic_prescription_from_params(const ParameterList& lis
   const double aperture = params.get_double("aperturediameter");
   const double focus_m = params.get_double("focusdistance");
   std::filesystem::path path(resolve_scene_file(search_dir, file));
+  if (!std::filesystem::exists(path))
+    params.fail_missing_file("lensfile", fmt::format("cannot open \"{}\": no such file", path.string()));
 
   optics::Prescription p;
   try {

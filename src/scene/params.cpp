@@ -14,9 +14,20 @@ std::string Param::canonical_type() const {
   return type;
 }
 
+// pbrt-v4 keeps every copy of a repeated parameter and looks them up newest first (its
+// ParameterDictionary reverses the list), so the last value of a type wins; the collection's
+// watercolor/camera-2.pbrt relies on it. A repeat with another type is an error as before:
+// pbrt-v4 would report the copy its plugin does not read as unused.
 void ParameterList::add(Param p) {
-  if (const Param* prev = find(p.name))
-    eyetrace::fail(p.loc, "parameter \"{}\" given twice (first at {})", p.name, prev->loc.to_string());
+  for (auto& prev : params_) {
+    if (prev.name != p.name) continue;
+    if (prev.canonical_type() != p.canonical_type())
+      eyetrace::fail(p.loc, "parameter \"{}\" given twice (first at {})", p.name, prev.loc.to_string());
+    warn(p.loc, fmt::format("parameter \"{}\" given again (first at {}): the last value is used, as pbrt-v4 does",
+                            p.name, prev.loc.to_string()));
+    prev = std::move(p);
+    return;
+  }
   params_.push_back(std::move(p));
 }
 

@@ -30,7 +30,9 @@ class ParameterList {
   ParameterList() = default;
   explicit ParameterList(SourceLoc directive_loc) : loc_(std::move(directive_loc)) {}
 
-  void add(Param p);  // a repeated name is an error at the second occurrence
+  // A repeated name of the same type replaces the earlier value with a warning (pbrt-v4 uses
+  // the last); of another type it is an error at the second occurrence.
+  void add(Param p);
   const SourceLoc& loc() const { return loc_; }
   const std::vector<Param>& params() const { return params_; }
   bool has(const std::string& name) const { return find(name) != nullptr; }

@@ -336,7 +336,13 @@ class Builder {
     std::string key;
     if (!ref.name.empty()) {
       auto it = desc_.named_materials.find(ref.name);
-      if (it == desc_.named_materials.end()) fail(loc, "NamedMaterial \"{}\" is not defined", ref.name);
+      if (it == desc_.named_materials.end()) {
+        std::vector<std::string> names;
+        for (const auto& [n, m] : desc_.named_materials) names.push_back(n);
+        const std::string hint = closest_match(ref.name, names);
+        fail(loc, "NamedMaterial \"{}\" is not defined with MakeNamedMaterial{}", ref.name,
+             hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint));
+      }
       e = &it->second;
       key = "named:" + ref.name;
     } else if (ref.index >= 0 && size_t(ref.index) < desc_.materials.size()) {

@@ -449,9 +449,8 @@ void SceneParser::make_named_material(Tokenizer& tok, const SourceLoc& loc) {
 void SceneParser::named_material(Tokenizer& tok, const SourceLoc& loc) {
   require_world(loc, "NamedMaterial");
   std::string name = read_name(tok, "NamedMaterial", "material name");
-  if (!named_material_locs_.count(name))
-    fail(loc, "NamedMaterial: no material named \"{}\" has been defined with MakeNamedMaterial{}", name,
-         hint_suffix(name, keys_of(named_material_locs_)));
+  // Resolved where a shape uses it, once the whole scene is read (scene_builder.cpp): pbrt-v4 lets
+  // NamedMaterial come before the MakeNamedMaterial it names (contemporary-bathroom does).
   state_.material = MaterialRef{-1, name};
 }
 

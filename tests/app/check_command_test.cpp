@@ -110,6 +110,37 @@ TEST(CheckCommand, JsonMarksMissingFiles) {
   EXPECT_EQ(j["diagnostics"][1]["missing_file"], false);
 }
 
+// A realistic camera's lens file that is not there is missing data, like a mesh.
+TEST(CheckCommand, AbsentLensFileIsAMissingFile) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "lens.pbrt",
+                                  "Camera \"realistic\" \"string lensfile\" \"lenses/wide.22mm.dat\"\n"
+                                  "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check --json " + scene, false);
+  EXPECT_EQ(r.status, 1) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  ASSERT_EQ(j["diagnostics"].size(), 1u) << r.output;
+  EXPECT_EQ(j["diagnostics"][0]["missing_file"], true);
+  EXPECT_EQ(j["diagnostics"][0]["parameter"], "lensfile");
+  EXPECT_EQ(j["diagnostics"][0]["line"], 1);
+}
+
+// A parameter given twice with one type: pbrt-v4 uses the last value (tests/scene/params_test.cpp);
+// check reports the first as dropped, a warning.
+TEST(CheckCommand, RepeatedParameterIsAWarning) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "twice.pbrt",
+                                  "Camera \"perspective\" \"float lensradius\" 1\n"
+                                  "  \"float focaldistance\" 391 \"float focaldistance\" 114.5\n"
+                                  "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(
+      r.output.find(scene + ":2:29: warning: parameter \"focaldistance\" given again (first at " + scene + ":2:3)"),
+      std::string::npos)
+      << r.output;
+}
+
 // Film parameters pbrt-v4 would change the image with, and eyetrace ignores, are warnings.
 // The film's sensor, white balance and clamp are used, not ignored: nothing to report.
 TEST(CheckCommand, FilmSensorWhiteBalanceAndClampAreUsed) {

@@ -26,7 +26,8 @@ def main(eyetrace, work):
         "bunny-cloud/bunny-cloud.pbrt": 'WorldBegin\nMakeNamedMedium "b" "string type" "nanovdb" '
                                         '"string filename" "bunny_cloud.nvdb"\n',
         # The named material would be defined in the missing materials.pbrt.
-        "sportscar/sportscar-sky.pbrt": 'WorldBegin\nInclude "materials.pbrt"\nNamedMaterial "paint"\n',
+        "sportscar/sportscar-sky.pbrt": 'WorldBegin\nInclude "materials.pbrt"\nNamedMaterial "paint"\n'
+                                        'Shape "sphere"\n',
     }
     for path, text in scenes.items():
         os.makedirs(os.path.join(work, os.path.dirname(path)), exist_ok=True)
