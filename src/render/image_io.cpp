@@ -87,6 +87,10 @@ void write_image(const std::string& path, const Image& image, const std::map<std
   }
 }
 
+void prepare_image_output(const std::string& path) {
+  if (lower_extension(path) != ".exr") image_library(path);
+}
+
 bool read_image(const std::string& path, Image* image, ImageFileFormat* format, std::string* reason) {
   *format = ImageFileFormat{};
   try {

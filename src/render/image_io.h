@@ -30,6 +30,9 @@ struct ImageFileFormat;  // render/image_library.h
 Image read_image(const std::string& path, ImageFileFormat* format);
 // The same without throwing: false with the reason (which does not name the file) in *reason.
 bool read_image(const std::string& path, Image* image, ImageFileFormat* format, std::string* reason);
+// Makes sure `path` can be written later: for a format other than EXR, loads the OpenImageIO
+// module now (an error naming the file if it cannot be), so a long render does not end in it.
+void prepare_image_output(const std::string& path);
 // Reads one string attribute from an image header ("" if absent).
 std::string read_image_attribute(const std::string& path, const std::string& name);
 
