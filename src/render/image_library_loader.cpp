@@ -1,6 +1,7 @@
 #include "render/image_library_loader.h"
 
 #include <dlfcn.h>
+#include <link.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -24,10 +25,16 @@ namespace fs = std::filesystem;
 // The directory of the binary that contains this function.
 fs::path own_directory() {
   Dl_info info{};
-  if (!dladdr(reinterpret_cast<void*>(&own_directory), &info) || !info.dli_fname) return {};
+  link_map* map = nullptr;
+  if (!dladdr1(reinterpret_cast<void*>(&own_directory), &info, reinterpret_cast<void**>(&map), RTLD_DL_LINKMAP) ||
+      !map || !map->l_name)
+    return {};
+  // The main program's link map entry has no name (dladdr then reports argv[0], a bare name when
+  // the program was found through PATH): its file is /proc/self/exe.
+  fs::path file = map->l_name[0] ? fs::path(map->l_name) : fs::path("/proc/self/exe");
   std::error_code ec;
-  fs::path p = fs::canonical(info.dli_fname, ec);
-  return ec ? fs::path(info.dli_fname).parent_path() : p.parent_path();
+  fs::path p = fs::canonical(file, ec);
+  return ec ? fs::path() : p.parent_path();
 }
 
 std::vector<fs::path> candidates() {

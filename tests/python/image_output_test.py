@@ -11,8 +11,12 @@ src/render/image_library_loader.cpp), checked from outside through the eyetrace 
 3. With EYETRACE_IMAGE_MODULE_DIR pointing at an empty directory, a render to .png fails with a
    non-zero exit and an error naming the image and the module, and leaves an existing file of
    that name as it was; a render to .exr still works.
+4. A copy of the binary in DIR/bin, started through PATH, loads the module from DIR/lib (the
+   copy's ../lib), not from the build tree.
 """
 import os
+import shutil
+import subprocess
 import unittest
 
 import numpy as np
@@ -79,6 +83,23 @@ class ImageOutputTest(unittest.TestCase):
         exr = os.path.join(support.SCRATCH, "no-module.exr")
         support.cli(*args, "-o", exr, env_extra=env)
         self.assertEqual(support.read_exr(exr)[0].shape, (8, 8, 3))
+
+    def test_module_found_beside_a_copied_binary(self):
+        root = os.path.join(support.SCRATCH, "installed")
+        shutil.rmtree(root, ignore_errors=True)
+        os.makedirs(os.path.join(root, "bin"))
+        os.makedirs(os.path.join(root, "lib"))
+        shutil.copy2(support.EYETRACE, os.path.join(root, "bin"))
+        module = os.path.join(os.path.dirname(os.path.dirname(support.EYETRACE)), "lib", "libeyetrace_oiio.so")
+        shutil.copy2(module, os.path.join(root, "lib"))
+        env = {k: v for k, v in os.environ.items() if k != "EYETRACE_IMAGE_MODULE_DIR"}
+        env.update(PATH=os.path.join(root, "bin") + os.pathsep + env.get("PATH", ""), LD_DEBUG="files")
+        out = os.path.join(support.SCRATCH, "installed.png")
+        r = subprocess.run(["eyetrace", "render", CORNELL, "--quiet", "--spp", "1", "--resolution", "8x8", "-o", out],
+                           capture_output=True, text=True, env=env, cwd=support.SCRATCH)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        loaded = [line.split("file=", 1)[1].split()[0] for line in r.stderr.splitlines() if "file=" in line]
+        self.assertIn(os.path.join(os.path.realpath(root), "lib", "libeyetrace_oiio.so"), loaded)
 
 
 if __name__ == "__main__":
