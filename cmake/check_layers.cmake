@@ -4,7 +4,9 @@
 #   src/render  includes only core/ and render/ (the render loop knows no scene text);
 #   src/scene   includes only core/, scene/ and render/: no plugin folder, so adding a
 #               plugin never touches them (the plugins are registered in src/builtin_plugins.cpp);
-#   src/distributed includes only core/, render/ and distributed/ (MPI beside the render loop).
+#   src/distributed includes only core/, render/ and distributed/ (MPI beside the render loop);
+#   src/oiio    includes only render/ (the OpenImageIO module sees the interface it implements,
+#               render/image_library.h, and links nothing of eyetrace).
 # Run: cmake -DSRC=<source dir>/src -P check_layers.cmake
 cmake_policy(SET CMP0057 NEW)
 set(allowed_optics "optics")
@@ -12,8 +14,9 @@ set(allowed_core "core")
 set(allowed_scene "core;scene;render")
 set(allowed_render "core;render")
 set(allowed_distributed "core;render;distributed")
+set(allowed_oiio "render")
 set(violations "")
-foreach(layer optics core scene render distributed)
+foreach(layer optics core scene render distributed oiio)
   file(GLOB_RECURSE files "${SRC}/${layer}/*.h" "${SRC}/${layer}/*.cpp")
   foreach(file IN LISTS files)
     file(STRINGS "${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[^\"]+\"")
@@ -36,4 +39,4 @@ if(violations)
   list(JOIN violations "\n  " text)
   message(FATAL_ERROR "layering violations:\n  ${text}")
 endif()
-message(STATUS "layering: optics, core, scene, render and distributed include only what they may")
+message(STATUS "layering: optics, core, scene, render, distributed and oiio include only what they may")

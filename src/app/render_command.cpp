@@ -287,6 +287,7 @@ std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   RenderSetup& setup = job->setup;
   job->output = a.output.empty() ? setup.output_filename : a.output;
   check_output_extension(job->output);
+  prepare_image_output(job->output);
   // A gbuffer film's auxiliary sums are not part of the render state that checkpoints store and
   // MPI ranks exchange (render/gbuffer.h): refused rather than written half.
   if (setup.film->gbuffer() && (a.checkpoint >= 0 || a.resume || group.size() > 1))

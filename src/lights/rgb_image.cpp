@@ -1,31 +1,26 @@
 #include "lights/rgb_image.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cctype>
+
+#include "render/image_io.h"
+#include "render/image_library.h"
 
 namespace eyetrace {
 namespace {
 
 float srgb_decode(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
-bool is_integer_format(const OIIO::TypeDesc& t) {
-  return t.basetype != OIIO::TypeDesc::FLOAT && t.basetype != OIIO::TypeDesc::HALF &&
-         t.basetype != OIIO::TypeDesc::DOUBLE;
-}
-
-bool says_linear(const OIIO::ImageSpec& spec) {
-  std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+bool says_linear(std::string cs) {
   std::transform(cs.begin(), cs.end(), cs.begin(), [](unsigned char c) { return std::tolower(c); });
   return cs.find("linear") != std::string::npos || cs == "scene_linear";
 }
 
 // Index of the channel named `name`, else `fallback` (if it exists), else channel 0.
-int channel_index(const OIIO::ImageSpec& spec, const char* name, int fallback) {
-  for (int c = 0; c < spec.nchannels; ++c)
-    if (spec.channel_name(c) == name) return c;
-  return fallback < spec.nchannels ? fallback : 0;
+int channel_index(const Image& img, const char* name, int fallback) {
+  for (int c = 0; c < int(img.channel_names.size()); ++c)
+    if (img.channel_names[c] == name) return c;
+  return fallback < img.channels ? fallback : 0;
 }
 
 }  // namespace
@@ -46,35 +41,26 @@ RGB RGBImage::bilerp(Vec2 st) const {
 }
 
 std::optional<RGBImage> read_rgb_image(const std::string& path, std::string* error, size_t* non_finite) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    *error = OIIO::geterror();
-    if (error->empty()) *error = "cannot open the file";
-    return std::nullopt;
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+  Image data;
+  ImageFileFormat format;
+  if (!read_image(path, &data, &format, error)) return std::nullopt;
+  if (data.width <= 0 || data.height <= 0 || data.channels <= 0) {
     *error = "the image is empty";
     return std::nullopt;
   }
-  int nc = spec.nchannels;
-  std::vector<float> data(size_t(spec.width) * spec.height * nc);
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data())) {
-    *error = in->geterror();
-    return std::nullopt;
-  }
-  bool decode = is_integer_format(spec.format) && !says_linear(spec);
-  int ch[3] = {channel_index(spec, "R", 0), channel_index(spec, "G", 1), channel_index(spec, "B", 2)};
+  const int nc = data.channels;
+  bool decode = format.integer && !says_linear(format.color_space);
+  int ch[3] = {channel_index(data, "R", 0), channel_index(data, "G", 1), channel_index(data, "B", 2)};
   if (nc < 3) ch[0] = ch[1] = ch[2] = 0;
 
   RGBImage img;
-  img.width = spec.width;
-  img.height = spec.height;
+  img.width = data.width;
+  img.height = data.height;
   img.pixels.resize(size_t(img.width) * img.height);
   size_t bad = 0;
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
-      float v = data[i * nc + ch[c]];
+      float v = data.pixels[i * nc + ch[c]];
       if (!std::isfinite(v)) ++bad, v = 0.f;
       v = std::max(v, 0.f);
       img.pixels[i][c] = decode ? srgb_decode(v) : v;

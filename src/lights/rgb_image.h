@@ -21,11 +21,11 @@ struct RGBImage {
   RGB bilerp(Vec2 st) const;
 };
 
-// Reads `path` through OpenImageIO. Integer formats (PNG, JPEG, 8/16-bit TIFF) are taken as
-// sRGB-encoded unless the file says it is linear; float formats (EXR, HDR, PFM) as linear.
+// Reads `path` (render/image_io.h: EXR directly, other formats through OpenImageIO). Integer formats (PNG, JPEG,
+// 8/16-bit TIFF) are taken as sRGB-encoded unless the file says it is linear; float formats (EXR, HDR, PFM) as linear.
 // R, G, B channels by name (else the first three; one- or two-channel images are grey).
 // Negative values become 0; non-finite ones become 0 and are counted in *non_finite.
-// On failure returns nullopt with OpenImageIO's reason in *error.
+// On failure returns nullopt with the reason in *error.
 std::optional<RGBImage> read_rgb_image(const std::string& path, std::string* error, size_t* non_finite = nullptr);
 
 }  // namespace eyetrace

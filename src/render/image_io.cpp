@@ -1,14 +1,17 @@
 #include "render/image_io.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #include "core/error.h"
+#include "render/exr_file.h"
+#include "render/image_library.h"
+#include "render/image_library_loader.h"
 
 namespace eyetrace {
 
@@ -20,13 +23,6 @@ float linear_to_srgb(float v) {
 }
 
 float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
-
-// EXR compression: lossless run-length. Rendered pixels carry noise in their low mantissa bits,
-// which no lossless coder removes: on the figure renders zip saves 3.5 % of the raw size and
-// RLE 0.3 %, on mostly black images (the chromatic figure) zip 89 % and RLE 88 %; but zip
-// writes a 4096x4096 film (200 MB) in about 2.4 s on two cores, RLE in 0.4 s (issue 17's
-// "reduction and output under 1 s"). Measured in docs/cluster.md.
-constexpr const char* kExrCompression = "rle";
 
 static std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
@@ -45,35 +41,42 @@ void write_image(const std::string& path, const Image& image, const std::map<std
   if (!image.channel_names.empty() && int(image.channel_names.size()) != image.channels)
     throw_error(fmt::format("output \"{}\": {} channel names for {} channels", path, image.channel_names.size(),
                             image.channels));
+  if (image.pixels.size() != size_t(image.width) * image.height * image.channels || image.width <= 0 ||
+      image.height <= 0)
+    throw_error(fmt::format("output \"{}\": {} values for a {}x{} image of {} channels", path, image.pixels.size(),
+                            image.width, image.height, image.channels));
+  // Before anything is written: an image other than EXR needs the OpenImageIO module.
+  ImageLibrary* library = ext == ".exr" ? nullptr : &image_library(path);
   fs::path target(path);
   fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
   fs::create_directories(dir, ec);
-  // The temporary keeps the real extension so OIIO picks the right writer.
+  // The temporary keeps the real extension so OpenImageIO picks the right writer.
   std::random_device rd;
   fs::path tmp = dir / fmt::format(".{}.tmp{:08x}{}", target.stem().string(), rd(), ext);
 
-  OIIO::ImageSpec spec(image.width, image.height, image.channels,
-                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
-  for (const auto& [k, v] : metadata) spec.attribute(k, v);
-  // 8-bit output converts a copy; float output writes the pixels as they are (a 4096x4096
-  // film's are 200 MB: no copy).
-  std::vector<float> encoded;
-  if (!is_float) {
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    encoded.resize(image.pixels.size());
-    for (size_t i = 0; i < encoded.size(); ++i)
-      encoded[i] = std::clamp(linear_to_srgb(std::isfinite(image.pixels[i]) ? image.pixels[i] : 0.f), 0.f, 1.f);
+  std::string err;
+  bool ok = true;
+  if (!library) {
+    try {
+      write_exr(tmp.string(), image, metadata);
+    } catch (const std::exception& e) {
+      ok = false;
+      err = e.what();
+    }
   } else {
-    spec.attribute("compression", kExrCompression);
+    // 8-bit output converts a copy; float output writes the pixels as they are (a 4096x4096
+    // film's are 200 MB: no copy).
+    std::vector<float> encoded;
+    if (!is_float) {
+      encoded.resize(image.pixels.size());
+      for (size_t i = 0; i < encoded.size(); ++i)
+        encoded[i] = std::clamp(linear_to_srgb(std::isfinite(image.pixels[i]) ? image.pixels[i] : 0.f), 0.f, 1.f);
+    }
+    ok =
+        library->write(tmp.string(), image, is_float ? image.pixels.data() : encoded.data(), !is_float, metadata, &err);
   }
-  const float* pixels = is_float ? image.pixels.data() : encoded.data();
-  auto out = OIIO::ImageOutput::create(tmp.string());
-  if (!out) throw_error(fmt::format("output \"{}\": cannot create a writer: {}", path, OIIO::geterror()));
-  bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels) && out->close();
   if (!ok) {
-    std::string err = out->geterror();
     fs::remove(tmp, ec);
     throw_error(fmt::format("output \"{}\": write failed: {}", path, err));
   }
@@ -84,28 +87,47 @@ void write_image(const std::string& path, const Image& image, const std::map<std
   }
 }
 
-Image read_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw_error(fmt::format("image \"{}\": cannot read: {}", path, OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
+void prepare_image_output(const std::string& path) {
+  if (lower_extension(path) != ".exr") image_library(path);
+}
+
+bool read_image(const std::string& path, Image* image, ImageFileFormat* format, std::string* reason) {
+  *format = ImageFileFormat{};
+  try {
+    if (is_exr_file(path)) {
+      *image = read_exr(path);  // float pixels, linear
+      return true;
+    }
+    // A file that cannot be opened at all needs no image library to say so.
+    if (!std::ifstream(path, std::ios::binary)) {
+      *reason = std::strerror(errno);
+      return false;
+    }
+    return image_library(path).read(path, image, format, reason);
+  } catch (const SceneError& e) {  // the module cannot be loaded
+    *reason = e.first().message;
+  } catch (const std::exception& e) {
+    *reason = e.what();
+  }
+  return false;
+}
+
+Image read_image(const std::string& path, ImageFileFormat* format) {
   Image img;
-  img.width = spec.width;
-  img.height = spec.height;
-  img.channels = spec.nchannels;
-  img.channel_names = spec.channelnames;
-  img.pixels.resize(size_t(img.width) * img.height * img.channels);
-  if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-    throw_error(fmt::format("image \"{}\": read failed: {}", path, in->geterror()));
-  in->close();
+  std::string reason;
+  if (!read_image(path, &img, format, &reason)) throw_error(fmt::format("image \"{}\": cannot read: {}", path, reason));
   return img;
 }
 
+Image read_image(const std::string& path) {
+  ImageFileFormat format;
+  return read_image(path, &format);
+}
+
 std::string read_image_attribute(const std::string& path, const std::string& name) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) return "";
-  std::string v = in->spec().get_string_attribute(name);
-  in->close();
-  return v;
+  if (is_exr_file(path)) return read_exr_attribute(path, name);
+  if (!std::ifstream(path, std::ios::binary)) return "";
+  return image_library(path).attribute(path, name);
 }
 
 }  // namespace eyetrace

@@ -1,5 +1,7 @@
-// Reading and writing images through OpenImageIO. Writes go to a temporary file in the
-// target's folder and are renamed into place, so an existing output is never half-written.
+// Reading and writing images: OpenEXR through the OpenEXR library (render/exr_file.h), every
+// other format through OpenImageIO, loaded on demand (render/image_library.h). Writes go to a
+// temporary file in the target's folder and are renamed into place, so an existing output is
+// never half-written.
 #pragma once
 #include <map>
 #include <string>
@@ -21,8 +23,16 @@ struct Image {
 // attributes; .png/.jpg/.tif: sRGB 8-bit after clamping, 3-channel images only (anything else
 // is an error: a spectral image is EXR only). Throws SceneError naming the file on failure.
 void write_image(const std::string& path, const Image& image, const std::map<std::string, std::string>& metadata = {});
-// All channels as float, in the file's channel order, with their names.
+// All channels as float, in the file's channel order (OpenImageIO's for EXR), with their names.
 Image read_image(const std::string& path);
+struct ImageFileFormat;  // render/image_library.h
+// The same, and how the file stores its pixels (*format).
+Image read_image(const std::string& path, ImageFileFormat* format);
+// The same without throwing: false with the reason (which does not name the file) in *reason.
+bool read_image(const std::string& path, Image* image, ImageFileFormat* format, std::string* reason);
+// Makes sure `path` can be written later: for a format other than EXR, loads the OpenImageIO
+// module now (an error naming the file if it cannot be), so a long render does not end in it.
+void prepare_image_output(const std::string& path);
 // Reads one string attribute from an image header ("" if absent).
 std::string read_image_attribute(const std::string& path, const std::string& name);
 

@@ -1,6 +1,7 @@
 #include "scene/texture_store.h"
 
-#include <OpenImageIO/texture.h>
+#include "render/image_library.h"
+#include "render/image_library_loader.h"
 
 namespace eyetrace {
 
@@ -42,19 +43,12 @@ bool is_texture_ref(const ParameterList& params, const std::string& name) {
 TextureStore::TextureStore() = default;
 
 TextureStore::~TextureStore() {
-  // Textures hold handles into the TextureSystem: release them first.
+  // Textures hold handles into the texture cache: release them first.
   floats_.clear();
   spectra_.clear();
   float_store_.clear();
   spectrum_store_.clear();
-  if (texture_system_) {
-    // The system is OpenImageIO's shared one (destroying a private one trips a sized-delete
-    // mismatch inside OpenImageIO 2.4 under AddressSanitizer). Files changed on disk since
-    // they were read are dropped from its cache, so a later scene sees the new contents.
-    auto* ts = static_cast<OIIO::TextureSystem*>(texture_system_);
-    ts->invalidate_all(false);
-    OIIO::TextureSystem::destroy(ts);
-  }
+  texture_files_.reset();
 }
 
 void TextureStore::add_float(const std::string& name, std::unique_ptr<FloatTexture> tex, const SourceLoc& loc) {
@@ -132,15 +126,9 @@ const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList&
   return keep(std::make_unique<ConstantSpectrumTexture>(v->spectrum));
 }
 
-void* TextureStore::texture_system() {
-  if (!texture_system_) {
-    OIIO::TextureSystem* ts = OIIO::TextureSystem::create(true);
-    ts->attribute("automip", 1);  // trilinear/ewa on plain (un-MIPmapped) images
-    ts->attribute("autotile", 64);
-    ts->attribute("max_memory_MB", 1024.f);
-    texture_system_ = ts;
-  }
-  return texture_system_;
+TextureFiles& TextureStore::texture_files(const std::string& file) {
+  if (!texture_files_) texture_files_ = image_library(file).texture_files();
+  return *texture_files_;
 }
 
 const FloatTexture* TextureStore::keep(std::unique_ptr<FloatTexture> tex) {

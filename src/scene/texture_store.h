@@ -1,7 +1,8 @@
 // Named textures of a scene, and the lookup that lets a material parameter be either a
 // constant ("rgb reflectance" [.5 .5 .5]) or a texture ("texture reflectance" "wood").
-// Constants become ConstantTextures owned by the store. Image textures share one
-// OpenImageIO TextureSystem, created only when a scene has an image texture.
+// Constants become ConstantTextures owned by the store. Image textures share one texture cache
+// (OpenImageIO's TextureSystem, render/image_library.h), made only when a scene has an image
+// texture.
 #pragma once
 #include <map>
 #include <memory>
@@ -14,6 +15,8 @@
 #include "scene/params.h"
 
 namespace eyetrace {
+
+class TextureFiles;  // render/image_library.h
 
 class TextureStore {
  public:
@@ -45,8 +48,9 @@ class TextureStore {
   const SpectrumTexture* spectrum_param(const PluginParams& params, const std::string& name,
                                         SpectrumType use = SpectrumType::Albedo);
 
-  // Opaque handle to the shared OpenImageIO TextureSystem (created on first call).
-  void* texture_system();
+  // The shared texture cache, made on the first call (which loads the OpenImageIO module: an
+  // error naming `file` when it cannot be loaded).
+  TextureFiles& texture_files(const std::string& file);
   // Keeps `tex` alive as long as the store (for textures made on the fly).
   const FloatTexture* keep(std::unique_ptr<FloatTexture> tex);
   const SpectrumTexture* keep(std::unique_ptr<SpectrumTexture> tex);
@@ -56,7 +60,7 @@ class TextureStore {
   std::map<std::string, const SpectrumTexture*> spectra_;
   std::vector<std::unique_ptr<FloatTexture>> float_store_;
   std::vector<std::unique_ptr<SpectrumTexture>> spectrum_store_;
-  void* texture_system_ = nullptr;
+  std::unique_ptr<TextureFiles> texture_files_;
 };
 
 }  // namespace eyetrace

@@ -1,11 +1,10 @@
 #include "textures/imagemap_texture.h"
 
-#include <OpenImageIO/texture.h>
-
 #include <cmath>
 #include <filesystem>
 
 #include "render/image_io.h"
+#include "render/image_library.h"
 #include "scene/scene_files.h"
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
@@ -14,17 +13,12 @@ namespace eyetrace {
 
 namespace {
 
-using OIIO::TextureOpt;
-using OIIO::TextureSystem;
-
 enum class Encoding { Linear, SRGB, Gamma };
 
 // Everything an image lookup needs, shared by the float and spectrum variants.
 struct ImageLookup {
-  TextureSystem* ts = nullptr;
-  TextureSystem::TextureHandle* handle = nullptr;
-  TextureOpt opt;
-  int channels = 0;  // colour channels in the file (alpha excluded when we can tell)
+  std::unique_ptr<TextureLookup> image;  // one virtual call per lookup
+  int channels = 0;                      // colour channels in the file (alpha excluded when we can tell)
   Encoding encoding = Encoding::Linear;
   float gamma = 1.f;
   float scale = 1.f;
@@ -34,10 +28,9 @@ struct ImageLookup {
   // Up to 3 channels at the hit, decoded, scaled and inverted; returns how many are valid.
   int fetch(const TextureEvalContext& ctx, float out[3]) const {
     TextureCoords c = mapping.map(ctx);
-    TextureOpt o = opt;
     int n = std::min(channels, 3);
     out[0] = out[1] = out[2] = 0.f;
-    if (!ts->texture(handle, nullptr, o, c.st.x, 1.f - c.st.y, c.width, 0.f, 0.f, c.width, n, out)) return 0;
+    if (!image->lookup(c.st.x, 1.f - c.st.y, c.width, n, out)) return 0;
     for (int i = 0; i < n; ++i) out[i] = finish(out[i]);
     return n;
   }
@@ -53,32 +46,23 @@ struct ImageLookup {
   }
 };
 
-void read_filter(const PluginParams& p, TextureOpt* opt) {
-  std::string filter = p.get_string("filter");
-  opt->interpmode = TextureOpt::InterpBilinear;
-  // pbrt-v4's point and bilinear filters pick one MIP level from the footprint.
-  if (filter == "point") {
-    opt->interpmode = TextureOpt::InterpClosest;
-    opt->mipmode = TextureOpt::MipModeOneLevel;
-  } else if (filter == "bilinear") {
-    opt->mipmode = TextureOpt::MipModeOneLevel;
-  } else if (filter == "trilinear") {
-    opt->mipmode = TextureOpt::MipModeTrilinear;
-  } else {  // ewa, EWA
-    opt->mipmode = TextureOpt::MipModeAniso;
-  }
-  opt->anisotropic = std::max(1, int(p.get_float("maxanisotropy")));
+TextureLookupOptions read_options(const PluginParams& p) {
+  TextureLookupOptions o;
+  const std::string filter = p.get_string("filter");  // one of the declared choices
+  o.filter = filter == "point"       ? TextureLookupOptions::Filter::Point
+             : filter == "bilinear"  ? TextureLookupOptions::Filter::Bilinear
+             : filter == "trilinear" ? TextureLookupOptions::Filter::Trilinear
+                                     : TextureLookupOptions::Filter::Ewa;  // ewa, EWA
+  o.max_anisotropy = std::max(1, int(p.get_float("maxanisotropy")));
+  const std::string wrap = p.get_string("wrap");
+  o.wrap = wrap == "black"   ? TextureLookupOptions::Wrap::Black
+           : wrap == "clamp" ? TextureLookupOptions::Wrap::Clamp
+                             : TextureLookupOptions::Wrap::Repeat;
+  return o;
 }
 
-TextureOpt::Wrap read_wrap(const PluginParams& p) {
-  const std::string wrap = p.get_string("wrap");  // one of the declared choices
-  if (wrap == "black") return TextureOpt::WrapBlack;
-  if (wrap == "clamp") return TextureOpt::WrapClamp;
-  return TextureOpt::WrapPeriodic;
-}
-
-void read_encoding(const PluginParams& p, const std::string& path, const OIIO::ImageSpec& spec, ImageLookup* l) {
-  bool eight_bit = spec.format.basetype == OIIO::TypeDesc::UINT8;
+void read_encoding(const PluginParams& p, const std::string& path, const ImageFileFormat& format, ImageLookup* l) {
+  bool eight_bit = format.eight_bit;
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
   std::string e = p.has("encoding") ? p.get_string("encoding") : ext == ".png" || eight_bit ? "sRGB" : "linear";
@@ -97,7 +81,7 @@ void read_encoding(const PluginParams& p, const std::string& path, const OIIO::I
     p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
   }
   // Floating-point pixels are linear already (pbrt-v4 ignores the encoding for them).
-  if (spec.format.is_floating_point()) l->encoding = Encoding::Linear;
+  if (!format.integer) l->encoding = Encoding::Linear;
 }
 
 }  // namespace
@@ -129,27 +113,19 @@ ImageLookup open_image(const TextureContext& ctx) {
   std::string path = resolve_scene_file(ctx.search_dir, name);
 
   ImageLookup l;
-  l.ts = static_cast<TextureSystem*>(ctx.textures.texture_system());
-  OIIO::ustring upath(path);
-  OIIO::ImageSpec spec;
   if (!std::filesystem::is_regular_file(path))
     p.fail_missing_file("filename", fmt::format("image file \"{}\" not found", path));
-  if (!l.ts->get_imagespec(upath, 0, spec)) {
-    std::string why = l.ts->geterror();
-    p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
-  }
-  l.handle = l.ts->get_texture_handle(upath);
-  if (!l.handle) p.fail("filename", fmt::format("cannot read image \"{}\"", path));
-  l.channels = spec.nchannels;
-  if (spec.alpha_channel >= 0 && spec.alpha_channel < 3) l.channels = std::min(l.channels, spec.alpha_channel);
+  TextureFiles& files = ctx.textures.texture_files(path);
+  ImageFileFormat format;
+  std::string why;
+  l.image = files.open(path, read_options(p), &l.channels, &format, &why);
+  if (!l.image) p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
+  if (format.alpha_channel >= 0 && format.alpha_channel < 3) l.channels = std::min(l.channels, format.alpha_channel);
   if (l.channels < 1) p.fail("filename", fmt::format("image \"{}\" has no colour channels", path));
 
-  read_filter(p, &l.opt);
-  l.opt.swrap = l.opt.twrap = read_wrap(p);
-  l.opt.fill = 0.f;
   l.scale = p.get_float("scale");
   l.invert = p.get_bool("invert");
-  read_encoding(p, path, spec, &l);
+  read_encoding(p, path, format, &l);
   l.mapping = TextureMapping2D::read(ctx, p);
   return l;
 }

@@ -1,10 +1,9 @@
-// pbrt-v4's "imagemap" texture, looked up through the scene's OpenImageIO TextureSystem:
-// "filename" (relative to the scene's directory), "filter" (point, bilinear (default),
-// trilinear, ewa), "wrap" (repeat (default), black, clamp), "maxanisotropy" (8), "scale" (1),
-// "invert" (false: v becomes max(0, 1 - scale v) when true), "encoding" ("sRGB" by default for
-// PNG and 8-bit files, else "linear"; "gamma g" also accepted), and the 2D mapping
-// parameters. The image is opened when the texture is created, so a missing or unreadable
-// file is an error that names "filename" and the path.
+// pbrt-v4's "imagemap" texture, looked up through the scene's texture cache (OpenImageIO's
+// TextureSystem, render/image_library.h): "filename" (relative to the scene's directory), "filter" (point, bilinear
+// (default), trilinear, ewa), "wrap" (repeat (default), black, clamp), "maxanisotropy" (8), "scale" (1), "invert"
+// (false: v becomes max(0, 1 - scale v) when true), "encoding" ("sRGB" by default for PNG and 8-bit files, else
+// "linear"; "gamma g" also accepted), and the 2D mapping parameters. The image is opened when the texture is created,
+// so a missing or unreadable file is an error that names "filename" and the path.
 //
 // Row 0 of an image is its top: t = 1 - v, as in pbrt-v4. The encoding is undone after
 // filtering, which is exact at texel centres and a close approximation between them.

@@ -7,14 +7,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <filesystem>
 
 #include "core/error.h"
 #include "core/sampling.h"
 #include "light_test_util.h"
 #include "lights/diffuse_area_light.h"
+#include "render/image_io.h"
 #include "scene/texture_store.h"
 
 namespace eyetrace {
@@ -212,12 +211,10 @@ std::string temp_path(const std::string& name) {
 // pbrt-v4 looks the image up at (u, 1 - v): uv (0.25, 0.75) is the centre of the top-left pixel.
 TEST(DiffuseAreaLight, ImageEmissionIsLookedUpAtUOneMinusV) {
   std::string path = temp_path("emit.exr");
-  float px[2 * 2 * 3] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};  // red green / blue white
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(path, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::FLOAT)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-  out->close();
+  Image img;
+  img.width = img.height = 2;
+  img.pixels = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};  // red green / blue white
+  write_image(path, img);
   FakeSquare square(0.5f, 1.f);
   auto light = make_area(square, {string_param("filename", path), float_param("scale", 2)});
   SurfaceInteraction hit;

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <filesystem>
 #include <functional>
 
@@ -18,6 +16,7 @@
 #include "light_test_util.h"
 #include "lights/infinite_light.h"
 #include "lights/sphere_mapping.h"
+#include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
@@ -40,17 +39,17 @@ std::string temp_path(const std::string& name) {
   return (scratch.dir / name).string();
 }
 
-void write_image(const std::string& path, int w, int h, const std::function<RGB(int, int)>& pixel,
-                 OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT) {
-  std::vector<float> data(size_t(w) * h * 3);
+// Float pixels for .exr; for .png the values are the 8-bit file's codes / 255 (sRGB-encoded).
+void write_image(const std::string& path, int w, int h, const std::function<RGB(int, int)>& pixel) {
+  const bool png = path.size() > 4 && path.substr(path.size() - 4) == ".png";
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.pixels.resize(size_t(w) * h * 3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) data[(size_t(y) * w + x) * 3 + c] = pixel(x, y)[c];
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out) << OIIO::geterror();
-  ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, format)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, data.data()));
-  out->close();
+      for (int c = 0; c < 3; ++c) img.at(x, y, c) = png ? srgb_to_linear(pixel(x, y)[c]) : pixel(x, y)[c];
+  eyetrace::write_image(path, img);
 }
 
 // A sky with a bright sun, a colour gradient and a black region (zero density must never
@@ -326,8 +325,7 @@ TEST(ImageInfiniteLight, TransformOrientsTheMap) {
 
 TEST(ImageInfiniteLight, EightBitImagesAreDecodedFromSrgb) {
   std::string path = temp_path("grey.png");
-  write_image(
-      path, 4, 4, [](int, int) { return RGB(128.f / 255.f); }, OIIO::TypeDesc::UINT8);
+  write_image(path, 4, 4, [](int, int) { return RGB(128.f / 255.f); });
   auto light = make_infinite({string_param("filename", path)});
   // IEC 61966-2-1: ((c + 0.055) / 1.055)^2.4 for c = 128/255.
   const SampledWavelengths lambda = test::wavelengths();

@@ -1,7 +1,6 @@
 // Image files for the tests of lights that read one (goniometric, projection): a scratch folder
 // removed when the test program exits, and float RGB images written from a function of the pixel.
 #pragma once
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
@@ -32,15 +32,14 @@ inline std::string scratch_path(const std::string& name) {
 
 // A float RGB image (EXR keeps NaN and infinities as written).
 inline void write_rgb(const std::string& path, int w, int h, const std::function<RGB(int, int)>& pixel) {
-  std::vector<float> data(size_t(w) * h * 3);
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.pixels.resize(size_t(w) * h * 3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) data[(size_t(y) * w + x) * 3 + c] = pixel(x, y)[c];
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out) << OIIO::geterror();
-  ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, data.data()));
-  out->close();
+      for (int c = 0; c < 3; ++c) img.at(x, y, c) = pixel(x, y)[c];
+  write_image(path, img);
 }
 
 }  // namespace

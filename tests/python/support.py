@@ -15,9 +15,11 @@ os.makedirs(SCRATCH, exist_ok=True)
 del sys.argv[1:]  # unittest reads the rest of the command line
 
 
-def cli(*args, check=True):
-    """Runs the eyetrace binary; returns the completed process (stdout and stderr as text)."""
-    r = subprocess.run([EYETRACE, *args], capture_output=True, text=True)
+def cli(*args, check=True, env_extra=None):
+    """Runs the eyetrace binary (with `env_extra` added to the environment); returns the completed
+    process (stdout and stderr as text)."""
+    env = {**os.environ, **env_extra} if env_extra else None
+    r = subprocess.run([EYETRACE, *args], capture_output=True, text=True, env=env)
     if check and r.returncode != 0:
         raise AssertionError(f"eyetrace {' '.join(args)} exited {r.returncode}:\n{r.stderr}")
     return r

@@ -1,4 +1,4 @@
-// The "imagemap" texture: images written here with OpenImageIO are read back at texel
+// The "imagemap" texture: images written here (EXR by image_io, an 8-bit PNG by hand) are read back at texel
 // centres; 8-bit values are decoded with the sRGB formula written out below; wrap modes;
 // missing and unreadable files are errors that name the parameter and the path.
 #include <gtest/gtest.h>
@@ -7,13 +7,14 @@
 #include "../support/params.h"
 #include "../support/spectral.h"
 
-#include <OpenImageIO/imageio.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "core/transform.h"
+#include "render/image_io.h"
 #include "scene/texture_store.h"
 #include "textures/imagemap_texture.h"
 
@@ -33,6 +34,40 @@ Param str(const std::string& name, const std::string& v) {
 
 constexpr auto number = test::number_param;
 
+// An 8-bit greyscale PNG written from the specification (ISO/IEC 15948: signature, IHDR, one
+// zlib IDAT of rows each led by filter type 0, IEND; every chunk with its CRC-32).
+void write_grey_png(const fs::path& path, int w, int h, const std::vector<unsigned char>& bytes) {
+  auto be32 = [](std::string& s, uint32_t v) {
+    for (int i = 3; i >= 0; --i) s.push_back(char((v >> (8 * i)) & 0xff));
+  };
+  std::string file = "\x89PNG\r\n\x1a\n";
+  auto chunk = [&](const char* type, const std::string& data) {
+    be32(file, uint32_t(data.size()));
+    std::string body = std::string(type) + data;
+    file += body;
+    be32(file, uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
+  };
+  std::string ihdr;
+  be32(ihdr, uint32_t(w));
+  be32(ihdr, uint32_t(h));
+  ihdr += std::string("\x08\x00\x00\x00\x00", 5);  // 8 bits, greyscale, deflate, filter 0, no interlace
+  std::string raw;
+  for (int y = 0; y < h; ++y) {
+    raw.push_back('\0');
+    raw.append(reinterpret_cast<const char*>(&bytes[size_t(y) * w]), size_t(w));
+  }
+  uLongf n = compressBound(uLong(raw.size()));
+  std::string z(n, '\0');
+  ASSERT_EQ(
+      compress(reinterpret_cast<Bytef*>(z.data()), &n, reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size())),
+      Z_OK);
+  z.resize(n);
+  chunk("IHDR", ihdr);
+  chunk("IDAT", z);
+  chunk("IEND", "");
+  std::ofstream(path, std::ios::binary) << file;
+}
+
 // IEC 61966-2-1 decoding, written independently of the code under test.
 double srgb_decode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 
@@ -44,28 +79,22 @@ class ImagemapTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("eyetrace_imagemap_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
     // Float RGB: texel (x, y) = (x / 4, y / 2, 0.125 (x + 4 y)), row 0 at the top.
-    std::vector<float> f(kW * kH * 3);
+    Image f;
+    f.width = kW;
+    f.height = kH;
+    f.pixels.resize(kW * kH * 3);
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
-        float* p = &f[(y * kW + x) * 3];
-        p[0] = x / 4.f, p[1] = y / 2.f, p[2] = 0.125f * (x + 4 * y);
+        f.at(x, y, 0) = x / 4.f, f.at(x, y, 1) = y / 2.f, f.at(x, y, 2) = 0.125f * (x + 4 * y);
       }
-    write("rgb.exr", OIIO::ImageSpec(kW, kH, 3, OIIO::TypeDesc::FLOAT), f.data(), OIIO::TypeDesc::FLOAT);
+    write_image((dir_ / "rgb.exr").string(), f);
     // 8-bit grey with the byte values below.
     std::vector<unsigned char> g = {0, 10, 64, 128, 200, 255, 33, 90};
-    write("grey.png", OIIO::ImageSpec(kW, kH, 1, OIIO::TypeDesc::UINT8), g.data(), OIIO::TypeDesc::UINT8);
+    write_grey_png(dir_ / "grey.png", kW, kH, g);
     bytes_ = g;
     std::ofstream(dir_ / "notes.png") << "this is not an image\n";
   }
   void TearDown() override { fs::remove_all(dir_); }
-
-  void write(const std::string& name, OIIO::ImageSpec spec, const void* data, OIIO::TypeDesc type) {
-    auto out = OIIO::ImageOutput::create((dir_ / name).string());
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open((dir_ / name).string(), spec));
-    ASSERT_TRUE(out->write_image(type, data));
-    ASSERT_TRUE(out->close());
-  }
 
   // uv of the centre of texel (x, y), y counted from the top row.
   static TextureEvalContext texel(int x, int y) {
