@@ -426,7 +426,7 @@ TEST(HostileInput, RecursiveInclude) {
   TempDir dir("eyetrace-hostile");
   write_file(dir.file("a.pbrt"), "Include \"b.pbrt\"\n");
   write_file(dir.file("b.pbrt"), "WorldBegin\n\nInclude \"a.pbrt\"\n");
-  write_file(dir.file("self.pbrt"), "Import \"self.pbrt\"\n");
+  write_file(dir.file("self.pbrt"), "WorldBegin\nImport \"self.pbrt\"\n");
   auto error_of = [](const std::string& path) -> std::string {
     try {
       parse_scene_file(path);
@@ -441,7 +441,7 @@ TEST(HostileInput, RecursiveInclude) {
             std::string::npos)
       << message;
   message = error_of(dir.file("self.pbrt"));
-  EXPECT_NE(message.find("self.pbrt:1:1: error: recursive Include of"), std::string::npos) << message;
+  EXPECT_NE(message.find("self.pbrt:2:1: error: recursive Import of"), std::string::npos) << message;
   EXPECT_ERROR(in_world("Include \"/\"\n"), "hostile.pbrt:8:1: error: cannot read scene file \"/\": it is a directory");
   EXPECT_ERROR(in_world("Include \"no-such-file.pbrt\"\n"),
                "hostile.pbrt:8:1: error: Include \"no-such-file.pbrt\": file not found");
