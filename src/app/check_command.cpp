@@ -1,8 +1,9 @@
 // `eyetrace check SCENE`: parses and builds a scene without rendering it and lists, compiler
 // style, every error (missing files among them) and every warning (what would be ignored or
 // approximated), then a summary line. The exit status says whether the scene renders as
-// written: 0 nothing to report, 1 errors (it would not render), 3 warnings only (it renders,
-// but something in it is ignored). docs/scene-format.md says which errors still stop it.
+// written: 0 nothing to report (or only deprecated forms, read as written), 1 errors (it would
+// not render), 3 warnings (it renders, but something in it is ignored). docs/scene-format.md says which errors still
+// stop it.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -62,6 +63,7 @@ nlohmann::json to_json(const std::string& scene, const std::vector<Diagnostic>& 
                     {"column", d.loc.column},
                     {"severity", d.severity == Severity::Error ? "error" : "warning"},
                     {"missing_file", d.kind == DiagnosticKind::MissingFile},
+                    {"deprecated", d.kind == DiagnosticKind::Deprecated},
                     {"parameter", d.parameter},
                     {"message", d.message}});
   return {{"scene", scene}, {"diagnostics", list}};
@@ -69,9 +71,9 @@ nlohmann::json to_json(const std::string& scene, const std::vector<Diagnostic>& 
 
 int run_check(const CheckArgs& a) {
   const std::vector<Diagnostic> ds = check_scene(a);
-  size_t errors = 0, missing = 0, warnings = 0;
+  size_t errors = 0, missing = 0, warnings = 0, deprecated = 0;
   for (const Diagnostic& d : ds) {
-    if (d.severity == Severity::Warning) ++warnings;
+    if (d.severity == Severity::Warning) ++(d.kind == DiagnosticKind::Deprecated ? deprecated : warnings);
     if (d.severity == Severity::Error) ++errors;
     if (d.kind == DiagnosticKind::MissingFile) ++missing;
   }
@@ -79,8 +81,9 @@ int run_check(const CheckArgs& a) {
     fmt::print("{}\n", to_json(a.scene, ds).dump(2));
   } else {
     for (const Diagnostic& d : ds) fmt::print("{}\n", d.to_string());
-    fmt::print("{}: {} error{} ({} missing file{}), {} warning{}{}\n", a.scene, errors, errors == 1 ? "" : "s", missing,
-               missing == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s",
+    fmt::print("{}: {} error{} ({} missing file{}), {} warning{}{}{}\n", a.scene, errors, errors == 1 ? "" : "s",
+               missing, missing == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s",
+               deprecated ? fmt::format(" (and {} about deprecated forms)", deprecated) : "",
                errors     ? ": it does not render"
                : warnings ? ": it renders, ignoring what is warned about"
                           : ": ok");

@@ -21,8 +21,10 @@ struct SourceLoc {
 enum class Severity { Error, Warning };
 
 // What an error is about, where the command line tells them apart: `eyetrace check` lists the
-// files a scene names but that are not there (missing data) apart from the rest.
-enum class DiagnosticKind { General, MissingFile };
+// files a scene names but that are not there (missing data) apart from the rest, and a warning
+// about a deprecated form (Deprecated: read as written, nothing ignored) apart from warnings
+// about what is ignored or approximated.
+enum class DiagnosticKind { General, MissingFile, Deprecated };
 
 struct Diagnostic {
   SourceLoc loc;

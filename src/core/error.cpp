@@ -174,6 +174,14 @@ void warn(const SourceLoc& loc, const std::string& message) {
     deliver_warning(d);
 }
 
+void warn_deprecated(const SourceLoc& loc, const std::string& message) {
+  Diagnostic d{loc, "", Severity::Warning, message, DiagnosticKind::Deprecated};
+  if (t_capture)
+    t_capture->push_back(std::move(d));
+  else
+    deliver_warning(d);
+}
+
 static size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;

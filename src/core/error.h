@@ -34,6 +34,9 @@ class SceneError : public std::runtime_error {
 // Warnings go to stderr (once per distinct text) unless warnings are silenced by --quiet.
 // With strict warnings (--strict) a warning is thrown as an error instead.
 void warn(const SourceLoc& loc, const std::string& message);
+// A warning about a deprecated form that is read as written (DiagnosticKind::Deprecated): shown
+// as a warning, but nothing is ignored, so neither --strict nor `eyetrace check` fails on it.
+void warn_deprecated(const SourceLoc& loc, const std::string& message);
 void set_warnings_enabled(bool enabled);
 void set_warnings_fatal(bool fatal);
 int warning_count();

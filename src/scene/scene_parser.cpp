@@ -200,7 +200,7 @@ void SceneParser::attribute_end(Tokenizer&, const SourceLoc& loc) {
 
 void SceneParser::transform_begin(Tokenizer&, const SourceLoc& loc) {
   if (!warned_transform_begin_)
-    warn(loc, "TransformBegin/TransformEnd are deprecated (pbrt-v3); use AttributeBegin/AttributeEnd");
+    warn_deprecated(loc, "TransformBegin/TransformEnd are deprecated (pbrt-v3); use AttributeBegin/AttributeEnd");
   warned_transform_begin_ = true;
   push_block(loc, "TransformBegin");
 }

@@ -45,6 +45,30 @@ TEST(CheckCommand, WarningsOnlyExitThree) {
       << r.output;
 }
 
+// A deprecated form read as written (pbrt-v3's TransformBegin, which pbrt-v4 also only warns
+// about) ignores nothing: it is listed, but the scene renders as written, so the exit is 0.
+TEST(CheckCommand, DeprecatedFormsAreListedButExitZero) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "d.pbrt",
+                                  "WorldBegin\nTransformBegin\nTranslate 1 0 0\nShape \"sphere\"\nTransformEnd\n"
+                                  "LightSource \"point\"\n");
+  const RunResult r = run_eyetrace("check " + scene);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has_line(r.output, scene + ":2:1: warning: TransformBegin/TransformEnd are deprecated (pbrt-v3); use "
+                                         "AttributeBegin/AttributeEnd"))
+      << r.output;
+  EXPECT_TRUE(has_line(r.output, scene + ": 0 errors (0 missing files), 0 warnings (and 1 about deprecated forms): ok"))
+      << r.output;
+  const RunResult j = run_eyetrace("check --json " + scene);
+  EXPECT_EQ(j.status, 0) << j.output;
+  const nlohmann::json doc = nlohmann::json::parse(j.output);
+  ASSERT_EQ(doc["diagnostics"].size(), 1u) << j.output;
+  EXPECT_TRUE(doc["diagnostics"][0]["deprecated"].get<bool>());
+  // --strict fails on warnings about what is ignored, not on this.
+  const RunResult s = run_eyetrace("render --strict -q --spp 1 --resolution 4x4 -o " + dir.file("d.exr") + " " + scene);
+  EXPECT_EQ(s.status, 0) << s.output;
+}
+
 // Errors of every stage in one run, in the order of the text: a parameter the Film does not
 // know, a missing Include (the parse goes on), a texture and a material eyetrace does not
 // have, a missing PLY mesh, and an unused parameter of a material that names the failed
