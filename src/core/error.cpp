@@ -155,6 +155,16 @@ void deliver_warning(const Diagnostic& d) {
 WarningCapture::WarningCapture(std::vector<Diagnostic>* into) : outer_(t_capture) { t_capture = into; }
 WarningCapture::~WarningCapture() { t_capture = outer_; }
 
+namespace {
+// To this thread's WarningCapture if one is alive, else delivered now.
+void hold_or_deliver(Diagnostic d) {
+  if (t_capture)
+    t_capture->push_back(std::move(d));
+  else
+    deliver_warning(d);
+}
+}  // namespace
+
 void deliver_warnings(const std::vector<Diagnostic>& warnings) {
   for (const Diagnostic& d : warnings) deliver_warning(d);
 }
@@ -167,19 +177,11 @@ void warn(const SourceLoc& loc, const std::string& message) {
   }
   if (!collecting && g_warnings_fatal)
     throw SceneError(Diagnostic{loc, "", Severity::Error, message + " (a warning, fatal with --strict)"});
-  Diagnostic d{loc, "", Severity::Warning, message};
-  if (t_capture)
-    t_capture->push_back(std::move(d));
-  else
-    deliver_warning(d);
+  hold_or_deliver(Diagnostic{loc, "", Severity::Warning, message});
 }
 
 void warn_deprecated(const SourceLoc& loc, const std::string& message) {
-  Diagnostic d{loc, "", Severity::Warning, message, DiagnosticKind::Deprecated};
-  if (t_capture)
-    t_capture->push_back(std::move(d));
-  else
-    deliver_warning(d);
+  hold_or_deliver(Diagnostic{loc, "", Severity::Warning, message, DiagnosticKind::Deprecated});
 }
 
 static size_t edit_distance(const std::string& a, const std::string& b) {

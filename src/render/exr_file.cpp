@@ -15,6 +15,7 @@
 #include <fstream>
 #include <mutex>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <thread>
 
@@ -65,8 +66,8 @@ int special_index(const std::string& suffix, bool xyz) {
                                       "Alpha", "AR",  "RA", "AG",    "GA", "AB",   "BA", "Z",    "Depth", "Zback"};
   static const char* const vector[] = {"R", "Red",   "G",  "Green", "B",  "Blue", "X",  "Y",  "Z",     "real", "imag",
                                        "A", "Alpha", "AR", "RA",    "AG", "GA",   "AB", "BA", "Depth", "Zback"};
-  const auto& list = xyz ? std::vector<const char*>(std::begin(vector), std::end(vector))
-                         : std::vector<const char*>(std::begin(usual), std::end(usual));
+  const std::span<const char* const> list =
+      xyz ? std::span<const char* const>(vector) : std::span<const char* const>(usual);
   for (int i = 0; i < int(list.size()); ++i)
     if (iequals(suffix, list[i])) return i;
   return 10000;
