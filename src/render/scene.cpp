@@ -127,8 +127,8 @@ struct Scene::InstanceGroup {
 
 struct Scene::Placement {
   const InstanceGroup* group = nullptr;
-  Transform world_from_instance;              // at the start time
-  std::unique_ptr<AnimatedTransform> motion;  // null when it does not move
+  std::shared_ptr<const Transform> world_from_instance;  // at the start time
+  std::unique_ptr<AnimatedTransform> motion;             // null when it does not move
 };
 
 Scene::Scene() {
@@ -173,7 +173,8 @@ void Scene::add_primitive(Primitive prim) {
   prims_.push_back(std::move(prim));
 }
 
-std::unique_ptr<Scene::InstanceGroup> Scene::build_group(std::vector<Primitive> prims, const std::string& what) {
+std::unique_ptr<Scene::InstanceGroup> Scene::build_group(std::vector<Primitive> prims, const std::string& what,
+                                                         size_t compact_from) {
   for (const Primitive& p : prims) has_media_ = has_media_ || p.media.is_transition();
   auto group = std::make_unique<InstanceGroup>();
   group->scene = rtcNewScene(device_);
@@ -188,7 +189,7 @@ std::unique_ptr<Scene::InstanceGroup> Scene::build_group(std::vector<Primitive> 
     if (group->prims.size() <= id) group->prims.resize(id + 1);
     group->prims[id] = std::move(prim);
   }
-  if (group->primitive_count >= kCompactPrimitives)
+  if (group->primitive_count >= compact_from)
     rtcSetSceneFlags(group->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
   // An instanced scene must be committed before any scene that instances it.
   rtcCommitScene(group->scene);
@@ -199,16 +200,16 @@ std::unique_ptr<Scene::InstanceGroup> Scene::build_group(std::vector<Primitive> 
 void Scene::define_instance(const std::string& name, std::vector<Primitive> prims) {
   if (committed_) throw std::logic_error("Scene::define_instance after commit()");
   if (groups_.count(name)) throw_error(fmt::format("object \"{}\" is defined twice", name));
-  groups_.emplace(name, build_group(std::move(prims), fmt::format("object \"{}\"", name)));
+  groups_.emplace(name, build_group(std::move(prims), fmt::format("object \"{}\"", name), kCompactObjectPrimitives));
 }
 
 bool Scene::has_instance(const std::string& name) const { return groups_.count(name) != 0; }
 
-void Scene::add_instance(const std::string& name, const Transform& world_from_instance) {
+void Scene::add_instance(const std::string& name, std::shared_ptr<const Transform> world_from_instance) {
   if (committed_) throw std::logic_error("Scene::add_instance after commit()");
   auto it = groups_.find(name);
   if (it == groups_.end()) throw_error(fmt::format("object \"{}\" is not defined", name));
-  place(it->second.get(), world_from_instance, nullptr, fmt::format("object \"{}\"", name));
+  place(it->second.get(), std::move(world_from_instance), nullptr, fmt::format("object \"{}\"", name));
 }
 
 void Scene::add_instance(const std::string& name, const AnimatedTransform& world_from_instance) {
@@ -216,7 +217,8 @@ void Scene::add_instance(const std::string& name, const AnimatedTransform& world
   if (committed_) throw std::logic_error("Scene::add_instance after commit()");
   auto it = groups_.find(name);
   if (it == groups_.end()) throw_error(fmt::format("object \"{}\" is not defined", name));
-  place(it->second.get(), world_from_instance.start(), &world_from_instance, fmt::format("object \"{}\"", name));
+  place(it->second.get(), std::make_shared<const Transform>(world_from_instance.start()), &world_from_instance,
+        fmt::format("object \"{}\"", name));
 }
 
 void Scene::add_moving_primitives(std::vector<Primitive> prims, const AnimatedTransform& world_from_object) {
@@ -227,18 +229,18 @@ void Scene::add_moving_primitives(std::vector<Primitive> prims, const AnimatedTr
 int Scene::define_moving_group(std::vector<Primitive> prims) {
   if (committed_) throw std::logic_error("Scene::define_moving_group after commit()");
   if (prims.empty()) return -1;
-  moving_groups_.push_back(build_group(std::move(prims), "a moving shape"));
+  moving_groups_.push_back(build_group(std::move(prims), "a moving shape", kCompactPrimitives));
   return int(moving_groups_.size()) - 1;
 }
 
 void Scene::place_moving_group(int group, const AnimatedTransform& world_from_object) {
   if (committed_) throw std::logic_error("Scene::place_moving_group after commit()");
   if (group < 0 || size_t(group) >= moving_groups_.size()) throw std::out_of_range("Scene::place_moving_group");
-  place(moving_groups_[size_t(group)].get(), world_from_object.start(),
+  place(moving_groups_[size_t(group)].get(), std::make_shared<const Transform>(world_from_object.start()),
         world_from_object.is_animated() ? &world_from_object : nullptr, "a moving shape");
 }
 
-void Scene::place(const InstanceGroup* group, const Transform& start, const AnimatedTransform* motion,
+void Scene::place(const InstanceGroup* group, std::shared_ptr<const Transform> start, const AnimatedTransform* motion,
                   const std::string& what) {
   if (group->prims.empty()) return;  // an empty object contributes nothing
   RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -254,20 +256,21 @@ void Scene::place(const InstanceGroup* group, const Transform& start, const Anim
   } else {
     rtcSetGeometryTimeStepCount(geom, 1);
     // glm matrices are column-major 4x4 floats, exactly Embree's FLOAT4X4_COLUMN_MAJOR.
-    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &start.matrix()[0][0]);
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &start->matrix()[0][0]);
   }
   rtcCommitGeometry(geom);
   unsigned id = rtcAttachGeometry(root_, geom);
   rtcReleaseGeometry(geom);
   check_embree(device_, "placing " + what);
-  bounds_.extend(motion ? motion_bounds(*motion, group->bounds) : transform_bounds(start, group->bounds));
+  bounds_.extend(motion ? motion_bounds(*motion, group->bounds) : transform_bounds(*start, group->bounds));
   if (geom_kind_.size() <= id) {
     geom_kind_.resize(id + 1, -1);
     geom_index_.resize(id + 1, 0);
   }
   geom_kind_[id] = 1;
   geom_index_[id] = placements_.size();
-  placements_.push_back(Placement{group, start, motion ? std::make_unique<AnimatedTransform>(*motion) : nullptr});
+  placements_.push_back(
+      Placement{group, std::move(start), motion ? std::make_unique<AnimatedTransform>(*motion) : nullptr});
   if (motion && !motion_) motion_ = std::make_unique<AnimatedTransform>(*motion);
 }
 
@@ -326,7 +329,7 @@ bool Scene::intersect(const Ray& ray, SurfaceInteraction* si) const {
     prim = &place.group->prims[rh.hit.geomID];
     // A moving instance is rebuilt at the ray's time, the transform Embree intersected.
     Transform at_time;
-    const Transform* inst = &place.world_from_instance;
+    const Transform* inst = place.world_from_instance.get();
     if (place.motion) {
       at_time = place.motion->interpolate(ray.time);
       inst = &at_time;

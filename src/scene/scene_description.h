@@ -3,6 +3,7 @@
 // separate lets the command line override the camera or film without touching the file.
 #pragma once
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,12 +67,16 @@ struct InstanceDefinition {
   std::vector<ShapeEntity> shapes;  // world_from_object is relative to the instance frame
 };
 
+// One ObjectInstance. A scene may hold millions: the transform is shared with the scene that
+// places it (render/scene.h) rather than copied, and the end transform is kept only for the few
+// that move.
 struct InstanceUse {
   std::string name;
   SourceLoc loc;
-  Transform world_from_instance;  // at the start time
-  Transform world_from_instance_end;
-  bool animated = false;
+  std::shared_ptr<const Transform> world_from_instance;      // at the start time; never null
+  std::shared_ptr<const Transform> world_from_instance_end;  // null unless it moves
+  bool animated() const { return world_from_instance_end != nullptr; }
+  const Transform& end_transform() const { return animated() ? *world_from_instance_end : *world_from_instance; }
 };
 
 struct SceneDescription {

@@ -91,7 +91,7 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
   // The times matter only to what moves (and only then change the fingerprint).
   bool moves = d.camera.animated;
   for (const ShapeEntity& s : d.shapes) moves = moves || s.animated;
-  for (const InstanceUse& u : d.instance_uses) moves = moves || u.animated;
+  for (const InstanceUse& u : d.instance_uses) moves = moves || u.animated();
   if (moves) {
     f.add_pod(d.transform_start_time);
     f.add_pod(d.transform_end_time);
@@ -119,8 +119,8 @@ uint64_t scene_fingerprint(const SceneDescription& d, const std::string& options
   }
   for (const InstanceUse& u : d.instance_uses) {
     f.add(u.name);
-    f.add(u.world_from_instance);
-    if (u.animated) f.add(u.world_from_instance_end);
+    f.add(*u.world_from_instance);
+    if (u.animated()) f.add(*u.world_from_instance_end);
   }
   f.add(d.search_dir);
   f.add_pod(files_read.size());

@@ -553,7 +553,8 @@ void SceneParser::object_instance(Tokenizer& tok, const SourceLoc& loc) {
   }
   bool animated = false;
   TransformPair ctm = current_transforms(loc, "ObjectInstance", &animated);
-  desc_.instance_uses.push_back(InstanceUse{name, loc, ctm[0], ctm[1], animated});
+  desc_.instance_uses.push_back(InstanceUse{name, loc, std::make_shared<const Transform>(ctm[0]),
+                                            animated ? std::make_shared<const Transform>(ctm[1]) : nullptr});
 }
 
 void SceneParser::make_named_medium(Tokenizer& tok, const SourceLoc& loc) {

@@ -60,7 +60,8 @@ void check(const SceneDescription& d) {
     for (const auto& s : def.shapes) check_shape(d, s);
   for (const auto& use : d.instance_uses) {
     if (d.instances.count(use.name) != 1) violated("instance use without a definition");
-    if (!finite(use.world_from_instance)) violated("non-finite instance transform");
+    if (!use.world_from_instance || !finite(*use.world_from_instance) || !finite(use.end_transform()))
+      violated("non-finite or missing instance transform");
   }
   for (const auto& l : d.lights)
     if (!finite(l.world_from_object) || !finite(l.params)) violated("non-finite light");

@@ -93,9 +93,9 @@ ObjectInstance "o"
   EXPECT_EQ(origin_of(d.camera.world_from_camera), Vec3(0, 0, 0));
   EXPECT_EQ(origin_of(d.camera.world_from_camera_end), Vec3(0, 0, 4));
   ASSERT_EQ(d.instance_uses.size(), 1u);
-  EXPECT_TRUE(d.instance_uses[0].animated);
-  EXPECT_NEAR(d.instance_uses[0].world_from_instance.vector(Vec3(1, 0, 0)).y, 1.f, 1e-6f);
-  EXPECT_EQ(d.instance_uses[0].world_from_instance_end.vector(Vec3(1, 0, 0)), Vec3(1, 0, 0));
+  EXPECT_TRUE(d.instance_uses[0].animated());
+  EXPECT_NEAR(d.instance_uses[0].world_from_instance->vector(Vec3(1, 0, 0)).y, 1.f, 1e-6f);
+  EXPECT_EQ(d.instance_uses[0].end_transform().vector(Vec3(1, 0, 0)), Vec3(1, 0, 0));
 }
 
 // pbrt-v4 reads the times at the Camera directive: a TransformTimes after it changes the

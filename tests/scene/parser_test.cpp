@@ -449,7 +449,7 @@ Shape "disk"
   ASSERT_EQ(def.shapes.size(), 1u);
   expect_vec_near(def.shapes[0].world_from_object.point(Vec3(0.f)), Vec3(0, 1, 0));
   ASSERT_EQ(d.instance_uses.size(), 1u);
-  const Transform& use = d.instance_uses[0].world_from_instance;
+  const Transform& use = *d.instance_uses[0].world_from_instance;
   expect_vec_near(use.point(Vec3(0.f)), Vec3(5, 0, 0));  // ObjectEnd dropped the inner Translate
   expect_vec_near((use * def.shapes[0].world_from_object).point(Vec3(0.f)), Vec3(5, 1, 0));
   expect_vec_near(d.shapes[0].world_from_object.point(Vec3(0.f)), Vec3(5, 0, 0));

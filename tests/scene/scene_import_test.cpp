@@ -80,7 +80,7 @@ std::string scene_text(const SceneDescription& d) {
     for (const auto& sh : def.shapes) s += "  shape " + shape_text(sh);
   }
   for (const auto& u : d.instance_uses)
-    s += fmt::format("use {} @{} {}\n", u.name, where(u.loc), matrix_text(u.world_from_instance));
+    s += fmt::format("use {} @{} {}\n", u.name, where(u.loc), matrix_text(*u.world_from_instance));
   return s + "colorspace " + d.color_space + "\n";
 }
 
