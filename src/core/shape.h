@@ -42,6 +42,9 @@ class Shape {
   // Why this shape cannot carry an area light, or null when it can (the scene builder turns a
   // refusal into an error at the shape's directive).
   virtual const char* emitter_refusal() const { return nullptr; }
+  // What is approximate about this shape as an area light, or null when nothing is (the scene
+  // builder warns only when the shape is one: a shape that does not emit is never area-sampled).
+  virtual const char* emitter_caveat() const { return nullptr; }
 };
 
 }  // namespace eyetrace

@@ -237,14 +237,14 @@ class Builder {
     for (const auto& [name, m] : desc_.media) attempt([&] { build_medium(name, m); });
     attempt([&] { setup_.scene->set_camera_medium(medium(desc_.camera.media.outside, desc_.camera.media.loc)); });
     for (const ShapeEntity& s : desc_.shapes) attempt([&] { add_shape(s); });
-    std::set<std::string> used;
+    std::set<std::string> used, failed_objects;
     for (const InstanceUse& u : desc_.instance_uses) used.insert(u.name);
     for (const auto& [name, def] : desc_.instances) {
       // No ray can reach an object that is never instanced: building its shapes and BVH
       // would only cost time and memory.
-      if (used.count(name))
-        attempt([&] { build_instance(def); });
-      else
+      if (used.count(name)) {
+        if (!build_instance(def)) failed_objects.insert(name);
+      } else
         attempt([&] {
           warn(def.loc,
                fmt::format("ObjectBegin \"{}\" is never instanced: not built (its shapes are not checked)", name));
@@ -252,9 +252,11 @@ class Builder {
     }
     for (const InstanceUse& u : desc_.instance_uses)
       attempt([&] {
+        // An object whose shapes failed has its errors already: its uses would only repeat them.
+        if (failed_objects.count(u.name)) return;
         if (!setup_.scene->has_instance(u.name)) fail(u.loc, "ObjectInstance \"{}\": no such object", u.name);
-        if (u.animated)
-          setup_.scene->add_instance(u.name, motion(u.world_from_instance, u.world_from_instance_end));
+        if (u.animated())
+          setup_.scene->add_instance(u.name, motion(*u.world_from_instance, *u.world_from_instance_end));
         else
           setup_.scene->add_instance(u.name, u.world_from_instance);
         place_moving_members(u);
@@ -401,6 +403,8 @@ class Builder {
           const TransformedEntity& a = desc_.area_lights.at(s.area_light);
           if (const char* why = prim.shape->emitter_refusal())
             throw_error(s.loc, fmt::format("Shape \"{}\" cannot be an area light: {}", s.name, why));
+          if (const char* caveat = prim.shape->emitter_caveat())
+            warn(s.loc, fmt::format("Shape \"{}\" as an area light: {}", s.name, caveat));
           AreaLightContext actx{a.params, *prim.shape, s.reverse_orientation, *setup_.textures, desc_.search_dir};
           auto light = reg_.area_lights.at(a.name, a.loc)(actx);
           prim.area_light = light.get();
@@ -441,18 +445,23 @@ class Builder {
   // The object's still shapes make its instance; each moving one is built once in its object
   // space and placed at every use of the object (Embree instances one level deep: a moving
   // shape, itself an instance, cannot sit inside the object's).
-  void build_instance(const InstanceDefinition& def) {
+  // Every shape of the object is tried and its errors collected (a missing mesh does not hide
+  // the next one's); the object is defined only when all of them built. False when it is not.
+  bool build_instance(const InstanceDefinition& def) {
     std::vector<Primitive> prims;
-    for (const ShapeEntity& s : def.shapes) {
-      check_material_first(s);
-      if (s.animated) {
-        int group = setup_.scene->define_moving_group(make_primitives(s, false, Transform()));
-        if (group >= 0) moving_members_[def.name].push_back({group, &s});
-        continue;
-      }
-      for (auto& prim : make_primitives(s, false, s.world_from_object)) prims.push_back(std::move(prim));
-    }
-    setup_.scene->define_instance(def.name, std::move(prims));
+    bool built = true;
+    for (const ShapeEntity& s : def.shapes)
+      built = attempt([&] {
+                check_material_first(s);
+                if (s.animated) {
+                  int group = setup_.scene->define_moving_group(make_primitives(s, false, Transform()));
+                  if (group >= 0) moving_members_[def.name].push_back({group, &s});
+                  return;
+                }
+                for (auto& prim : make_primitives(s, false, s.world_from_object)) prims.push_back(std::move(prim));
+              }) &&
+              built;
+    return built && attempt([&] { setup_.scene->define_instance(def.name, std::move(prims)); });
   }
 
   // A moving shape of the object at one use: the use's transform times the shape's, keyframe by
@@ -462,15 +471,15 @@ class Builder {
   void place_moving_members(const InstanceUse& u) {
     auto it = moving_members_.find(u.name);
     if (it == moving_members_.end()) return;
-    if (u.animated)
+    if (u.animated())
       warn(u.loc, fmt::format("ObjectInstance \"{}\" moves and so do shapes inside it: their motions are combined "
                               "keyframe by keyframe (start with start, end with end), which differs from pbrt-v4's "
                               "product of the two motions in between",
                               u.name));
     for (const MovingMember& m : it->second) {
       try {
-        setup_.scene->place_moving_group(m.group, motion(u.world_from_instance * m.shape->world_from_object,
-                                                         u.world_from_instance_end * m.shape->world_from_object_end));
+        setup_.scene->place_moving_group(m.group, motion(*u.world_from_instance * m.shape->world_from_object,
+                                                         u.end_transform() * m.shape->world_from_object_end));
       } catch (const std::domain_error& e) {
         fail(u.loc, "ObjectInstance \"{}\": its shape at {} cannot move with it: {}", u.name, m.shape->loc.to_string(),
              e.what());

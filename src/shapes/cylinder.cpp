@@ -100,10 +100,6 @@ std::vector<std::unique_ptr<Shape>> create_cylinder_shapes(const ShapeContext& c
   auto cylinder = std::make_unique<Cylinder>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax,
                                              params.get_float("phimax"));
   cylinder->set_alpha(read_alpha(ctx, params));
-  if (!cylinder->is_similarity())
-    warn(params.loc(),
-         "cylinder: the transform scales non-uniformly; area sampling (for area lights) treats it as if uniformly "
-         "scaled, so its density is approximate");
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(std::move(cylinder));
   return shapes;

@@ -107,10 +107,6 @@ std::vector<std::unique_ptr<Shape>> create_sphere_shapes(const ShapeContext& ctx
                                     zmax, radius));
   auto sphere = std::make_unique<Sphere>(ctx.world_from_object, ctx.reverse_orientation, radius, zmin, zmax, phimax);
   sphere->set_alpha(read_alpha(ctx, params));
-  if (!sphere->is_similarity())
-    warn(params.loc(),
-         "sphere: the transform scales non-uniformly; area sampling (for area lights) treats the "
-         "ellipsoid as if uniformly scaled, so its density is approximate");
   std::vector<std::unique_ptr<Shape>> shapes;
   shapes.push_back(std::move(sphere));
   return shapes;

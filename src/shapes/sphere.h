@@ -18,6 +18,11 @@ class Sphere : public AnalyticShape {
 
   float area() const override { return float(area_); }
   ShapeSample sample_area(Vec2 u) const override;
+  const char* emitter_caveat() const override {
+    return is_similarity() ? nullptr
+                           : "the transform scales non-uniformly; area sampling treats the ellipsoid as if uniformly "
+                             "scaled, so its density is approximate";
+  }
 
  protected:
   std::optional<double> hit_object(const DRay& r, double tmin, double tmax) const override;

@@ -69,6 +69,43 @@ TEST(CheckCommand, DeprecatedFormsAreListedButExitZero) {
   EXPECT_EQ(s.status, 0) << s.output;
 }
 
+// An object whose meshes are missing (as in pbrt-v4's transparent-machines frames, checked
+// without their geometry): every missing mesh of the object is listed, not only the first, and
+// its uses add nothing, since the object exists and its errors are said where they are.
+TEST(CheckCommand, ObjectWithMissingMeshesListsEachMeshOnce) {
+  TempDir dir("eyetrace-check");
+  const std::string scene = write(dir, "o.pbrt",
+                                  "WorldBegin\nLightSource \"point\"\nObjectBegin \"arm\"\n"
+                                  "Shape \"plymesh\" \"string filename\" \"a.ply\"\n"
+                                  "Shape \"plymesh\" \"string filename\" \"b.ply\"\nObjectEnd\n"
+                                  "ObjectInstance \"arm\"\nTranslate 1 0 0\nObjectInstance \"arm\"\n");
+  const RunResult r = run_eyetrace("check --json " + scene);
+  EXPECT_EQ(r.status, 1) << r.output;
+  const nlohmann::json doc = nlohmann::json::parse(r.output);
+  ASSERT_EQ(doc["diagnostics"].size(), 2u) << r.output;
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_TRUE(doc["diagnostics"][i]["missing_file"].get<bool>()) << r.output;
+    EXPECT_EQ(doc["diagnostics"][i]["line"].get<int>(), 4 + i) << r.output;
+  }
+}
+
+// A sphere stretched into an ellipsoid is exact to intersect and shade; only sampling it as an
+// area light is approximate, so only an emitting one is warned about (disney-cloud's medium
+// boundary, an ellipsoid that does not emit, renders exactly: exit 0).
+TEST(CheckCommand, StretchedSphereIsWarnedAboutOnlyWhenItEmits) {
+  TempDir dir("eyetrace-check");
+  const std::string head = "WorldBegin\nLightSource \"point\"\nScale 1 2 3\n";
+  const RunResult plain = run_eyetrace("check " + write(dir, "p.pbrt", head + "Shape \"sphere\"\n"));
+  EXPECT_EQ(plain.status, 0) << plain.output;
+  const std::string lit = write(dir, "l.pbrt", head + "AreaLightSource \"diffuse\"\nShape \"sphere\"\n");
+  const RunResult emitting = run_eyetrace("check " + lit);
+  EXPECT_EQ(emitting.status, 3) << emitting.output;
+  EXPECT_TRUE(has_line(emitting.output, lit + ":5:1: warning: Shape \"sphere\" as an area light: the transform scales "
+                                              "non-uniformly; area sampling treats the ellipsoid as if uniformly "
+                                              "scaled, so its density is approximate"))
+      << emitting.output;
+}
+
 // Errors of every stage in one run, in the order of the text: a parameter the Film does not
 // know, a missing Include (the parse goes on), a texture and a material eyetrace does not
 // have, a missing PLY mesh, and an unused parameter of a material that names the failed
