@@ -2,7 +2,8 @@
 """tools/scene-coverage on a small stand-in for a pbrt-v4-scenes checkout: five of the 98
 scene paths with scenes whose outcome is known (clean, blocked by an unsupported material,
 missing an included file, ignoring Attribute "medium", naming a material of a missing file, a cloud
-medium, a nanovdb medium whose .nvdb file is missing), the other 91 absent. Checks each row's status and the counts.
+medium, a nanovdb medium whose .nvdb file is missing), the other 91 absent. Checks each row's status and the counts,
+then --update: a row kept for a scene no longer at hand, a new one for a scene added.
 
     scene_coverage_test.py EYETRACE WORKDIR
 """
@@ -50,12 +51,31 @@ def main(eyetrace, work):
         "| not checked | 91 |",
         '| material "plastic" | 1: lte-orb-silver.pbrt |',
     ]
-    missing = [r for r in expected_rows if r not in text.splitlines()]
-    if missing:
-        print("scene_coverage_test: rows not found:\n" + "\n".join(missing) + "\n--- output:\n" + text)
+    if not rows_found(expected_rows, text):
+        return 1
+    # --update: the scenes at hand now are checked, the rows of those no longer at hand are kept
+    # (with what blocks them), the rest stay "not checked".
+    os.remove(os.path.join(work, "lte-orb/lte-orb-silver.pbrt"))
+    os.makedirs(os.path.join(work, "villa"))
+    with open(os.path.join(work, "villa/villa-daylight.pbrt"), "w") as f:
+        f.write('WorldBegin\nShape "plymesh" "string filename" "a.ply"\n')
+    updated = os.path.join(work, "updated.md")
+    subprocess.run([os.path.join(ROOT, "tools", "scene-coverage"), "--scenes", work, "--eyetrace", eyetrace,
+                    "--output", updated, "--update", out], check=True, capture_output=True)
+    expected_rows = [r for r in expected_rows if "villa" not in r and "not checked" not in r and "missing data" not in r]
+    expected_rows += ["| `villa/villa-daylight.pbrt` | missing data only | — | — | 1 |", "| missing data only | 4 |",
+                      "| not checked | 90 |"]
+    if not rows_found(expected_rows, open(updated).read()):
         return 1
     print("scene_coverage_test: ok")
     return 0
+
+
+def rows_found(rows, text):
+    missing = [r for r in rows if r not in text.splitlines()]
+    if missing:
+        print("scene_coverage_test: rows not found:\n" + "\n".join(missing) + "\n--- output:\n" + text)
+    return not missing
 
 
 if __name__ == "__main__":
