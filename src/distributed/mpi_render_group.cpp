@@ -1,7 +1,5 @@
 #include "distributed/mpi_render_group.h"
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -51,87 +49,7 @@ const double* unpack_tile(size_t t, const double* in, Film& film, TileProgress& 
   return in;
 }
 
-// Displacements of per-rank blocks of `counts`; throws when the total does not fit MPI's ints.
-std::vector<int> offsets_of(const std::vector<int>& counts) {
-  std::vector<int> offsets(counts.size());
-  size_t total = 0;
-  for (size_t r = 0; r < counts.size(); ++r) {
-    offsets[r] = int(total);
-    total += size_t(counts[r]);
-  }
-  // MPI counts are ints: a film beyond 2^31 doubles (16 GiB of accumulators) would need chunking.
-  if (total > size_t(INT32_MAX)) throw std::runtime_error("MPI: the film is too large to gather in one message");
-  return offsets;
-}
-
-// MPI's type for T.
-template <class T>
-MPI_Datatype mpi_type();
-template <>
-MPI_Datatype mpi_type<double>() {
-  return MPI_DOUBLE;
-}
-template <>
-MPI_Datatype mpi_type<float>() {
-  return MPI_FLOAT;
-}
-template <>
-MPI_Datatype mpi_type<int>() {
-  return MPI_INT;
-}
-
-// Every rank's `mine` to rank 0, in rank order: `all` holds rank r's values from offsets[r]
-// (both empty on the other ranks).
-template <class T>
-void gather_to_root(const std::vector<T>& mine, int rank, int size, std::vector<T>& all, std::vector<int>& offsets) {
-  const int count = int(mine.size());
-  std::vector<int> counts(rank == 0 ? static_cast<size_t>(size) : 0);
-  mpi_check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Gather");
-  if (rank == 0) {
-    offsets = offsets_of(counts);
-    all.resize(size_t(offsets.back()) + size_t(counts.back()));
-  }
-  mpi_check(MPI_Gatherv(mine.data(), count, mpi_type<T>(), all.data(), counts.data(), offsets.data(), mpi_type<T>(), 0,
-                        MPI_COMM_WORLD),
-            "MPI_Gatherv");
-}
-
 }  // namespace
-
-bool MpiRenderGroup::any(bool v) {
-  int in = v ? 1 : 0, out = 0;
-  mpi_check(MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
-  return out != 0;
-}
-
-int MpiRenderGroup::min(int v) {
-  int out = 0;
-  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
-  return out;
-}
-
-double MpiRenderGroup::max(double v) {
-  double out = 0;
-  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
-  return out;
-}
-
-uint64_t MpiRenderGroup::sum(uint64_t v) {
-  uint64_t out = 0;
-  mpi_check(MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-  return out;
-}
-
-uint64_t MpiRenderGroup::broadcast(uint64_t v) {
-  mpi_check(MPI_Bcast(&v, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
-  return v;
-}
-
-std::vector<double> MpiRenderGroup::gather(double v) {
-  std::vector<double> all(rank() == 0 ? size_t(size()) : 0);
-  mpi_check(MPI_Gather(&v, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD), "MPI_Gather");
-  return all;
-}
 
 std::vector<double> MpiRenderGroup::own_tiles(const Film& film, const TileProgress& tp) const {
   std::vector<double> mine;
@@ -142,7 +60,6 @@ std::vector<double> MpiRenderGroup::own_tiles(const Film& film, const TileProgre
   mine.reserve(values);
   for (size_t t = 0; t < tiles; ++t)
     if (owns_tile(t, tiles)) pack_tile(t, film, tp, mine);
-  if (mine.size() > size_t(INT32_MAX)) throw std::runtime_error("MPI: a rank's share of the film is too large");
   return mine;
 }
 
@@ -158,15 +75,9 @@ void MpiRenderGroup::unpack_others(const std::vector<double>& all, const std::ve
 }
 
 void MpiRenderGroup::share(Film& film, TileProgress& tp) {
-  const std::vector<double> mine = own_tiles(film, tp);
-  const int count = int(mine.size());
-  std::vector<int> counts(static_cast<size_t>(size()));
-  mpi_check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
-  const std::vector<int> offsets = offsets_of(counts);
-  std::vector<double> all(size_t(offsets.back()) + size_t(counts.back()));
-  mpi_check(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                           MPI_COMM_WORLD),
-            "MPI_Allgatherv");
+  std::vector<double> all;
+  std::vector<int> offsets;
+  world_->all_gather(own_tiles(film, tp), all, offsets);
   unpack_others(all, offsets, film, tp);
 }
 
@@ -175,7 +86,7 @@ void MpiRenderGroup::collect(Film& film, TileProgress& tp) {
   const std::vector<double> mine = rank() == 0 ? std::vector<double>() : own_tiles(film, tp);
   std::vector<double> all;
   std::vector<int> offsets;
-  gather_to_root(mine, rank(), size(), all, offsets);
+  world_->gather_to_root(mine, all, offsets);
   if (rank() == 0) unpack_others(all, offsets, film, tp);
 }
 
@@ -206,8 +117,8 @@ Image MpiRenderGroup::collect_image(const Film& film, TileProgress& tp) {
       if (owns_tile(t, tiles)) film.fill_image(tp.tile_bounds(t, b), image);
   std::vector<float> all_values;
   std::vector<int> all_done, value_offsets, done_offsets;
-  gather_to_root(values, rank(), size(), all_values, value_offsets);
-  gather_to_root(done, rank(), size(), all_done, done_offsets);
+  world_->gather_to_root(values, all_values, value_offsets);
+  world_->gather_to_root(done, all_done, done_offsets);
   if (rank() != 0) return image;
   for (int r = 1; r < size(); ++r) {
     const float* in = all_values.data() + value_offsets[size_t(r)];

@@ -1,9 +1,12 @@
-// The MPI session of one eyetrace process under mpirun (MPI builds only): initialised with
-// MPI_THREAD_FUNNELED (only the thread that runs the command calls MPI, never TBB's workers),
-// finalised when destroyed. The render and sweep groups each hold one.
+// The MPI session of one eyetrace process under mpirun, in the MPI module (distributed/mpi_module.h):
+// initialised with MPI_THREAD_FUNNELED (only the thread that runs the command calls MPI, never
+// TBB's workers), finalised when destroyed. The module's world and sweep group each hold one.
 #pragma once
 
 namespace eyetrace {
+
+class MpiWorld;
+class SweepGroup;
 
 class MpiSession {
  public:
@@ -24,5 +27,10 @@ class MpiSession {
 
 // Throws std::runtime_error naming `what` unless `code` is MPI_SUCCESS.
 void mpi_check(int code, const char* what);
+
+// The module's factories (mpi_world.cpp, mpi_sweep_group.cpp), which its entry point gives out
+// (mpi_module.cpp). Each makes a session: MPI_Init_thread.
+MpiWorld* new_mpi_world();
+SweepGroup* new_mpi_sweep_group();
 
 }  // namespace eyetrace

@@ -1,13 +1,11 @@
-// A SweepGroup over MPI_COMM_WORLD: requests and answers are point-to-point messages (a worker's
-// result as text; an answer as one int), so rank 0 serves whichever worker asks first.
+// A SweepGroup over MPI_COMM_WORLD, in the MPI module (distributed/mpi_module.h): requests and
+// answers are point-to-point messages (a worker's result as text; an answer as one int), so rank
+// 0 serves whichever worker asks first.
 #include <mpi.h>
 
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
-#include "distributed/launch.h"
 #include "distributed/mpi_session.h"
 #include "distributed/sweep_group.h"
 
@@ -53,9 +51,6 @@ class MpiSweepGroup : public SweepGroup {
 
 }  // namespace
 
-std::unique_ptr<SweepGroup> join_sweep_group() {
-  if (launched_processes() > 0) return std::make_unique<MpiSweepGroup>();
-  return std::make_unique<SweepGroup>();
-}
+SweepGroup* new_mpi_sweep_group() { return new MpiSweepGroup; }
 
 }  // namespace eyetrace

@@ -1,9 +1,6 @@
-// Finds and loads the OpenImageIO module (render/image_library.h) the first time it is needed.
-//
-// Where: the directory named by the environment variable EYETRACE_IMAGE_MODULE_DIR when it is
-// set (and only there); else next to the binary holding this code (the eyetrace executable, a
-// test binary, the Python module): its ../lib, then its own directory; then the build tree's lib
-// directory, fixed at compile time. The module is never unloaded.
+// Finds and loads the OpenImageIO module (render/image_library.h) the first time it is needed,
+// where core/module_loader.h looks, the environment variable being EYETRACE_IMAGE_MODULE_DIR.
+// The module is never unloaded.
 #pragma once
 #include <string>
 
