@@ -64,6 +64,18 @@ TEST(Tokenizer, KindsPositionsAndEscapes) {
   EXPECT_EQ(tok.next().kind, TokenKind::End);  // stays at the end
 }
 
+// An exporter's comment with an unmatched quote (pbrt-v4-scenes' transparent-machines frames:
+// `# Unknown material VrayAdvancedMaterial"`) ends at the line's end, like any comment.
+TEST(Tokenizer, AQuoteInACommentOpensNoString) {
+  Tokenizer tok("# Unknown material VrayAdvancedMaterial\"\nShape \"plymesh\" # \"\n\"x\"", "t.pbrt");
+  EXPECT_EQ(tok.next().text, "Shape");
+  EXPECT_EQ(tok.next().string_value(), "plymesh");
+  const Token t = tok.next();
+  EXPECT_EQ(t.string_value(), "x");
+  EXPECT_EQ(t.line, 3);
+  EXPECT_EQ(tok.next().kind, TokenKind::End);
+}
+
 TEST(Tokenizer, EscapeSequencesDecode) {
   Tokenizer tok(R"("tab\there\nnew\'q\'")", "t.pbrt");
   EXPECT_EQ(tok.next().string_value(), "tab\there\nnew'q'");
