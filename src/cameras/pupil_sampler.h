@@ -97,12 +97,15 @@ class PupilSampler {
     return true;
   }
 
-  // The region's area at arc a (0 when dark) and whether it contains q: for tests.
+  // The region's area at arc a (0 when dark) and whether it contains q (the spectral MIS
+  // weights ask whether a secondary wavelength's ray could have been sampled).
   double area(double a) const;
   bool contains(double a, glm::dvec2 q) const;
-  // Centre of the region at arc a (meridian frame) and its polygon radius along direction j.
+  // Centre of the region at arc a (meridian frame) and its polygon radius along direction j
+  // (at angle 2 pi j / directions() from the meridian; 0 when dark).
   glm::dvec2 centre(double a) const;
   int directions() const { return directions_; }
+  double polygon_radius(double a, int j) const;
 
  private:
   // Shirley and Chiu's concentric map of the unit square to the unit disc, returned as the
@@ -131,8 +134,13 @@ class PupilSampler {
   Mapping mapping_ = Mapping::Concentric;
   struct Region {
     double area = 0.0;  // 0 = dark: no ray from this interval passes
+    // Squared radii of the largest circle inside the polygon (its nearest chord) and of the
+    // smallest around it (its farthest vertex), shrunk and grown by a rounding margin: contains()
+    // answers from them without finding the fan triangle for most points.
+    double inner2 = 0.0, outer2 = 0.0;
   };
   void build_distribution(size_t interval);
+  int sector_of(glm::dvec2 p) const;  // the fan triangle of p, relative to the region's centre
   double z_plane_ = 0.0;
   double max_arc_ = 0.0;
   double inv_step_ = 0.0;

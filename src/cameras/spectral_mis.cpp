@@ -86,15 +86,11 @@ double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, Wavelen
   spread->first = IVec2(x0, y0);
   spread->nx = std::min(x1 - x0 + 1, WavelengthSplat::kMaxSpan);
   spread->ny = std::min(y1 - y0 + 1, WavelengthSplat::kMaxSpan);
+  f.evaluate_axis_row(s.x - (x0 + 0.5), spread->nx, 0, spread->wx);
+  f.evaluate_axis_row(s.y - (y0 + 0.5), spread->ny, 1, spread->wy);
   double sx = 0.0, sy = 0.0;
-  for (int i = 0; i < spread->nx; ++i) {
-    spread->wx[i] = f.evaluate_axis(float(s.x - (x0 + i + 0.5)), 0);
-    sx += std::abs(spread->wx[i]);
-  }
-  for (int i = 0; i < spread->ny; ++i) {
-    spread->wy[i] = f.evaluate_axis(float(s.y - (y0 + i + 0.5)), 1);
-    sy += std::abs(spread->wy[i]);
-  }
+  for (int i = 0; i < spread->nx; ++i) sx += std::abs(spread->wx[i]);
+  for (int i = 0; i < spread->ny; ++i) sy += std::abs(spread->wy[i]);
   if (!(sx * sy > 0.0)) spread->nx = spread->ny = 0;
   return sx * sy;
 }

@@ -28,6 +28,11 @@ class Filter {
   virtual float evaluate_axis(float t, int axis) const {
     return axis == 0 ? evaluate(Vec2(t, 0.f)) / evaluate(Vec2(0.f)) : evaluate(Vec2(0.f, t));
   }
+  // The factors of a row of pixels one apart: out[i] = evaluate_axis(t0 - i, axis), i < n (a
+  // wavelength's splat, one row per axis). Filters override it where the row is cheaper whole.
+  virtual void evaluate_axis_row(double t0, int n, int axis, float* out) const {
+    for (int i = 0; i < n; ++i) out[i] = evaluate_axis(float(t0 - i), axis);
+  }
   // True when the filter has one value over its whole support (a box): every sample then has
   // weight 1, and radiance may be splatted to another pixel without changing the pixel's weight.
   virtual bool constant() const { return false; }

@@ -17,6 +17,7 @@ class GaussianFilter : public Filter {
   Vec2 radius() const override { return radius_; }
   float evaluate(Vec2 p) const override;
   float evaluate_axis(float t, int axis) const override { return float(shifted_gaussian(t, axis)); }
+  void evaluate_axis_row(double t0, int n, int axis, float* out) const override;
   FilterSample sample(Vec2 u) const override { return sampler_.sample(*this, u); }
   std::string to_string() const override;
   float integral() const override { return integral_; }
@@ -34,6 +35,8 @@ class GaussianFilter : public Filter {
   // Constants of shifted_gaussian, set before the sampler tabulates evaluate(): 1 / sqrt(pi s2)
   // and G(r) / norm = exp(-r^2 / s2) per axis (s2 = 2 sigma^2).
   double norm_, edge_[2];
+  // exp(-2 / s2): the factor by which the ratio of neighbouring taps changes (evaluate_axis_row).
+  double ratio_step_;
   filter_sampling::FilterSampler sampler_;
 };
 

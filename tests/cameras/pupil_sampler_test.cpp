@@ -287,5 +287,47 @@ TEST(PupilSampler, AreaMatchesContainment) {
   }
 }
 
+// contains() (a rough angle, cross products, and the polygon's inner and outer circles) against
+// the crossing-number test on the polygon itself, at random points of a box around it and at
+// points near its vertices, where the circles do not decide: every answer the same.
+TEST(PupilSampler, ContainsIsThePolygonsCrossingNumberTest) {
+  auto cam = make_eye("\"float pupildiameter\" 4 \"float fov\" 90");
+  const PupilSampler& ps = cam->pupil();
+  const int n = ps.directions();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (double arc : {0.0, 0.3 * ps.max_arc_mm(), 0.8 * ps.max_arc_mm(), ps.max_arc_mm()}) {
+    ASSERT_GT(ps.area(arc), 0.0) << arc;
+    std::vector<glm::dvec2> v;
+    double largest = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const double r = ps.polygon_radius(arc, j), phi = 2.0 * M_PI * j / n;
+      v.push_back(r * glm::dvec2(std::cos(phi), std::sin(phi)));
+      largest = std::max(largest, r);
+    }
+    auto crossing_number = [&](glm::dvec2 p) {
+      bool in = false;
+      for (int j = 0, k = n - 1; j < n; k = j++)
+        if ((v[j].y > p.y) != (v[k].y > p.y) && p.x < v[k].x + (p.y - v[k].y) * (v[j].x - v[k].x) / (v[j].y - v[k].y))
+          in = !in;
+      return in;
+    };
+    const glm::dvec2 c = ps.centre(arc);
+    int mismatches = 0, inside = 0;
+    for (int i = 0; i < 200000; ++i) {
+      // Half the points in the box, half within 2 % of a vertex's radius of it.
+      const glm::dvec2 p =
+          i % 2 ? 1.2 * largest * glm::dvec2(u(rng), u(rng))
+                : v[size_t(i / 2 % n)] * (1.0 + 0.02 * u(rng)) + 0.02 * largest * glm::dvec2(u(rng), u(rng));
+      const bool expected = crossing_number(p);
+      inside += expected;
+      mismatches += ps.contains(arc, c + p) != expected;
+    }
+    EXPECT_EQ(mismatches, 0) << arc;
+    EXPECT_GT(inside, 40000) << arc;  // both answers well represented
+    EXPECT_LT(inside, 160000) << arc;
+  }
+}
+
 }  // namespace
 }  // namespace eyetrace

@@ -49,6 +49,30 @@ TEST(SeparableFilters, EveryFilterIsAProductOfItsAxes) {
   }
 }
 
+// A splat's row of factors (Filter::evaluate_axis_row: the Gaussian's by a recurrence) is the
+// factors one by one, over rows starting anywhere from beyond the support's left end to past
+// its right, for every filter and a Gaussian so narrow that its row falls back to single taps.
+TEST(SeparableFilters, RowsOfFactorsAreTheFactors) {
+  std::vector<std::unique_ptr<Filter>> filters = every_filter();
+  filters.push_back(std::make_unique<GaussianFilter>(Vec2(1.5f, 1.5f), GaussianFilter::min_sigma(Vec2(1.5f))));
+  filters.push_back(std::make_unique<GaussianFilter>(Vec2(3.5f, 0.5f), 2.f));
+  std::mt19937 rng(3);
+  for (const auto& f : filters)
+    for (int axis = 0; axis < 2; ++axis) {
+      const float r = f->radius()[axis], centre = f->evaluate_axis(0.f, axis);
+      std::uniform_real_distribution<double> start(-r - 1.0, 2.0 * r + 2.0);
+      for (int i = 0; i < 2000; ++i) {
+        const double t0 = start(rng);
+        const int n = 1 + i % 8;
+        float row[8];
+        f->evaluate_axis_row(t0, n, axis, row);
+        for (int k = 0; k < n; ++k)
+          ASSERT_NEAR(row[k], f->evaluate_axis(float(t0 - k), axis), 2e-6f * std::abs(centre))
+              << f->to_string() << " axis " << axis << " row from " << t0 << ", tap " << k;
+      }
+    }
+}
+
 // Filter::integral (which normalises the samples' weights and bdpt's light splats) is each
 // filter's signed integral over its support: against the midpoint rule on a 512 x 512 grid
 // (exact for the box and the triangle, within 1e-4 of the smooth filters' integrals).
