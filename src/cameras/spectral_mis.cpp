@@ -71,7 +71,7 @@ double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, do
 }
 
 // A smooth filter's splat of a wavelength landing at raster point s: the pixels of the tile whose
-// filter reaches s, the filter's one-dimensional factors there (Filter::evaluate_axis), and
+// filter reaches s, the filter's one-dimensional factors there (Filter::evaluate_axis_row), and
 // D(s), the sum of |f| over those pixels; 0 when no pixel of the tile is reached.
 double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, WavelengthSplat* spread) {
   const Filter& f = *cs.filter;

@@ -52,7 +52,7 @@ double GaussianFilter::shifted_gaussian(double x, int axis) const {
 // of a dispersive render's time): with t_i = t0 - i, G(t_{i+1}) = G(t_i) q_i where
 // q_i = exp((2 t_i - 1) / s2), and q_{i+1} = q_i exp(-2 / s2). Each step adds a rounding of
 // about 1e-16 relative, far below the float result's; near the radius G - G(r) then loses the
-// digits expm1 keeps in shifted_gaussian, a few 1e-17 absolute. Narrow filters whose ratios
+// digits expm1 keeps in shifted_gaussian, about 1e-16 absolute. Narrow filters whose ratios
 // would overflow take the taps one by one.
 void GaussianFilter::evaluate_axis_row(double t0, int n, int axis, float* out) const {
   const double s2 = 2.0 * double(sigma_) * double(sigma_);
