@@ -69,6 +69,7 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
   if (empty()) return;
   const size_t n = static_cast<size_t>(std::ceil(max_angle_deg() * kInverseSamplesPerDegree)) + 1;
   inverse_scale_ = static_cast<double>(n - 1) / max_angle_deg();
+  degrees_per_sample_ = 1.0 / inverse_scale_;
   inverse_.resize(n);
   for (size_t j = 0; j < n; ++j) {
     const double angle = std::fmin(static_cast<double>(j) / inverse_scale_, max_angle_deg());
@@ -76,9 +77,19 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
     const double t = (angle - angles_[i]) / (angles_[i + 1] - angles_[i]);
     inverse_[j] = arcs_[i] + t * (arcs_[i + 1] - arcs_[i]);
   }
-  guide_scale_ = static_cast<double>(n - 1) / std::fmax(inverse_.back(), 1e-12);
-  guide_.resize(n);
-  for (size_t g = 0, i = 0; g < n; ++g) {
+  // Guide cells narrower than the narrowest segment: a cell then meets at most two segments, so
+  // a lookup steps at most once from the guide's segment (angle_for_arc, without a loop).
+  double narrowest = inverse_.back();
+  inverse_step_.resize(n - 1);
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const double width = inverse_[i + 1] - inverse_[i];
+    narrowest = std::fmin(narrowest, width);
+    inverse_step_[i] = width > 0.0 ? 1.0 / width : 0.0;
+  }
+  const double cells = std::fmin(inverse_.back() / std::fmax(narrowest, 1e-12) * 1.25, 64.0 * double(n));
+  guide_scale_ = std::ceil(cells) / std::fmax(inverse_.back(), 1e-12);
+  guide_.resize(static_cast<size_t>(std::ceil(cells)) + 1);
+  for (size_t g = 0, i = 0; g < guide_.size(); ++g) {
     while (i + 2 < n && inverse_[i + 1] <= static_cast<double>(g) / guide_scale_) ++i;
     guide_[g] = static_cast<uint32_t>(i);
   }
@@ -87,14 +98,15 @@ FieldAngleTable::FieldAngleTable(const optics::CompiledSystem& system, const Ret
 double FieldAngleTable::angle_for_arc(double a, double* slope) const {
   if (empty() || !(a >= inverse_.front() && a <= inverse_.back())) return -1.0;
   // The segment of the resampled inverse that holds a (arc_for_angle interpolates linearly in
-  // it): from the guide's segment, forward while the next one starts at or below a.
+  // it): the guide's segment, or the next one when that starts at or below a (a guide cell meets
+  // at most two segments). Branch-free: which of the two it is is as good as random.
   const size_t g = std::min(static_cast<size_t>(a * guide_scale_), guide_.size() - 1);
   size_t i = guide_[g];
-  while (i + 2 < inverse_.size() && inverse_[i + 1] <= a) ++i;
+  i += static_cast<size_t>((i + 2 < inverse_.size()) & (inverse_[i + 1] <= a));
+  while (i + 2 < inverse_.size() && inverse_[i + 1] <= a) ++i;  // only if the guide's size was capped
   const double width = inverse_[i + 1] - inverse_[i];
   *slope = width * inverse_scale_;
-  const double t = width > 0.0 ? (a - inverse_[i]) / width : 0.0;
-  return (static_cast<double>(i) + t) / inverse_scale_;
+  return (static_cast<double>(i) + (a - inverse_[i]) * inverse_step_[i]) * degrees_per_sample_;
 }
 
 std::optional<double> FieldAngleTable::chief_q_for_arc(double a) const {

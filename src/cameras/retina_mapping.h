@@ -10,6 +10,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -52,6 +53,12 @@ class FieldAngleTable {
     const double t = x - static_cast<double>(i);
     return inverse_[i] + t * (inverse_[i + 1] - inverse_[i]);
   }
+  // d arc / d angle (mm per degree) of arc_for_angle's piecewise-linear form at angle_deg
+  // (within the table).
+  double arc_slope_for_angle(double angle_deg) const {
+    const size_t i = std::min(static_cast<size_t>(std::fmax(angle_deg * inverse_scale_, 0.0)), inverse_.size() - 2);
+    return (inverse_[i + 1] - inverse_[i]) * inverse_scale_;
+  }
   // The inverse of arc_for_angle, exact for its piecewise-linear form, and that form's slope
   // d arc / d angle (mm per degree) there; negative when a is beyond the table.
   double angle_for_arc(double a, double* slope) const;
@@ -61,10 +68,12 @@ class FieldAngleTable {
 
  private:
   std::vector<double> arcs_, angles_, chief_q_;
-  std::vector<double> inverse_;  // arc at angle j / inverse_scale_
-  double inverse_scale_ = 0.0;   // samples per degree
+  std::vector<double> inverse_;       // arc at angle j / inverse_scale_
+  double inverse_scale_ = 0.0;        // samples per degree
+  std::vector<double> inverse_step_;  // 1 / (inverse_[i + 1] - inverse_[i]), 0 for an empty segment
+  double degrees_per_sample_ = 0.0;   // 1 / inverse_scale_
   // Guide for angle_for_arc: guide_[g] is the last segment of inverse_ starting at or below arc
-  // g / guide_scale_, so a lookup starts there and steps at most a few segments.
+  // g / guide_scale_; its cells are narrower than any segment, so a lookup steps at most once.
   std::vector<uint32_t> guide_;
   double guide_scale_ = 0.0;  // guide cells per mm of arc
 };
@@ -93,6 +102,19 @@ class RetinaMapping {
       }
     }
     return -1.0;
+  }
+  // d arc / d screen radius at screen radius s >= 0 (where arc_for_screen_radius is not
+  // negative): the slope screen_radius_for_arc gives, without inverting the mapping.
+  double arc_slope(double s, const FieldAngleTable& table) const {
+    switch (kind_) {
+      case FieldMapping::Angle: return table.arc_slope_for_angle(s * edge_) * edge_;
+      case FieldMapping::Retina: return edge_;
+      case FieldMapping::Flat: {
+        const double ch = s * edge_ * retina_curvature_;  // sin(c a): d arc / d h = 1 / cos(c a)
+        return edge_ / std::sqrt(1.0 - ch * ch);
+      }
+    }
+    return 0.0;
   }
   // The inverse: the screen radius whose retina point is at arc a (negative when none is), and
   // d arc / d screen radius there. A dispersive camera uses it to find which pixel a ray that

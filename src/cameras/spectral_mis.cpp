@@ -108,8 +108,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
   t.filter = spread     ? spread_at(cs, glm::dvec2(cs.p_film), spread)
              : cs.splat ? 1.0
                         : cs.filter->evaluate(cs.filter_offset);
-  double slope = 0.0;
-  if (mapping_.screen_radius_for_arc(hero.arc, angles_, &slope) < 0.0) return {};
+  const double slope = mapping_.arc_slope(hero.screen_radius, angles_);
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
   glm::dvec2 p, normal;
   retina_points_.at(hero.arc, &p, &normal);
@@ -128,7 +127,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
                                                                     double lambda_nm, WavelengthSplat* spread) const {
   if (!forward.ok()) return {};
   const glm::dvec3& x = forward.ray.origin;
-  const glm::dvec3 dir = glm::normalize(forward.ray.direction);  // towards the retina (+z)
+  const glm::dvec3& dir = forward.ray.direction;  // towards the retina (+z), unit (the trace's)
   const double h = std::sqrt(x.x * x.x + x.y * x.y);
   if (retina_.curvature != 0.0 && !(h * std::abs(retina_.curvature) < 1.0)) return {};
   const double a = retina_.arc_for_height(h);
@@ -150,7 +149,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const glm::dvec2 q_local(q.x * m.x + q.y * m.y, -q.x * m.y + q.y * m.x);  // meridian frame
   const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
   if (!(cos_retina > 0.0) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
-  t.u = std::abs(t.filter) / (pupil_.area(a) * t.n2_jacobian * cos_retina * dir.z / (s * s));
+  t.u = std::abs(t.filter) * (s * s) / (pupil_.area(a) * t.n2_jacobian * cos_retina * dir.z);
   return t;
 }
 

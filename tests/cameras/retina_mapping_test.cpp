@@ -118,7 +118,8 @@ TEST(RetinaMapping, FlatAndRetinaMappingsAreLinearWithFovAtTheEdge) {
 // A field of view the chief ray cannot reach cannot scale "flat"/"retina": a clear error
 // naming "fov" (the "angle" mapping shows such pixels black instead).
 // The inverse the spectral MIS uses (screen radius of a retina arc, and d arc / d radius) undoes
-// the forward mapping, and its slope is the forward mapping's finite difference, for each kind.
+// the forward mapping, and its slope is the forward mapping's finite difference, for each kind;
+// arc_slope (the slope without the inverse) gives the same slope.
 TEST(RetinaMapping, InverseUndoesTheMappingAndGivesItsSlope) {
   auto cam = camera("\"string model\" \"navarro\" \"float fov\" 60 \"float wavelength\" 589.3", 64);
   const FieldAngleTable& table = cam->field_angles();
@@ -130,8 +131,25 @@ TEST(RetinaMapping, InverseUndoesTheMappingAndGivesItsSlope) {
       EXPECT_NEAR(m.screen_radius_for_arc(a, table, &slope), s, 1e-12) << to_string(kind) << " s " << s;
       const double h = 1e-6, fd = (m.arc_for_screen_radius(s + h, table) - m.arc_for_screen_radius(s, table)) / h;
       EXPECT_NEAR(slope, fd, 1e-4 * fd) << to_string(kind) << " s " << s;
+      EXPECT_NEAR(m.arc_slope(s, table), slope, 1e-12 * slope) << to_string(kind) << " s " << s;
     }
   }
+}
+
+// The table's inverse at every segment (its guide steps at most once): angle -> arc -> angle on
+// a grid much finer than the table's (32 segments per degree), and the slope is the segment's.
+TEST(RetinaMapping, FieldAngleInverseHoldsOnEverySegment) {
+  auto cam = camera("\"string model\" \"navarro\" \"float fov\" 80 \"float wavelength\" 589.3", 64);
+  const FieldAngleTable& table = cam->field_angles();
+  int worst_steps = 0;
+  for (double angle = 0.0; angle <= table.max_angle_deg(); angle += 0.0007) {
+    const double a = table.arc_for_angle(angle);
+    double slope = 0.0;
+    ASSERT_NEAR(table.angle_for_arc(a, &slope), angle, 1e-10) << angle;
+    const double fd = (table.arc_for_angle(angle + 1e-7) - a) / 1e-7;
+    if (std::abs(slope - fd) > 1e-5 * fd) ++worst_steps;  // only where angle + 1e-7 crosses a node
+  }
+  EXPECT_LT(worst_steps, 5);
 }
 
 TEST(RetinaMapping, UnreachableFovIsAnErrorForFlatMapping) {
