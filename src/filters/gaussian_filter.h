@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/filter.h"
+#include "filters/axis_factor_table.h"
 #include "filters/filter_sampler.h"
 #include "scene/param_spec.h"
 #include "scene/params.h"
@@ -35,8 +36,7 @@ class GaussianFilter : public Filter {
   // Constants of shifted_gaussian, set before the sampler tabulates evaluate(): 1 / sqrt(pi s2)
   // and G(r) / norm = exp(-r^2 / s2) per axis (s2 = 2 sigma^2).
   double norm_, edge_[2];
-  // exp(-2 / s2): the factor by which the ratio of neighbouring taps changes (evaluate_axis_row).
-  double ratio_step_;
+  AxisFactorTable rows_[2];  // g per axis, for evaluate_axis_row
   filter_sampling::FilterSampler sampler_;
 };
 
