@@ -48,6 +48,21 @@
 
 namespace eyetrace {
 
+namespace {
+
+// floor and ceil for |v| < 2^31, by truncation: the baseline instruction set has no rounding
+// instruction, and std::floor's stand-in for it covers the whole double range.
+int floor_to_int(double v) {
+  const int t = static_cast<int>(v);
+  return t - static_cast<int>(v < static_cast<double>(t));
+}
+int ceil_to_int(double v) {
+  const int t = static_cast<int>(v);
+  return t + static_cast<int>(v > static_cast<double>(t));
+}
+
+}  // namespace
+
 // The film's filter at the raster point of screen radius rho along the retina meridian m,
 // relative to the centre of the sample's pixel; 0 outside the filter's support. A sample that
 // may splat (constant filter) counts the point in whichever pixel of its tile holds it: offset
@@ -76,13 +91,15 @@ double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, do
 double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, WavelengthSplat* spread) {
   const Filter& f = *cs.filter;
   const Vec2 r = f.radius();
-  // Pixel x (centre x + 0.5) is reached when |s.x - x - 0.5| <= r.x.
-  const int x0 = std::max(cs.splat_lo.x, int(std::ceil(s.x - 0.5 - r.x)));
-  const int x1 = std::min(cs.splat_hi.x - 1, int(std::floor(s.x - 0.5 + r.x)));
-  const int y0 = std::max(cs.splat_lo.y, int(std::ceil(s.y - 0.5 - r.y)));
-  const int y1 = std::min(cs.splat_hi.y - 1, int(std::floor(s.y - 0.5 + r.y)));
   spread->nx = spread->ny = 0;
-  if (!(x1 >= x0 && y1 >= y0 && std::isfinite(s.x) && std::isfinite(s.y))) return 0.0;
+  // Far outside any raster (or NaN): nothing to reach, and the integer rounding below is safe.
+  if (!(std::abs(s.x) < 1e9 && std::abs(s.y) < 1e9)) return 0.0;
+  // Pixel x (centre x + 0.5) is reached when |s.x - x - 0.5| <= r.x.
+  const int x0 = std::max(cs.splat_lo.x, ceil_to_int(s.x - 0.5 - r.x));
+  const int x1 = std::min(cs.splat_hi.x - 1, floor_to_int(s.x - 0.5 + r.x));
+  const int y0 = std::max(cs.splat_lo.y, ceil_to_int(s.y - 0.5 - r.y));
+  const int y1 = std::min(cs.splat_hi.y - 1, floor_to_int(s.y - 0.5 + r.y));
+  if (!(x1 >= x0 && y1 >= y0)) return 0.0;
   spread->first = IVec2(x0, y0);
   spread->nx = std::min(x1 - x0 + 1, WavelengthSplat::kMaxSpan);
   spread->ny = std::min(y1 - y0 + 1, WavelengthSplat::kMaxSpan);

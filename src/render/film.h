@@ -125,6 +125,17 @@ class Film {
     if (gbuffer_ && visible) gbuffer_->add(index(pixel), *visible, lambda, rgb, w);
     return true;
   }
+  // A sample whose radiance all went into splats (add_splats): its filter weight alone, the
+  // sums add_sample with zero radiance leaves (w * 0 adds nothing, not even a sign).
+  bool add_weight(IVec2 pixel, const SampledWavelengths& lambda, float w, const VisibleSurface* visible = nullptr) {
+    if (gbuffer_ && visible) return add_sample(pixel, SampledSpectrum(0.f), lambda, w, visible);
+    if (!std::isfinite(w)) {
+      nonfinite_.fetch_add(1, std::memory_order_relaxed);
+      return false;
+    }
+    pixels_[index(pixel)].weight += w;
+    return true;
+  }
   // An RGB sample: adds to R, G, B and the weight, nothing to the buckets (the renderer uses it
   // for zero radiance only: a lost camera ray).
   bool add_sample(IVec2 pixel, const RGB& L, float w) {

@@ -131,7 +131,7 @@ class SampleBatch {
     if (smooth_) {
       // Every wavelength splats around where it landed (core/splatting_camera.h); the sample's
       // own pixel keeps its filter weight, which the splats are averaged by.
-      film_.add_sample(pixels_[i], SampledSpectrum(0.f), lambda, filter_weight, vs);
+      film_.add_weight(pixels_[i], lambda, filter_weight, vs);
       const float scale = std::abs(filter_weight);
       for (int k = 0; k < kSpectrumSamples; ++k) {
         const WavelengthSplat& s = splats_[i].wavelength[k];

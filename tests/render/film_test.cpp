@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.h"
@@ -32,6 +33,30 @@ TEST(Film, WeightedMeanAndNonFiniteSamplesDiscarded) {
   EXPECT_FLOAT_EQ(v.b, 3.f);
   EXPECT_EQ(film.nonfinite_samples(), 2u);
   EXPECT_EQ(film.pixel_value(IVec2(0, 0)), RGB(0.f));
+}
+
+// A dispersive eye's sample whose radiance went into splats adds only its filter weight
+// (Film::add_weight): the same pixel sums, bit for bit, as adding it with zero radiance, negative
+// filter weights included; a non-finite weight is refused and counted by both.
+TEST(Film, AddWeightIsASampleOfZeroRadiance) {
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.6f);
+  Film a(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>(), 1.f);
+  Film b(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>(), 1.f);
+  SampledSpectrum L(0.f);
+  L[1] = 0.7f;
+  for (Film* f : {&a, &b}) f->add_splat(IVec2(1, 0), L, lambda);
+  for (float w : {0.8f, -0.15f, 1.3f, std::nanf("")}) {
+    EXPECT_EQ(a.add_weight(IVec2(1, 0), lambda, w), std::isfinite(w));
+    EXPECT_EQ(b.add_sample(IVec2(1, 0), SampledSpectrum(0.f), lambda, w), std::isfinite(w));
+  }
+  const RGB va = a.pixel_value(IVec2(1, 0)), vb = b.pixel_value(IVec2(1, 0));
+  EXPECT_NE(va.g, 0.f);
+  EXPECT_EQ(std::memcmp(&va, &vb, sizeof(RGB)), 0);
+  const std::vector<double> sa = a.accumulators(), sb = b.accumulators();  // every sum, signs of zeros too
+  ASSERT_EQ(sa.size(), sb.size());
+  EXPECT_EQ(std::memcmp(sa.data(), sb.data(), sa.size() * sizeof(double)), 0);
+  EXPECT_EQ(a.nonfinite_samples(), 1u);
+  EXPECT_EQ(b.nonfinite_samples(), 1u);
 }
 
 // pbrt-v4's maxcomponentvalue (RGBFilm::AddSample): a sample's sensor RGB times the imaging
