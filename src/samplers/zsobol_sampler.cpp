@@ -26,6 +26,11 @@ ZSobolSampler::ZSobolSampler(int samples_per_pixel, IVec2 resolution, Randomizat
   log2_spp_ = std::countr_zero(std::bit_ceil(uint32_t(std::max(samples_per_pixel, 1))));
   int res = int(std::bit_ceil(uint32_t(std::max({resolution.x, resolution.y, 1}))));
   n_base4_digits_ = std::countr_zero(uint32_t(res)) + (log2_spp_ + 1) / 2;
+  // The pixel digits (above first_sample_digit, sample_index()) start at this bit.
+  const bool odd = log2_spp_ & 1;
+  const int first_pixel_digit = (log2_spp_ + (odd ? 1 : 0)) / 2;
+  pixel_shift_ = 2 * first_pixel_digit - (odd ? 1 : 0);
+  tile_cache_ = 2 * (n_base4_digits_ - first_pixel_digit) <= 32;
 }
 
 void ZSobolSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimension) {
@@ -37,6 +42,9 @@ void ZSobolSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimens
       stamps_.fill(0);
       stamp_ = 1;
     }
+    slot_ = (pixel.x & 15) | ((pixel.y & 15) << 4);
+    TileSlot& slot = tile_[size_t(slot_)];
+    if (slot.pixel != pixel) slot = TileSlot{pixel, 0, {}};
   }
 }
 
@@ -70,7 +78,18 @@ uint64_t ZSobolSampler::sample_index(int dimension) const {
   uint64_t pixel_part;
   if (dimension >= 0 && dimension < kCachedDimensions) {
     if (stamps_[size_t(dimension)] != stamp_) {
-      pixel_digits_[size_t(dimension)] = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
+      uint64_t digits;
+      TileSlot& slot = tile_[size_t(slot_)];
+      if (tile_cache_ && dimension < kTileDimensions && (slot.valid >> dimension & 1u)) {
+        digits = uint64_t(slot.digits[size_t(dimension)]) << pixel_shift_;
+      } else {
+        digits = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
+        if (tile_cache_ && dimension < kTileDimensions) {
+          slot.digits[size_t(dimension)] = uint32_t(digits >> pixel_shift_);
+          slot.valid |= 1u << dimension;
+        }
+      }
+      pixel_digits_[size_t(dimension)] = digits;
       stamps_[size_t(dimension)] = stamp_;
     }
     pixel_part = pixel_digits_[size_t(dimension)];

@@ -53,6 +53,20 @@ class ZSobolSampler : public Sampler {
   uint32_t stamp_ = 1;
   mutable std::array<uint32_t, kCachedDimensions> stamps_{};
   mutable std::array<uint64_t, kCachedDimensions> pixel_digits_{};
+  // Behind it, for the order a splatting render takes (sample index outermost over a 16 x 16
+  // tile, so the pixel changes at every sample): the pixel digits of the first kTileDimensions
+  // dimensions of the last pixel seen at each position of a tile, shifted down by pixel_shift_
+  // (they fit 32 bits up to 65536 pixels across; tile_cache_ is false beyond).
+  static constexpr int kTileSlots = 256, kTileDimensions = 16;
+  struct TileSlot {
+    IVec2 pixel{-1};
+    uint32_t valid = 0;  // bit d: digits[d] is set
+    std::array<uint32_t, kTileDimensions> digits{};
+  };
+  mutable std::array<TileSlot, kTileSlots> tile_{};
+  int slot_ = 0;
+  int pixel_shift_ = 0;
+  bool tile_cache_ = false;
 };
 
 // pbrt-v4 "zsobol": integer pixelsamples (16; rounded up to a power of two), integer seed,

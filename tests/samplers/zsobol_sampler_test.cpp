@@ -149,6 +149,24 @@ TEST(ZSobolSampler, ValuesIndependentOfQueryOrder) {
   }
 }
 
+// The order a splatting render takes, sample index outermost over tiles wider than the tile
+// cache (pixels 16 apart share its slots): every value is a fresh sampler's.
+TEST(ZSobolSampler, SampleIndexOutermostOrderGivesTheSameValues) {
+  for (int spp : {4, 32}) {
+    ZSobolSampler shared(spp, IVec2(70, 40), Randomization::FastOwen, 3);
+    for (int index = 0; index < spp; ++index)
+      for (int y = 3; y < 37; y += 2)
+        for (int x = 0; x < 70; x += 3) {
+          ZSobolSampler fresh(spp, IVec2(70, 40), Randomization::FastOwen, 3);
+          shared.start_pixel_sample(IVec2(x, y), index, 0);
+          fresh.start_pixel_sample(IVec2(x, y), index, 0);
+          for (int d = 0; d < 10; ++d) {  // dimensions 0-19, past the tile cache's 16
+            ASSERT_EQ(shared.get_2d(), fresh.get_2d()) << spp << " " << index << " " << x << " " << y << " " << d;
+          }
+        }
+  }
+}
+
 }  // namespace
 }  // namespace eyetrace
 
