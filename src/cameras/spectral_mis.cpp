@@ -132,8 +132,9 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
   t.n2_jacobian = n * n * area_jacobian(hero.screen_radius, p.x, slope);
   const glm::dvec3& d = hero.d_local;
   const double d2 = glm::dot(d, d);
-  const double g = (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z / (d2 * d2);  // cos cos / d^2
-  t.u = std::abs(t.filter) / (hero.area * t.n2_jacobian * g);
+  // G = cos cos / d^2 = (d.normal) (-d.z) / d2^2, so u = |f| / (area n^2 J G) in one division.
+  t.u =
+      std::abs(t.filter) * (d2 * d2) / (hero.area * t.n2_jacobian * (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z);
   return t;
 }
 
@@ -160,13 +161,19 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   glm::dvec2 p, nr;
   retina_points_.at(a, &p, &nr);
   t.n2_jacobian = n * n * area_jacobian(rho, p.x, slope);
+  const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
+  if (!(cos_retina > 0.0)) return t;  // seen, but not sampled at k (it would leave through the retina)
+  // u = |f| / (area n^2 J G), G = cos_retina cos_plane / s^2 with cos_plane = dir.z; one
+  // division gives both 1 / dir.z (for s) and u.
+  const double rest = pupil_.area(a) * t.n2_jacobian * cos_retina;
+  const double inv = 1.0 / (rest * dir.z);
   // Back along the ray to the plane: d = s dir with s < 0 (the plane is in front of the retina).
-  const double s = (z_plane_ - x.z) / dir.z;
+  const double s = (z_plane_ - x.z) * (inv * rest);
   const glm::dvec2 q = glm::dvec2(x.x, x.y) + s * glm::dvec2(dir.x, dir.y);
   const glm::dvec2 q_local(q.x * m.x + q.y * m.y, -q.x * m.y + q.y * m.x);  // meridian frame
-  const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
-  if (!(cos_retina > 0.0) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
-  t.u = std::abs(t.filter) * (s * s) / (pupil_.area(a) * t.n2_jacobian * cos_retina * dir.z);
+  // Not finite where the pupil region has no area (no ray passes there): not sampled at k either.
+  if (!std::isfinite(s) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
+  t.u = std::abs(t.filter) * (s * s) * inv;
   return t;
 }
 
