@@ -344,8 +344,8 @@ class RenderLoop {
       if (batch.splats() || light_splats_) {
         // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
         // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
-        // mono eye on the figure scene), so only where splats happen (uniform renders, where
-        // every pixel of the tile has the same range).
+        // mono eye on the figure scene, before zsobol's tile cache), so only where splats happen
+        // (uniform renders, where every pixel of the tile has the same range).
         auto [first, end] = range(tb.lo);
         for (int i = first; i < end; ++i)
           for (int y = tb.lo.y; y < tb.hi.y; ++y)
