@@ -110,10 +110,10 @@ class LensSystemCamera : public Camera, public SplattingCamera {
   };
   // One wavelength's share of a ray under spectral MIS (spectral_mis.cpp).
   struct WavelengthTerms {
-    double filter = 0.0;     // the pixel filter at the wavelength's retina point (signed)
-    double u = 0.0;          // its sampling density, up to a common factor; 0: cannot sample the ray
-    double n2_jacobian = 0;  // n_vitreous^2 * (retina area per raster area) there
-    IVec2 offset{0};         // the pixel it counts in, from the sample's (splats)
+    double filter = 0.0;         // the pixel filter at the wavelength's retina point (signed)
+    double u = 0.0;              // its sampling density, up to a common factor; 0: cannot sample the ray
+    double inv_n2_jacobian = 0;  // 1 / (n_vitreous^2 * (retina area per raster area)) there
+    IVec2 offset{0};             // the pixel it counts in, from the sample's (splats)
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
   static optics::Ray back_in(const optics::TraceResult& left);
@@ -137,7 +137,7 @@ class LensSystemCamera : public Camera, public SplattingCamera {
   static double spread_at(const CameraSample& cs, glm::dvec2 raster, WavelengthSplat* spread);
   void trace_rays(const CameraSample* samples, SampledWavelengths* lambdas, std::optional<CameraRay>* rays,
                   SampleSplats* splats, size_t count) const;
-  static double area_jacobian(double screen_radius, double height, double slope);
+  static double inverse_n2_jacobian(double n, double screen_radius, double height, double slope);
   glm::dvec2 screen(Vec2 p_film) const;
   void compute_normalisation(const optics::CompiledSystem& system);
 

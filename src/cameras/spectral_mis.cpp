@@ -112,11 +112,11 @@ double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, Wavelen
   return sx * sy;
 }
 
-// Retina area per screen area at screen radius rho (arc a at height h, d arc / d rho = slope):
-// the mapping is radial, so it is (d arc / d rho) (h / rho), which tends to slope^2 at the
-// centre (dh / da = 1 there).
-double LensSystemCamera::area_jacobian(double rho, double h, double slope) {
-  return rho > 1e-12 ? slope * h / rho : slope * slope;
+// 1 / (n^2 J), J the retina area per screen area at screen radius rho (arc a at height h,
+// d arc / d rho = slope): the mapping is radial, so J = (d arc / d rho) (h / rho), which tends
+// to slope^2 at the centre (dh / da = 1 there). The reciprocal, so that the weights multiply.
+double LensSystemCamera::inverse_n2_jacobian(double n, double rho, double h, double slope) {
+  return rho > 1e-12 ? rho / (n * n * slope * h) : 1.0 / (n * n * slope * slope);
 }
 
 LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSample& cs, const PendingRay& hero,
@@ -129,12 +129,12 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::hero_terms(const CameraSampl
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
   glm::dvec2 p, normal;
   retina_points_.at(hero.arc, &p, &normal);
-  t.n2_jacobian = n * n * area_jacobian(hero.screen_radius, p.x, slope);
+  t.inv_n2_jacobian = inverse_n2_jacobian(n, hero.screen_radius, p.x, slope);
   const glm::dvec3& d = hero.d_local;
   const double d2 = glm::dot(d, d);
   // G = cos cos / d^2 = (d.normal) (-d.z) / d2^2, so u = |f| / (area n^2 J G) in one division.
-  t.u =
-      std::abs(t.filter) * (d2 * d2) / (hero.area * t.n2_jacobian * (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z);
+  t.u = std::abs(t.filter) * (d2 * d2) * t.inv_n2_jacobian /
+        (hero.area * (d.x * hero.normal.x + d.z * hero.normal.y) * -d.z);
   return t;
 }
 
@@ -160,12 +160,12 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const double n = system_.index_after(system_.image_index() - 1, lambda_nm);
   glm::dvec2 p, nr;
   retina_points_.at(a, &p, &nr);
-  t.n2_jacobian = n * n * area_jacobian(rho, p.x, slope);
+  t.inv_n2_jacobian = inverse_n2_jacobian(n, rho, p.x, slope);
   const double cos_retina = -(dir.x * nr.x * m.x + dir.y * nr.x * m.y + dir.z * nr.y);
   if (!(cos_retina > 0.0)) return t;  // seen, but not sampled at k (it would leave through the retina)
   // u = |f| / (area n^2 J G), G = cos_retina cos_plane / s^2 with cos_plane = dir.z; one
   // division gives both 1 / dir.z (for s) and u.
-  const double rest = pupil_.area(a) * t.n2_jacobian * cos_retina;
+  const double rest = pupil_.area(a) * cos_retina;
   const double inv = 1.0 / (rest * dir.z);
   // Back along the ray to the plane: d = s dir with s < 0 (the plane is in front of the retina).
   const double s = (z_plane_ - x.z) * (inv * rest);
@@ -173,7 +173,7 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const glm::dvec2 q_local(q.x * m.x + q.y * m.y, -q.x * m.y + q.y * m.x);  // meridian frame
   // Not finite where the pupil region has no area (no ray passes there): not sampled at k either.
   if (!std::isfinite(s) || !pupil_.contains(a, q_local)) return t;  // seen, but not sampled at k
-  t.u = std::abs(t.filter) * (s * s) * inv;
+  t.u = std::abs(t.filter) * (s * s) * inv * t.inv_n2_jacobian;
   return t;
 }
 
@@ -199,7 +199,7 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
   if (spread) {
     const double scale = kSpectrumSamples * normalisation_ / sum_u;
     for (int k = 0; k < kSpectrumSamples; ++k) {
-      const double w = terms[k].filter == 0.0 ? 0.0 : scale / terms[k].n2_jacobian;
+      const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].inv_n2_jacobian;
       out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;
       if (out->weight[k] == 0.f) spread[k].nx = spread[k].ny = 0;
     }
@@ -207,7 +207,7 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
   }
   const double scale = kSpectrumSamples * normalisation_ * (terms[0].filter < 0.0 ? -1.0 : 1.0) / sum_u;
   for (int k = 0; k < kSpectrumSamples; ++k) {
-    const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].filter / terms[k].n2_jacobian;
+    const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].filter * terms[k].inv_n2_jacobian;
     out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;  // never NaN into the film
     out->pixel_offset[k] = terms[k].offset;
   }
