@@ -56,6 +56,7 @@ class FieldAngleTable {
   // d arc / d angle (mm per degree) of arc_for_angle's piecewise-linear form at angle_deg
   // (within the table).
   double arc_slope_for_angle(double angle_deg) const {
+    if (empty()) return 0.0;
     const size_t i = std::min(static_cast<size_t>(std::fmax(angle_deg * inverse_scale_, 0.0)), inverse_.size() - 2);
     return (inverse_[i + 1] - inverse_[i]) * inverse_scale_;
   }
