@@ -49,9 +49,9 @@ TEST(SeparableFilters, EveryFilterIsAProductOfItsAxes) {
   }
 }
 
-// A splat's row of factors (Filter::evaluate_axis_row: the Gaussian's by a recurrence) is the
-// factors one by one, over rows starting anywhere from beyond the support's left end to past
-// its right, for every filter and a Gaussian so narrow that its row falls back to single taps.
+// A splat's row of factors (Filter::evaluate_axis_row: the Gaussian's from a piecewise-cubic
+// table) is the factors one by one, over rows starting anywhere from beyond the support's left
+// end to past its right, for every filter and the narrowest Gaussian (its table the largest).
 TEST(SeparableFilters, RowsOfFactorsAreTheFactors) {
   std::vector<std::unique_ptr<Filter>> filters = every_filter();
   filters.push_back(std::make_unique<GaussianFilter>(Vec2(1.5f, 1.5f), GaussianFilter::min_sigma(Vec2(1.5f))));
