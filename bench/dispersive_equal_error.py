@@ -5,13 +5,15 @@
 # the eyetrace processes), so other load on the machine does not skew the ratio.
 # Usage: bench/dispersive_equal_error.py [box|gaussian]  (the figure scene's pixel filter is a
 # box; "gaussian" renders it with pbrt-v4's default filter instead). Run from anywhere after
-# building build/bin/eyetrace (or with EYETRACE=path/to/eyetrace); writes its renders into the current directory. About 3 minutes.
+# building build/bin/eyetrace (or with EYETRACE=path/to/eyetrace); writes its renders into the current directory.
+# The two cameras take turns at every rung, REPEATS=3 times (environment), median CPU per rung: about 6 minutes.
 import json, math, os, resource, subprocess, sys
 import numpy as np, OpenImageIO as oiio
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 B = os.environ.get("EYETRACE", os.path.join(ROOT, "build/bin/eyetrace"))  # another build: EYETRACE=path
 FILTER = sys.argv[1] if len(sys.argv) > 1 else "box"
+REPEATS = int(os.environ.get("REPEATS", "3"))  # renders per camera and rung; the median CPU counts
 CAMS = {"mono": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
         "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3'}
 
@@ -46,12 +48,21 @@ def read(p):
 def main():
     path = scene()
     res = {}
+    refs = {}
     for cam in CAMS:
         render(path, cam, 2048, f"{cam}_{FILTER}_ref.exr", seed=99)
-        ref = read(f"{cam}_{FILTER}_ref.exr")
-        m = ref.mean()
-        for spp in [16, 32, 64, 128]:
-            sec = render(path, cam, spp, f"{cam}_{FILTER}_{spp}.exr")
+        refs[cam] = read(f"{cam}_{FILTER}_ref.exr")
+    # The machine's speed drifts by tens of per cent within minutes (shared hosts): the two
+    # cameras take turns at every rung, REPEATS times, and each rung keeps its median CPU time.
+    for spp in [16, 32, 64, 128]:
+        secs = {cam: [] for cam in CAMS}
+        for _ in range(REPEATS):
+            for cam in CAMS:
+                secs[cam].append(render(path, cam, spp, f"{cam}_{FILTER}_{spp}.exr"))
+        for cam in CAMS:
+            ref = refs[cam]
+            m = ref.mean()
+            sec = float(np.median(secs[cam]))
             rel = float(((read(f"{cam}_{FILTER}_{spp}.exr") - ref) ** 2).mean() / (m * m))
             res.setdefault(cam, []).append((spp, sec, rel))
             print(cam, spp, f"{sec:.2f} s", f"relMSE {rel:.3e}", flush=True)
