@@ -44,7 +44,10 @@ void ZSobolSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimens
     }
     slot_ = (pixel.x & 15) | ((pixel.y & 15) << 4);
     TileSlot& slot = tile_[size_t(slot_)];
-    if (slot.pixel != pixel) slot = TileSlot{pixel, 0, {}};
+    if (slot.pixel != pixel) {  // another pixel's: its digits are stale (read only where valid)
+      slot.pixel = pixel;
+      slot.valid = 0;
+    }
   }
 }
 
@@ -80,11 +83,12 @@ uint64_t ZSobolSampler::sample_index(int dimension) const {
     if (stamps_[size_t(dimension)] != stamp_) {
       uint64_t digits;
       TileSlot& slot = tile_[size_t(slot_)];
-      if (tile_cache_ && dimension < kTileDimensions && (slot.valid >> dimension & 1u)) {
+      const bool tiled = tile_cache_ && dimension < kTileDimensions;
+      if (tiled && (slot.valid >> dimension & 1u)) {
         digits = uint64_t(slot.digits[size_t(dimension)]) << pixel_shift_;
       } else {
         digits = permuted_digits(n_base4_digits_ - 1, first_sample_digit + 1, dim_salt);
-        if (tile_cache_ && dimension < kTileDimensions) {
+        if (tiled) {
           slot.digits[size_t(dimension)] = uint32_t(digits >> pixel_shift_);
           slot.valid |= 1u << dimension;
         }
