@@ -2,6 +2,7 @@
 #include "core/spectrum.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace eyetrace {
@@ -149,15 +150,45 @@ Vec3 sampled_to_xyz(const SampledSpectrum& L, const SampledWavelengths& lambda) 
   return xyz / (float(kSpectrumSamples) * cie_y_integral());
 }
 
-RGB xyz_to_linear_srgb(const Vec3& xyz) {
-  // Lindbloom's matrix, derived from the sRGB primaries and the D65 white (0.3127, 0.3290).
-  auto matrix = [](const Vec3& v) {
-    return RGB(3.2404542f * v.x - 1.5371385f * v.y - 0.4985314f * v.z,
-               -0.9692660f * v.x + 1.8760108f * v.y + 0.0415560f * v.z,
-               0.0556434f * v.x - 0.2040259f * v.y + 1.0572252f * v.z);
-  };
-  static const RGB white = matrix(spectrum_to_xyz(white_samples()));
-  return matrix(xyz) / white;
+namespace {
+
+// Lindbloom's matrix, derived from the sRGB primaries and the D65 white (0.3127, 0.3290).
+RGB xyz_to_srgb_matrix(const Vec3& v) {
+  return RGB(3.2404542f * v.x - 1.5371385f * v.y - 0.4985314f * v.z,
+             -0.9692660f * v.x + 1.8760108f * v.y + 0.0415560f * v.z,
+             0.0556434f * v.x - 0.2040259f * v.y + 1.0572252f * v.z);
+}
+
+const RGB& srgb_white() {
+  static const RGB white = xyz_to_srgb_matrix(spectrum_to_xyz(white_samples()));
+  return white;
+}
+
+}  // namespace
+
+RGB xyz_to_linear_srgb(const Vec3& xyz) { return xyz_to_srgb_matrix(xyz) / srgb_white(); }
+
+RGB wavelength_to_rgb(float lambda_nm, float value_over_pdf) {
+  // The colour matching functions' rows taken to linear sRGB once: the matrix's row r times
+  // 1 / (white_r N integral of y-bar), as sampled_to_xyz and xyz_to_linear_srgb divide. The
+  // interpolation between rows commutes with that linear map, so this is cie_xyz_bar's.
+  static const std::array<RGB, kCieRows> rgb_rows = [] {
+    const double k = 1.0 / (double(kSpectrumSamples) * cie_y_integral());
+    const RGB w = srgb_white();
+    std::array<RGB, kCieRows> t;
+    for (int i = 0; i < kCieRows; ++i) {
+      const double x = row(i).x, y = row(i).y, z = row(i).z;
+      t[size_t(i)] = RGB(float((3.2404542 * x - 1.5371385 * y - 0.4985314 * z) * k / w.r),
+                         float((-0.9692660 * x + 1.8760108 * y + 0.0415560 * z) * k / w.g),
+                         float((0.0556434 * x - 0.2040259 * y + 1.0572252 * z) * k / w.b));
+    }
+    return t;
+  }();
+  const float x = (lambda_nm - kCieLambdaMin) / kCieLambdaStep;
+  if (!(x >= 0.f && x <= float(kCieRows - 1))) return RGB(0.f);
+  const int i = std::min(int(x), kCieRows - 2);
+  const float t = x - float(i);
+  return ((1.f - t) * rgb_rows[size_t(i)] + t * rgb_rows[size_t(i) + 1]) * value_over_pdf;
 }
 
 RGB sampled_to_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) {

@@ -130,20 +130,51 @@ bool Film::add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const 
     nonfinite_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
+  splat_rgb(s, rgb);
+  if (!buckets_.spectral()) return true;
   for (int r = 0; r < s.ny; ++r)
     for (int c = 0; c < s.nx; ++c) {
       const double w = double(s.wx[c]) * double(s.wy[r]);
-      const size_t i_px = index(s.first + IVec2(c, r));
-      Pixel& px = pixels_[i_px];
-      px.splat[0] += w * rgb.r;
-      px.splat[1] += w * rgb.g;
-      px.splat[2] += w * rgb.b;
-      if (!buckets_.spectral()) continue;
-      double* splats = &bucket_sums_[(i_px * 2 + 1) * size_t(buckets_.count)];
+      double* splats = &bucket_sums_[(index(s.first + IVec2(c, r)) * 2 + 1) * size_t(buckets_.count)];
       for (int i = 0; i < kSpectrumSamples; ++i)
         if (bucket[i] >= 0) splats[bucket[i]] += w * term[i];
     }
   return true;
+}
+
+void Film::splat_rgb(const WavelengthSplat& s, const RGB& rgb) {
+  for (int r = 0; r < s.ny; ++r) {
+    Pixel* row = &pixels_[index(s.first + IVec2(0, r))];
+    const double wy = double(s.wy[r]);
+    for (int c = 0; c < s.nx; ++c) {
+      const double w = double(s.wx[c]) * wy;
+      row[c].splat[0] += w * rgb.r;
+      row[c].splat[1] += w * rgb.g;
+      row[c].splat[2] += w * rgb.b;
+    }
+  }
+}
+
+void Film::add_wavelength_splats(const WavelengthSplat* splats, const SampledSpectrum& L,
+                                 const SampledWavelengths& lambda) {
+  const bool direct = !buckets_.spectral() && !response_.sensor && !response_.clamps();
+  const SampledSpectrum pdf = lambda.pdf();
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    if (splats[k].nx == 0 || L[k] == 0.f) continue;
+    if (!direct) {
+      SampledSpectrum one(0.f);
+      one[k] = L[k];
+      add_splats(splats[k], one, lambda);
+      continue;
+    }
+    if (pdf[k] == 0.f) continue;  // a terminated wavelength counts for nothing (sampled_to_xyz)
+    const RGB rgb = wavelength_to_rgb(lambda[k], L[k] / pdf[k]);
+    if (!is_finite(rgb)) {
+      nonfinite_.fetch_add(1, std::memory_order_relaxed);
+      continue;
+    }
+    splat_rgb(splats[k], rgb);
+  }
 }
 
 RGB Film::pixel_value(IVec2 p) const {

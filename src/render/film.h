@@ -159,6 +159,11 @@ class Film {
   // s.wx[c] * s.wy[r] (a dispersive eye's wavelength splatted with a smooth filter's weights):
   // the colour is formed (and clamped) once, for L.
   bool add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const SampledWavelengths& lambda);
+  // Every wavelength k of a sample over its own block splats[k] (nx 0: nowhere): add_splats of
+  // L[k] alone for each, the colour formed per wavelength (wavelength_to_rgb) when the film
+  // neither senses, clamps nor keeps buckets. A wavelength with a non-finite term is counted
+  // and dropped, the others kept.
+  void add_wavelength_splats(const WavelengthSplat* splats, const SampledSpectrum& L, const SampledWavelengths& lambda);
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;
@@ -206,6 +211,7 @@ class Film {
   };
   RGB sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
   SampledSpectrum clamped_radiance(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
+  void splat_rgb(const WavelengthSplat& s, const RGB& rgb);
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
   bool bucket_terms(const SampledSpectrum& L, const SampledWavelengths& lambda, float w, int* bucket,
                     double* term) const;

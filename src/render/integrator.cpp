@@ -132,14 +132,7 @@ class SampleBatch {
       // Every wavelength splats around where it landed (core/splatting_camera.h); the sample's
       // own pixel keeps its filter weight, which the splats are averaged by.
       film_.add_weight(pixels_[i], lambda, filter_weight, vs);
-      const float scale = std::abs(filter_weight);
-      for (int k = 0; k < kSpectrumSamples; ++k) {
-        const WavelengthSplat& s = splats_[i].wavelength[k];
-        if (s.nx == 0 || L[k] == 0.f) continue;
-        SampledSpectrum one(0.f);
-        one[k] = L[k] * scale;
-        film_.add_splats(s, one, lambda);
-      }
+      film_.add_wavelength_splats(splats_[i].wavelength, L * std::abs(filter_weight), lambda);
       return;
     }
     // Wavelengths a splatting camera sent to other pixels of the tile go there.

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/spectrum.h"
 
 namespace eyetrace {
@@ -64,6 +67,28 @@ TEST(SampledToXyz, ConvergesToTheCieIntegrals) {
     RGB rgb = xyz_to_linear_srgb(w);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.f, 1e-3f) << terminate << " " << c;
   }
+}
+
+// A dispersive eye's splat forms one wavelength's colour at a time (Film::add_wavelength_splats):
+// wavelength_to_rgb must be sampled_to_rgb of a spectrum zero at the other wavelengths, to float
+// rounding, over the whole sampled range and beyond the CIE table (where both are 0).
+TEST(WavelengthToRgb, IsSampledToRgbOfOneWavelength) {
+  int compared = 0;
+  for (int j = 0; j < 4000; ++j) {
+    const SampledWavelengths l = SampledWavelengths::sample_visible((j + 0.5f) / 4000.f);
+    const SampledSpectrum pdf = l.pdf();
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      SampledSpectrum one(0.f);
+      one[k] = 0.25f + 3.f * float(j % 7);
+      const RGB want = sampled_to_rgb(one, l), got = wavelength_to_rgb(l[k], one[k] / pdf[k]);
+      const float scale = std::max({std::abs(want.r), std::abs(want.g), std::abs(want.b)});
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 2e-6f * scale) << l[k] << " nm, channel " << c;
+      compared += scale > 0.f;
+    }
+  }
+  EXPECT_GT(compared, 12000);  // most of 360-830 nm is inside the table (380-780 nm)
+  EXPECT_EQ(wavelength_to_rgb(370.f, 1.f), RGB(0.f));
+  EXPECT_EQ(wavelength_to_rgb(800.f, 1.f), RGB(0.f));
 }
 
 }  // namespace

@@ -59,6 +59,74 @@ TEST(Film, AddWeightIsASampleOfZeroRadiance) {
   EXPECT_EQ(b.nonfinite_samples(), 1u);
 }
 
+// A sample's four wavelengths splatted over their own blocks at once
+// (Film::add_wavelength_splats) add what add_splats of each wavelength alone adds: to float
+// rounding of the colour with the default response, bit for bit with a spectral film (which takes
+// the general path); a non-finite wavelength is counted and dropped, the others kept.
+TEST(Film, AddWavelengthSplatsIsEachWavelengthAlone) {
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.41f);
+  WavelengthSplat s[kSpectrumSamples];
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    s[k].first = IVec2(k % 2, k / 3);
+    s[k].nx = 2 + k % 2;
+    s[k].ny = 2;
+    for (int i = 0; i < WavelengthSplat::kMaxSpan; ++i) {
+      s[k].wx[i] = 0.3f + 0.1f * float(i + k);
+      s[k].wy[i] = 0.9f - 0.2f * float(i);
+    }
+  }
+  s[2].nx = 0;  // counts nowhere
+  SampledSpectrum L;
+  for (int k = 0; k < kSpectrumSamples; ++k) L[k] = 0.5f + float(k);
+  for (bool spectral : {false, true}) {
+    for (bool nan : {false, true}) {
+      SampledSpectrum l = L;
+      if (nan) l[1] = std::nanf("");
+      const SpectralBuckets buckets{spectral ? 8 : 0};
+      const PixelBounds bounds{IVec2(0), IVec2(4, 3)};
+      Film a(IVec2(4, 3), bounds, std::make_unique<UnitBox>(), 1.f, buckets);
+      Film b(IVec2(4, 3), bounds, std::make_unique<UnitBox>(), 1.f, buckets);
+      a.add_wavelength_splats(s, l, lambda);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        if (s[k].nx == 0) continue;
+        SampledSpectrum one(0.f);
+        one[k] = l[k];
+        b.add_splats(s[k], one, lambda);
+      }
+      EXPECT_EQ(a.nonfinite_samples(), nan ? 1u : 0u);
+      EXPECT_EQ(b.nonfinite_samples(), a.nonfinite_samples());
+      const std::vector<double> sa = a.accumulators(), sb = b.accumulators();
+      ASSERT_EQ(sa.size(), sb.size());
+      // Each pixel's splat sums, by hand: wavelength k's colour times wx[column] wy[row].
+      std::vector<RGB> want(12, RGB(0.f));
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        if (s[k].nx == 0 || !std::isfinite(l[k])) continue;
+        SampledSpectrum one(0.f);
+        one[k] = l[k];
+        const RGB c = sampled_to_rgb(one, lambda);
+        for (int r = 0; r < s[k].ny; ++r)
+          for (int x = 0; x < s[k].nx; ++x)
+            want[size_t((s[k].first.y + r) * 4 + s[k].first.x + x)] += s[k].wx[x] * s[k].wy[r] * c;
+      }
+      for (int p = 0; p < 12; ++p) {
+        const RGB w = want[size_t(p)];
+        const double* acc = sa.data() + size_t(p) * a.accumulators_per_pixel();  // splat r, g, b at 4..6
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(acc[4 + c], w[c], 1e-5 * std::abs(w[c]) + 1e-9) << p << " " << c;
+      }
+      if (spectral) {
+        EXPECT_EQ(std::memcmp(sa.data(), sb.data(), sa.size() * sizeof(double)), 0) << nan;
+        continue;
+      }
+      int nonzero = 0;
+      for (size_t i = 0; i < sa.size(); ++i) {
+        EXPECT_NEAR(sa[i], sb[i], 1e-6 * std::abs(sb[i])) << i << " " << nan;
+        nonzero += sb[i] != 0.0;
+      }
+      EXPECT_GT(nonzero, 20) << nan;  // 11 pixels reached, three colour sums each
+    }
+  }
+}
+
 // pbrt-v4's maxcomponentvalue (RGBFilm::AddSample): a sample's sensor RGB times the imaging
 // ratio is scaled so that its largest component is the value. For the cie1931 sensor the sensor
 // RGB is XYZ. The film, with scale = imaging ratio 2 and maximum 1.5: a bright sample's pixel is
