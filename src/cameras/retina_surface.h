@@ -55,6 +55,7 @@ class RetinaPointTable {
         radius_(retina.curvature == 0.0 ? 0.0 : 1.0 / retina.curvature) {
     for (int i = 0; i <= nodes; ++i) {
       const double phi = retina.curvature * i / inv_step_;
+      node_.push_back(static_cast<double>(i) / inv_step_);
       sin_.push_back(std::sin(phi));
       cos_.push_back(std::cos(phi));
     }
@@ -68,7 +69,7 @@ class RetinaPointTable {
       return;
     }
     const size_t i = std::min(static_cast<size_t>(a * inv_step_ + 0.5), sin_.size() - 1);
-    const double delta = c * (a - static_cast<double>(i) / inv_step_), d2 = delta * delta;
+    const double delta = c * (a - node_[i]), d2 = delta * delta;
     const double sd = delta * (1.0 - d2 * (1.0 / 6.0) * (1.0 - d2 * (1.0 / 20.0)));
     const double cd = 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12.0));
     const double s = sin_[i] * cd + cos_[i] * sd, co = cos_[i] * cd - sin_[i] * sd;
@@ -79,8 +80,8 @@ class RetinaPointTable {
  private:
   RetinaSurface retina_;
   double inv_step_ = 0.0;
-  double radius_ = 0.0;  // 1 / curvature
-  std::vector<double> sin_, cos_;
+  double radius_ = 0.0;                   // 1 / curvature
+  std::vector<double> node_, sin_, cos_;  // node i's arc (i / inv_step_: a load, not a division)
 };
 
 }  // namespace eyetrace
