@@ -173,15 +173,21 @@ void BM_NavarroBatchedSpectralMis(benchmark::State& state) {
 }
 BENCHMARK(BM_NavarroBatchedSpectralMis);
 
-// The same with the batch trace on the baseline instruction set (SSE2) instead of the start-up
-// choice (AVX2 where the CPU has it): what a CPU without AVX2 gets.
-void BM_NavarroBatchedBaseline(benchmark::State& state) {
+// The same with the batch trace on the baseline instruction set (SSE2) or on AVX2 instead of
+// the start-up choice (the widest the CPU has): what a CPU without AVX2, or without AVX-512, gets.
+void navarro_batched_on(benchmark::State& state, optics::TraceBatchIsa isa) {
   const optics::TraceBatchIsa start = optics::trace_batch_isa();
-  optics::set_trace_batch_isa(optics::TraceBatchIsa::Baseline);
+  if (!optics::set_trace_batch_isa(isa)) {
+    state.SkipWithError("instruction set not available");
+    return;
+  }
   run_batched(state, *eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60"));
   optics::set_trace_batch_isa(start);
 }
+void BM_NavarroBatchedBaseline(benchmark::State& state) { navarro_batched_on(state, optics::TraceBatchIsa::Baseline); }
 BENCHMARK(BM_NavarroBatchedBaseline);
+void BM_NavarroBatchedAvx2(benchmark::State& state) { navarro_batched_on(state, optics::TraceBatchIsa::Avx2); }
+BENCHMARK(BM_NavarroBatchedAvx2);
 void BM_NavarroAstigmaticSpectaclesBatchedBaseline(benchmark::State& state) {
   const optics::TraceBatchIsa start = optics::trace_batch_isa();
   optics::set_trace_batch_isa(optics::TraceBatchIsa::Baseline);

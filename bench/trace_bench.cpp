@@ -120,12 +120,13 @@ void batch(benchmark::State& state, bool per_ray_wavelength) {
     i = (i + kTraceBatchSize) & (s.rays.size() - 1);
   }
   state.SetItemsProcessed(state.iterations() * kTraceBatchSize);
-  set_trace_batch_isa(TraceBatchIsa::Avx2) || set_trace_batch_isa(TraceBatchIsa::Baseline);
+  set_trace_batch_isa(TraceBatchIsa::Avx512) || set_trace_batch_isa(TraceBatchIsa::Avx2) ||
+      set_trace_batch_isa(TraceBatchIsa::Baseline);
 }
 void BM_TraceBatch(benchmark::State& state) { batch(state, false); }
-BENCHMARK(BM_TraceBatch)->Arg(0)->Arg(1);
+BENCHMARK(BM_TraceBatch)->Arg(0)->Arg(1)->Arg(2);
 void BM_TraceBatchWavelength(benchmark::State& state) { batch(state, true); }
-BENCHMARK(BM_TraceBatchWavelength)->Arg(0)->Arg(1);
+BENCHMARK(BM_TraceBatchWavelength)->Arg(0)->Arg(1)->Arg(2);
 
 const Setup& astigmatic(int placed) {
   static const Setup toric("navarro", 0), toric_placed("navarro", 1);

@@ -43,7 +43,9 @@ struct BlockJob {
 // and, on x86-64, for AVX2 (trace_kernel_avx2.cpp).
 void trace_block_baseline(const BlockJob& job, Block& block);
 void trace_block_avx2(const BlockJob& job, Block& block);
-bool avx2_compiled();  // trace_block_avx2 exists (x86-64 with a compiler that targets AVX2)
+void trace_block_avx512(const BlockJob& job, Block& block);
+bool avx2_compiled();    // trace_block_avx2 exists (x86-64 with a compiler that targets AVX2)
+bool avx512_compiled();  // trace_block_avx512 exists (the same for AVX-512F)
 // Surface `index`, which has a phase plate, lane by lane (placed_kernel.h steps a plate at
 // V = double only); compiled once, in the baseline build (sequential_trace.cpp), so no AVX2
 // copy of the plate's inline helpers exists.

@@ -176,38 +176,62 @@ void plate_surface_lanes(const BlockJob& job, int index, Block& block) {
 
 namespace {
 
-// AVX2 where the CPU has it and the library was built with it, else the baseline.
-// docs/performance.md has the measurement behind the choice.
+// The batch tracer of each instruction set, where the CPU has it and the library was built
+// with it. docs/performance.md has the measurements behind the start-up choice.
 using BlockTracer = void (*)(const kernel::BlockJob&, kernel::Block&);
-bool avx2_available() {
+bool isa_available(TraceBatchIsa isa) {
+  if (isa == TraceBatchIsa::Baseline) return true;
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
   __builtin_cpu_init();  // may run before libgcc's own initialisation (a static initialiser)
-  return kernel::avx2_compiled() && __builtin_cpu_supports("avx2");
+  if (isa == TraceBatchIsa::Avx2) return kernel::avx2_compiled() && __builtin_cpu_supports("avx2");
+  return kernel::avx512_compiled() && __builtin_cpu_supports("avx512f");
 #else
   return false;
 #endif
 }
+BlockTracer tracer_of(TraceBatchIsa isa) {
+  switch (isa) {
+    case TraceBatchIsa::Avx2: return kernel::trace_block_avx2;
+    case TraceBatchIsa::Avx512: return kernel::trace_block_avx512;
+    case TraceBatchIsa::Baseline: break;
+  }
+  return kernel::trace_block_baseline;
+}
+// The widest the CPU has: each is faster than the one before on this machine (AMD EPYC, Zen 4).
+TraceBatchIsa startup_isa() {
+  for (TraceBatchIsa isa : {TraceBatchIsa::Avx512, TraceBatchIsa::Avx2})
+    if (isa_available(isa)) return isa;
+  return TraceBatchIsa::Baseline;
+}
 // Initialised on first use (a static initialiser elsewhere may trace before this file's run).
 std::atomic<BlockTracer>& block_tracer() {
-  static std::atomic<BlockTracer> tracer{avx2_available() ? kernel::trace_block_avx2 : kernel::trace_block_baseline};
+  static std::atomic<BlockTracer> tracer{tracer_of(startup_isa())};
   return tracer;
 }
 
 }  // namespace
 
 TraceBatchIsa trace_batch_isa() {
-  return block_tracer().load(std::memory_order_relaxed) == kernel::trace_block_avx2 ? TraceBatchIsa::Avx2
-                                                                                    : TraceBatchIsa::Baseline;
+  const BlockTracer t = block_tracer().load(std::memory_order_relaxed);
+  for (TraceBatchIsa isa : {TraceBatchIsa::Avx512, TraceBatchIsa::Avx2})
+    if (t == tracer_of(isa)) return isa;
+  return TraceBatchIsa::Baseline;
 }
 
 bool set_trace_batch_isa(TraceBatchIsa isa) {
-  if (isa == TraceBatchIsa::Avx2 && !avx2_available()) return false;
-  block_tracer().store(isa == TraceBatchIsa::Avx2 ? kernel::trace_block_avx2 : kernel::trace_block_baseline,
-                       std::memory_order_relaxed);
+  if (!isa_available(isa)) return false;
+  block_tracer().store(tracer_of(isa), std::memory_order_relaxed);
   return true;
 }
 
-const char* to_string(TraceBatchIsa isa) { return isa == TraceBatchIsa::Avx2 ? "avx2" : "baseline"; }
+const char* to_string(TraceBatchIsa isa) {
+  switch (isa) {
+    case TraceBatchIsa::Avx2: return "avx2";
+    case TraceBatchIsa::Avx512: return "avx512";
+    case TraceBatchIsa::Baseline: break;
+  }
+  return "baseline";
+}
 
 void CompiledSystem::trace_range_batch(const Ray* rays, const double* lambda_nm, TraceResult* results,
                                        std::size_t count, int first, int last) const {

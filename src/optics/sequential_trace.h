@@ -56,11 +56,11 @@ struct TraceResult {
 // that gather rays for trace_range_batch gather this many (any count is accepted).
 inline constexpr std::size_t kTraceBatchSize = 16;
 
-// The instruction set the batch trace runs on: AVX2 (4 rays a register) where the CPU has it
-// and the build targets it, else the baseline (SSE2 on x86-64, 2 rays a register); chosen at
-// start-up. The results are the same bits on either. Tests and benchmarks may switch;
+// The instruction set the batch trace runs on: AVX-512F (8 rays a register) or AVX2 (4) where
+// the CPU has it and the build targets it, else the baseline (SSE2 on x86-64, 2 rays a
+// register); the widest is chosen at start-up. The results are the same bits on each. Tests and benchmarks may switch;
 // set_trace_batch_isa returns false (and changes nothing) when the CPU or build lacks the set.
-enum class TraceBatchIsa { Baseline, Avx2 };
+enum class TraceBatchIsa { Baseline, Avx2, Avx512 };
 TraceBatchIsa trace_batch_isa();
 bool set_trace_batch_isa(TraceBatchIsa isa);
 const char* to_string(TraceBatchIsa isa);

@@ -1,5 +1,5 @@
-// The instruction sets the batch trace can run on here (the baseline always, AVX2 where the CPU
-// has it); the start-up choice is restored on leaving. For tests that compare the batch trace
+// The instruction sets the batch trace can run on here (the baseline always, AVX2 and AVX-512
+// where the CPU has them); the start-up choice is restored on leaving. For tests that compare the batch trace
 // with the one-ray trace on every instruction set.
 #pragma once
 #include <vector>
@@ -12,7 +12,8 @@ struct EachIsa {
   optics::TraceBatchIsa start = optics::trace_batch_isa();
   std::vector<optics::TraceBatchIsa> isas;
   EachIsa() {
-    for (optics::TraceBatchIsa isa : {optics::TraceBatchIsa::Baseline, optics::TraceBatchIsa::Avx2})
+    for (optics::TraceBatchIsa isa :
+         {optics::TraceBatchIsa::Baseline, optics::TraceBatchIsa::Avx2, optics::TraceBatchIsa::Avx512})
       if (optics::set_trace_batch_isa(isa)) isas.push_back(isa);
     optics::set_trace_batch_isa(start);
   }
