@@ -149,8 +149,9 @@ LensSystemCamera::WavelengthTerms LensSystemCamera::secondary_terms(const Camera
   const double h = std::sqrt(x.x * x.x + x.y * x.y);
   if (retina_.curvature != 0.0 && !(h * std::abs(retina_.curvature) < 1.0)) return {};
   const double a = retina_.arc_for_height(h);
-  if (!(a <= pupil_.max_arc_mm()) || !(dir.z > 0.0)) return {};                            // beyond the camera's retina
-  const glm::dvec2 m = h > 0.0 ? glm::dvec2(x.x, x.y) * (1.0 / h) : glm::dvec2(1.0, 0.0);  // one division
+  if (!(a <= pupil_.max_arc_mm()) || !(dir.z > 0.0)) return {};  // beyond the camera's retina
+  // The meridian through x, by one division.
+  const glm::dvec2 m = h > 0.0 ? glm::dvec2(x.x, x.y) * (1.0 / h) : glm::dvec2(1.0, 0.0);
   double slope = 0.0;
   const double rho = mapping_.screen_radius_for_arc(a, angles_, &slope);
   if (rho < 0.0) return {};

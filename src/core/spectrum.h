@@ -90,8 +90,9 @@ Vec3 sampled_to_xyz(const SampledSpectrum& L, const SampledWavelengths& lambda);
 RGB xyz_to_linear_srgb(const Vec3& xyz);
 RGB sampled_to_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda);
 // sampled_to_rgb of a spectrum that is `value_over_pdf` times the density at one of a sample's
-// wavelengths and 0 at the others, within float rounding: the scale and the white folded into
-// one matrix (a dispersive eye's splats form one colour per wavelength).
+// wavelengths and 0 at the others, within float rounding: from a table of the CIE rows taken to
+// linear sRGB once, scale and white folded in (a dispersive eye's splats form one colour per
+// wavelength).
 RGB wavelength_to_rgb(float lambda_nm, float value_over_pdf);
 
 // A spectrum sampled at the CIE table's wavelengths (380..780 nm every 5 nm), for exact sums.

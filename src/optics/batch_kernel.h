@@ -5,8 +5,8 @@
 // (V = double). Each lane does the one-ray trace's arithmetic (CompiledSystem::trace_one), so it
 // ends with its bits.
 //
-// Internal to the optics library: included by sequential_trace.cpp and trace_kernel_avx2.cpp
-// (the same code compiled for AVX2, chosen at run time).
+// Internal to the optics library: included by sequential_trace.cpp, trace_kernel_avx2.cpp and
+// trace_kernel_avx512.cpp (the same code compiled for AVX2 and AVX-512F, chosen at run time).
 #pragma once
 
 #include <array>
@@ -40,7 +40,7 @@ struct BlockJob {
 
 // Traces a block through surfaces first..last (lanes not Ok at the start stay as they are).
 // The same template (below) compiled for the baseline instruction set (sequential_trace.cpp)
-// and, on x86-64, for AVX2 (trace_kernel_avx2.cpp).
+// and, on x86-64, for AVX2 (trace_kernel_avx2.cpp) and AVX-512F (trace_kernel_avx512.cpp).
 void trace_block_baseline(const BlockJob& job, Block& block);
 void trace_block_avx2(const BlockJob& job, Block& block);
 void trace_block_avx512(const BlockJob& job, Block& block);

@@ -58,8 +58,9 @@ inline constexpr std::size_t kTraceBatchSize = 16;
 
 // The instruction set the batch trace runs on: AVX-512F (8 rays a register) or AVX2 (4) where
 // the CPU has it and the build targets it, else the baseline (SSE2 on x86-64, 2 rays a
-// register); the widest is chosen at start-up. The results are the same bits on each. Tests and benchmarks may switch;
-// set_trace_batch_isa returns false (and changes nothing) when the CPU or build lacks the set.
+// register); the widest is chosen at start-up. The results are the same bits on each. Tests
+// and benchmarks may switch; set_trace_batch_isa returns false (and changes nothing) when the
+// CPU or build lacks the set.
 enum class TraceBatchIsa { Baseline, Avx2, Avx512 };
 TraceBatchIsa trace_batch_isa();
 bool set_trace_batch_isa(TraceBatchIsa isa);
