@@ -14,12 +14,21 @@ const CieRow& row(int i) { return cie_table()[i]; }
 // D65 divided by its luminance (core/cie_tables.h).
 const SpectrumSamples& white_samples() { return kCieWhite; }
 
+// The CIE rows i, i + 1 around lambda and the fraction t between them; false outside
+// [380, 780] nm (every table sampled at the rows is 0 there).
+bool cie_segment(float lambda, int* i, float* t) {
+  const float x = (lambda - kCieLambdaMin) / kCieLambdaStep;
+  if (!(x >= 0.f && x <= float(kCieRows - 1))) return false;
+  *i = std::min(int(x), kCieRows - 2);
+  *t = x - float(*i);
+  return true;
+}
+
 // Linear interpolation in a table sampled at the CIE rows; 0 outside [380, 780] nm.
 float cie_interpolate(const SpectrumSamples& s, float lambda) {
-  const float x = (lambda - kCieLambdaMin) / kCieLambdaStep;
-  if (!(x >= 0.f && x <= float(kCieRows - 1))) return 0.f;
-  const int i = std::min(int(x), kCieRows - 2);
-  const float t = x - float(i);
+  int i;
+  float t;
+  if (!cie_segment(lambda, &i, &t)) return 0.f;
   return (1.f - t) * s[i] + t * s[i + 1];
 }
 
@@ -122,10 +131,9 @@ RGB Spectrum::to_rgb(SpectrumType type) const {
 // --- Colorimetry ---------------------------------------------------------------------------
 
 Vec3 cie_xyz_bar(float lambda) {
-  const float x = (lambda - kCieLambdaMin) / kCieLambdaStep;
-  if (!(x >= 0.f && x <= float(kCieRows - 1))) return Vec3(0.f);
-  const int i = std::min(int(x), kCieRows - 2);
-  const float t = x - float(i);
+  int i;
+  float t;
+  if (!cie_segment(lambda, &i, &t)) return Vec3(0.f);
   const CieRow &a = row(i), &b = row(i + 1);
   return Vec3((1.f - t) * a.x + t * b.x, (1.f - t) * a.y + t * b.y, (1.f - t) * a.z + t * b.z);
 }
@@ -169,25 +177,18 @@ const RGB& srgb_white() {
 RGB xyz_to_linear_srgb(const Vec3& xyz) { return xyz_to_srgb_matrix(xyz) / srgb_white(); }
 
 RGB wavelength_to_rgb(float lambda_nm, float value_over_pdf) {
-  // The colour matching functions' rows taken to linear sRGB once: the matrix's row r times
-  // 1 / (white_r N integral of y-bar), as sampled_to_xyz and xyz_to_linear_srgb divide. The
-  // interpolation between rows commutes with that linear map, so this is cie_xyz_bar's.
+  // The colour matching functions' rows taken to linear sRGB once, with sampled_to_xyz's
+  // 1 / (N integral of y-bar) and xyz_to_linear_srgb's white. The interpolation between rows
+  // commutes with that linear map, so this is cie_xyz_bar's.
   static const std::array<RGB, kCieRows> rgb_rows = [] {
-    const double k = 1.0 / (double(kSpectrumSamples) * cie_y_integral());
-    const RGB w = srgb_white();
-    std::array<RGB, kCieRows> t;
-    for (int i = 0; i < kCieRows; ++i) {
-      const double x = row(i).x, y = row(i).y, z = row(i).z;
-      t[size_t(i)] = RGB(float((3.2404542 * x - 1.5371385 * y - 0.4985314 * z) * k / w.r),
-                         float((-0.9692660 * x + 1.8760108 * y + 0.0415560 * z) * k / w.g),
-                         float((0.0556434 * x - 0.2040259 * y + 1.0572252 * z) * k / w.b));
-    }
-    return t;
+    const float k = 1.f / (float(kSpectrumSamples) * cie_y_integral());
+    std::array<RGB, kCieRows> rows;
+    for (int i = 0; i < kCieRows; ++i) rows[size_t(i)] = xyz_to_linear_srgb(Vec3(row(i).x, row(i).y, row(i).z) * k);
+    return rows;
   }();
-  const float x = (lambda_nm - kCieLambdaMin) / kCieLambdaStep;
-  if (!(x >= 0.f && x <= float(kCieRows - 1))) return RGB(0.f);
-  const int i = std::min(int(x), kCieRows - 2);
-  const float t = x - float(i);
+  int i;
+  float t;
+  if (!cie_segment(lambda_nm, &i, &t)) return RGB(0.f);
   return ((1.f - t) * rgb_rows[size_t(i)] + t * rgb_rows[size_t(i) + 1]) * value_over_pdf;
 }
 
