@@ -22,6 +22,7 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 constexpr int kSize = 48;  // pixels; the 3 degree field gives 3.75 arcmin a pixel

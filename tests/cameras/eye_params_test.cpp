@@ -15,6 +15,7 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 // Runs the factory of `camera` on the directive's parameters; returns the error message ("" if

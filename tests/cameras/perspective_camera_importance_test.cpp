@@ -9,6 +9,7 @@
 #include "cameras/perspective_camera.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 constexpr float kTwoPi = 6.28318530718f;

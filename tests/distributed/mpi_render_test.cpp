@@ -24,6 +24,7 @@
 #include "render/image_io.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 namespace fs = std::filesystem;

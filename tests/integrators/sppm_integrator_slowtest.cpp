@@ -13,6 +13,7 @@
 #include "../support/masked_renders.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 using test::masked;

@@ -12,6 +12,7 @@
 #include "integrators/sppm_integrator.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 std::string emitting_sphere(const std::string& integrator, const std::string& extra = "") {

@@ -25,6 +25,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 using test::ball;

@@ -14,6 +14,7 @@
 #include "light_test_util.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 RGB slide_pixel(int x, int y) {

@@ -15,6 +15,7 @@
 #include "textures/constant_texture.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 SampledWavelengths g_lambda = test::wavelengths();

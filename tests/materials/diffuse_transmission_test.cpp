@@ -10,6 +10,7 @@
 #include "../support/render_text.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 struct Mean {

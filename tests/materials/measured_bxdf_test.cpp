@@ -25,6 +25,7 @@
 #include "materials/measured_bxdf.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 constexpr double kAlpha = 0.5, kF0a = 0.25, kF0b = 0.6;

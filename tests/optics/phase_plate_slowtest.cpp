@@ -21,6 +21,7 @@
 #include "optics/wavefront.h"
 
 namespace eyetrace::optics {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 Prescription random_measured_eye(std::mt19937_64& rng, double& iris_mm) {

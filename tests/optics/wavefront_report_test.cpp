@@ -16,6 +16,7 @@
 #include "optics/wavefront.h"
 
 namespace eyetrace::optics {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 Prescription navarro() {

@@ -35,6 +35,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 constexpr double kPupil_mm = 2.0;

@@ -21,6 +21,7 @@
 #include "../support/unit_box_filter.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 // 40x24 pixels: 3x2 tiles, the right and bottom ones partial. "{}": the camera, film and

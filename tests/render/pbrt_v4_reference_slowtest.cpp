@@ -50,6 +50,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 const std::string kDataDir = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/";

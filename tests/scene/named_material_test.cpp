@@ -13,6 +13,7 @@
 #include "core/error.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 using test::channel_mean;

@@ -12,6 +12,7 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 namespace fs = std::filesystem;

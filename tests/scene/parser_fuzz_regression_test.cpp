@@ -8,6 +8,7 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 std::string parse_error(const std::string& text) {

@@ -11,6 +11,7 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 using test::TempDir;

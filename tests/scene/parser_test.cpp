@@ -14,6 +14,7 @@
 #include "scene/tokenizer.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 namespace fs = std::filesystem;

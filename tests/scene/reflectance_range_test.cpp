@@ -11,6 +11,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 // A diffuse sphere filling the view in a uniform white environment reflects exactly its

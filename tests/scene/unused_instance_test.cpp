@@ -8,6 +8,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 // The object's sphere has a negative radius, an error whenever the sphere is built: building

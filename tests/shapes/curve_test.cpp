@@ -17,6 +17,7 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 using test::expect_near;

@@ -13,6 +13,7 @@
 #include "render/scene.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 std::unique_ptr<Shape> make_cylinder(std::vector<std::pair<std::string, double>> floats,

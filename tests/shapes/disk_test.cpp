@@ -11,6 +11,7 @@
 #include "render/scene.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),

@@ -15,6 +15,7 @@
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 Param param(const std::string& type, const std::string& name, std::vector<double> numbers) {

@@ -15,6 +15,7 @@
 #include "render/scene.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include "render/scene.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) {

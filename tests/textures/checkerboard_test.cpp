@@ -10,6 +10,7 @@
 #include "textures/checkerboard_texture.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 constexpr auto number = test::number_param;

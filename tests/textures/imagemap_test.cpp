@@ -19,6 +19,7 @@
 #include "textures/imagemap_texture.h"
 
 namespace eyetrace {
+// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
 
 namespace fs = std::filesystem;
