@@ -22,7 +22,7 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
+// unity-build: alone (its own kPi would make core/constants.h's ambiguous in the files after it)
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
