@@ -14,6 +14,7 @@
 #include <random>
 
 #include "../support/chi2.h"
+#include "../support/sample_count.h"
 #include "core/arena.h"
 #include "materials/coated_conductor_bxdf.h"
 #include "materials/coated_diffuse_bxdf.h"
@@ -155,7 +156,7 @@ TEST_P(BsdfProperties, DirectionalAlbedoIsAtMostOne) {
   const BSDF* b = bsdf();
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u01(0.f, kOneMinusEpsilon);
-  const int n = 100000;
+  const int n = test::sample_count(100000);
   for (bool below : {false, true})
     for (float theta : {0.f, 30.f, 60.f, 80.f, 88.f}) {
       Vec3 wo = direction(theta, 0.7f, below);
@@ -206,7 +207,7 @@ TEST_P(BsdfProperties, SampledDirectionsFollowPdf) {
   const BSDF* b = bsdf();
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u01(0.f, kOneMinusEpsilon);
-  const int n = 200000;
+  const int n = test::sample_count(200000);
   for (float theta : {25.f, 65.f}) {
     Vec3 wo = direction(theta, 0.4f);
     // Cells in (cos theta, phi): solid angle is dcos dphi, so the density is pdf() itself.
