@@ -112,10 +112,10 @@ TEST(SppmIntegrator, RadiusShrinksByThePublishedRule) {
 }
 
 TEST(SppmIntegrator, SameSeedSameImageForOneAndTwoThreads) {
-  const std::string text = emitting_sphere(std::string(kSppm) + " \"integer seed\" 3");
+  const std::string text = emitting_sphere(fmt::format("{} \"integer seed\" 3", kSppm));
   const Image one = render(text, 1).image, two = render(text, 2).image;
   EXPECT_TRUE(one.pixels == two.pixels) << "images differ between 1 and 2 threads";
-  const Image other = render(emitting_sphere(std::string(kSppm) + " \"integer seed\" 4"), 2).image;
+  const Image other = render(emitting_sphere(fmt::format("{} \"integer seed\" 4", kSppm)), 2).image;
   EXPECT_FALSE(one.pixels == other.pixels) << "the photons' seed has no effect";
 }
 

@@ -100,7 +100,7 @@ Integrator "path" "integer maxdepth" 1
 )";
 
 TEST(MotionBlurRender, SlidingSphereSmearsByTheFractionOfTimeItCoversEachPixel) {
-  const std::string text = std::string(kSkyCamera) + R"(WorldBegin
+  const std::string text = fmt::format("{}{}", kSkyCamera, R"(WorldBegin
 LightSource "infinite" "rgb L" [1 1 1]
 Material "diffuse" "rgb reflectance" [0 0 0]
 Translate -1.2 0 5
@@ -108,7 +108,7 @@ ActiveTransform EndTime
 Translate 2.4 0 0
 ActiveTransform All
 Shape "sphere" "float radius" 0.5
-)";
+)");
   expect_smear(render(text, 1), 256, 20.f, [](Vec3 d, float t) {
     const Vec3 c(-1.2f + 2.4f * t, 0.f, 5.f);
     // The ray from the origin along d meets the sphere iff its distance from c is under r.
