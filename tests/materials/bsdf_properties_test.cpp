@@ -224,7 +224,7 @@ TEST_P(BsdfProperties, SampledDirectionsFollowPdf) {
       grid.add(std::clamp(double(s->wi.z), -1.0, 1.0), phi);
     }
     auto density = [&](double c, double phi) { return double(b->pdf(wo, from_cos_phi(c, phi))); };
-    std::vector<double> expected = chi2::expected_per_cell(grid, density, n, test::kChi2Subcells);
+    std::vector<double> expected = chi2::expected_per_cell(grid, density, n, test::kChi2Panels);
     std::vector<double> observed = grid.counts;
     double in_grid = 0.0;
     for (double e : expected) in_grid += e;

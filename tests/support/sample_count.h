@@ -29,6 +29,6 @@ constexpr int sample_count(int n) { return n / kSampleDivisor > 0 ? n / kSampleD
 // tolerates grows with 1 / sqrt(count), about 3 times for a tenth of the samples. Measured on
 // BsdfProperties' 30 chi-square tests with 20000 samples and 6 panels: all pass, the smallest
 // p-value 0.034 (the smallest of 30 uniform p-values is below that two times in three).
-inline constexpr int kChi2Subcells = kSampleDivisor == 1 ? 12 : 6;
+inline constexpr int kChi2Panels = kSampleDivisor == 1 ? 12 : 6;
 
 }  // namespace eyetrace::test
