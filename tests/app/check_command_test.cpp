@@ -9,9 +9,11 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::run_eyetrace;
 using test::RunResult;
@@ -333,5 +335,6 @@ TEST(CheckCommand, ImportsOnTasksListTheSameDiagnosticsEveryRun) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

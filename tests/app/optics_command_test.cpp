@@ -10,11 +10,13 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "optics/prescription_io.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::run_eyetrace;
 
@@ -307,5 +309,6 @@ TEST(OpticsCommand, PrescriptionFileWithAToricCornea) {
   EXPECT_NE(both.output.find("give --camera or --prescription, not both"), std::string::npos) << both.output;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

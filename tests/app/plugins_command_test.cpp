@@ -7,10 +7,12 @@
 #include <string>
 
 #include "../support/eyetrace_process.h"
+#include "../support/unity_id.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::run_eyetrace;
 
@@ -36,5 +38,6 @@ TEST(PluginsCommand, MarkdownOfADirectiveAndErrors) {
   EXPECT_EQ(run_eyetrace("plugins --markdown Nonsense").status, 1);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

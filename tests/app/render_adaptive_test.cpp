@@ -14,10 +14,12 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::read_text;
@@ -132,5 +134,6 @@ TEST(RenderAdaptive, StatsAndSppImageAgree) {
   EXPECT_EQ(j["adaptive"]["target_error"].get<double>(), 0.15);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -18,11 +18,12 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -125,5 +126,6 @@ TEST(RenderInterrupt, ResumeRefusesMissingOrMismatchedState) {
   EXPECT_EQ(read_text(out + ".state"), state) << "a refused resume must not touch the state";
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

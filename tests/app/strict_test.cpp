@@ -8,9 +8,11 @@
 #include <string>
 
 #include "../support/eyetrace_process.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -67,5 +69,6 @@ TEST(CommandLine, BadOptionsExitTwo) {
   EXPECT_NE(r.output.find("--resolution: \"0x3\": expected WxH"), std::string::npos) << r.output;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -16,11 +16,12 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::read_text;
@@ -203,5 +204,6 @@ TEST(Sweep, AnInterruptedSweepLeavesNoHalfWrittenFileAndARerunFinishesIt) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "../support/unity_id.h"
 #include "cameras/lens_system_camera.h"
 #include "cameras/perspective_camera.h"
 #include "core/error.h"
@@ -19,6 +20,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const IVec2 kResolution(64, 64);
 
@@ -179,5 +181,6 @@ TEST(CameraDiffraction, CamerasWithoutAWavePsfRejectTheParameter) {
   expect_error_naming_diffraction("realistic", "\"string lensfile\" \"any.dat\"");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

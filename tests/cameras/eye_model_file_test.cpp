@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/embedded_data.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -102,5 +104,6 @@ TEST(EyeModelFile, MalformedFilesAreErrorsNamingFileAndField) {
   fs::remove(path);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -12,11 +12,13 @@
 
 #include <fmt/format.h>
 
+#include "../support/unity_id.h"
 #include "cameras/lens_system_camera.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(EyeParamsPrescriptionSlow, TwoMillionSamplesThroughCorrectedEyesAreFiniteAndReal) {
   std::mt19937 rng(16);
@@ -82,5 +84,6 @@ TEST(EyeParamsPrescriptionSlow, TwoMillionSamplesThroughCorrectedEyesAreFiniteAn
   EXPECT_LT(reverse_failures, reversed / 1000 + 1);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

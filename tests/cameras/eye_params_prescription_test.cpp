@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "cameras/eye_params.h"
 #include "cameras/lens_system_camera.h"
 #include "optics/report.h"
@@ -17,6 +18,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string error_of(const std::string& directive) {
   try {
@@ -157,5 +159,6 @@ TEST(EyeParamsPrescription, BadValuesNameTheParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -18,12 +18,13 @@
 #include <cmath>
 #include <random>
 
+#include "../support/unity_id.h"
 #include "cameras/lens_system_camera.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr int kSize = 48;  // pixels; the 3 degree field gives 3.75 arcmin a pixel
 constexpr int kRows = 16;  // the middle rows averaged
@@ -96,5 +97,6 @@ TEST(EyeParamsRender, CorrectedMyopeIsAsSharpAsTheEmmetrope) {
   EXPECT_GT(myope.mean, 3.0 * emmetrope.mean);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,6 +1,7 @@
 // Camera directive parameters of the eye and realistic cameras: what each does to the
 // prescription, and the messages bad values give (they must name the parameter).
 #include "cameras/eye_params.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,8 @@
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Runs the factory of `camera` on the directive's parameters; returns the error message ("" if
 // none).
@@ -192,5 +193,6 @@ TEST(EyeParams, OnlyLensCamerasHaveAPrescription) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "../support/unity_id.h"
 #include "cameras/lens_system_camera.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
@@ -16,6 +17,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Counts {
   long samples = 0, rays = 0, reversed = 0, reverse_failures = 0;
@@ -150,5 +152,6 @@ TEST(LensSystemCameraSlow, NonSymmetricEyesGiveFiniteBoundedRealRays) {
   EXPECT_LT(counts.reverse_failures, counts.reversed / 1000 + 1);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // integration, geometry (axis, symmetry, upright image), focus against paraxial optics and the
 // thin-lens camera, determinism.
 #include "cameras/lens_system_camera.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Monochromatic at 589.3 nm unless the test names a wavelength: these tests check geometry
 // (focus, mapping, reversibility) at the reference wavelength; dispersion is tested apart.
@@ -389,11 +391,13 @@ TEST(LensSystemCamera, MovingEyeIsPlacedAtTheSampleTime) {
   EXPECT_EQ(r->ray.time, 0.25f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // generate_rays (the batch path the integrator takes) must equal generate_ray sample by
 // sample, bit for bit, lost rays included, for every eye model and a batch size that is not a
@@ -470,5 +474,6 @@ TEST(LensSystemCamera, BatchGenerationEqualsSingleWithSpectralMis) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,6 +3,7 @@
 // point of the plane of focus, from the lens disc at the origin), the shutter, and the
 // parameters' errors.
 #include "cameras/orthographic_camera.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param number_param(const std::string& type, const std::string& name, std::vector<double> v) {
   Param p;
@@ -127,5 +129,6 @@ TEST(OrthographicCamera, BadParametersAreErrorsNamingTheParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

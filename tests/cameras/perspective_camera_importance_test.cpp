@@ -6,11 +6,12 @@
 #include <cmath>
 #include <random>
 
+#include "../support/unity_id.h"
 #include "cameras/perspective_camera.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr float kTwoPi = 6.28318530718f;
 
@@ -151,5 +152,6 @@ TEST(PerspectiveCameraImportance, FilmPointsRoundTripThroughSampleWi) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

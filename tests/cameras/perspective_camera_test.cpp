@@ -1,5 +1,6 @@
 // Pinhole and thin-lens cameras against analytic projections.
 #include "cameras/perspective_camera.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // World point hit by the ray through a pixel centre, on the plane z = depth in front of a
 // camera at the origin looking down +z; compared with the analytic perspective projection.
@@ -115,5 +117,6 @@ TEST(PinholeCamera, RejectsLensRadius) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

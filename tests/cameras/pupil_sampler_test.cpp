@@ -1,6 +1,7 @@
 // The eye camera's pupil sampling: useful-ray fraction, containment of every passing ray (a
 // dense brute-force search of the sampling plane), uniform density over the stated area.
 #include "cameras/pupil_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<LensSystemCamera> make_eye(const std::string& params, IVec2 res = IVec2(256, 256)) {
   SceneEntity e = parse_directive_text("Camera \"eye\" " + params, "Camera", "test");
@@ -329,5 +331,6 @@ TEST(PupilSampler, ContainsIsThePolygonsCrossingNumberTest) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // the ray from a pixel's retina point through the centre of the stop leaves the eye at the
 // pixel's field angle ("angle"), and "flat"/"retina" are linear in height/arc length.
 #include "cameras/retina_mapping.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kDeg = kRadiansPerDegree;
 
@@ -166,5 +168,6 @@ TEST(RetinaMapping, UnreachableFovIsAnErrorForFlatMapping) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

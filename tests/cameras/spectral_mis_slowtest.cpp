@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "../support/unity_id.h"
 #include "cameras/lens_system_camera.h"
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<LensSystemCamera> dispersive_eye(const std::string& params, IVec2 res) {
   SceneEntity e = parse_directive_text("Camera \"navarro\" " + params, "Camera", "test");
@@ -289,5 +291,6 @@ TEST(SpectralMis, NonDispersiveWeightsAreUniform) {
   for (int k = 1; k < kSpectrumSamples; ++k) EXPECT_EQ(r->weight[k], r->weight[0]);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,6 +3,7 @@
 // equirectangular top row), their inverses at random points, the equal-area property, the
 // continuation across the equal-area square's edges, the shutter, and the parameters.
 #include "cameras/spherical_camera.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kPiD = std::numbers::pi;
 
@@ -176,5 +178,6 @@ TEST(SphericalCamera, UnknownMappingIsAnErrorAndLensParametersWarn) {
   EXPECT_EQ(warning_count(), before + 2);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

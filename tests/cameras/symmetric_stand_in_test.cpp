@@ -5,6 +5,7 @@
 // astigmatic eye blurs lines of one orientation only, by the amount geometric optics gives,
 // and the systems the envelope cannot bound are refused by name.
 #include "cameras/symmetric_stand_in.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kArcminPerRad = 60.0 * 180.0 / kPiDouble;
 
@@ -268,5 +270,6 @@ TEST(SymmetricStandIn, RefusesWhatTheEnvelopeCannotBound) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

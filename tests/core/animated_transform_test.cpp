@@ -3,6 +3,7 @@
 // rules for times outside [start, end] (util/transform.cpp, AnimatedTransform::Interpolate),
 // and the Embree keyframes rebuilt here from Embree's documented formula M = T R S.
 #include "core/animated_transform.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 void expect_matrix_near(const Mat4& got, const Mat4& want, float tol = 2e-5f) {
   for (int c = 0; c < 4; ++c)
@@ -126,5 +128,6 @@ TEST(AnimatedTransform, RefusesAMotionThatUnmirrors) {
   EXPECT_THROW(AnimatedTransform(Transform(), 0.f, perspective(60, 0.1f, 10.f), 1.f), std::domain_error);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,10 +5,12 @@
 
 #include <random>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Diagnostic error_at(int line) { return Diagnostic{SourceLoc{"f.pbrt", line, 1}, "", Severity::Error, "e"}; }
 
@@ -86,5 +88,6 @@ TEST(WarningCapture, FatalWarningsStillThrow) {
   EXPECT_TRUE(held.empty());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,6 +1,7 @@
 // gunzip against bytes made by GNU gzip (`printf 'hello\n' | gzip -n`), and its refusals:
 // a truncated stream, corrupt data, bytes after the end, and output beyond the limit.
 #include "core/gzip.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // `printf 'hello\n' | gzip -n | xxd -i` (GNU gzip 1.12): header, deflate data, CRC-32 and length.
 const unsigned char kHelloGz[] = {0x1f, 0x8b, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x03, 0xcb, 0x48, 0xcd,
@@ -71,5 +73,6 @@ TEST(Gzip, OutputBeyondTheLimitIsRefused) {
   EXPECT_TRUE(gunzip(hello_gz(), &error, 6));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // over the sphere, its mean cosine is g, and the sampler draws directions with exactly its
 // density (a chi-square test of the cosine histogram against the analytic CDF).
 #include "core/henyey_greenstein.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // CDF of cos theta under HG (the closed form of the integral of 2 pi p over [-1, c]).
 double hg_cdf(double c, double g) {
@@ -74,5 +76,6 @@ TEST(HenyeyGreenstein, ForwardScatteringFavoursTheTravelDirection) {
   EXPECT_NEAR(henyey_greenstein(1.f, 0.5f), 1.5 / (4 * kPi * 0.25), 1e-5);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

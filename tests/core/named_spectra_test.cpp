@@ -3,6 +3,7 @@
 // at its own samples exactly, between them linearly. Expected values are read off pbrt-v4's
 // source by hand.
 #include "core/named_spectra.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(NamedSpectra, EveryPbrtV4NameIsKnown) {
   std::vector<std::string> names = {"glass-BK7",      "glass-BAF10",  "glass-FK51A",   "glass-LASF9",  "glass-F5",
@@ -66,5 +68,6 @@ TEST(NamedSpectra, TablesAreIncreasingPairs) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

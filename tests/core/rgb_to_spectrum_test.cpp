@@ -5,6 +5,7 @@
 // primaries and the tables' D65), and the two are compared with CIEDE2000 in CIELAB, each
 // relative to its own white.
 #include "core/rgb_to_spectrum.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@
 #include "core/cie_tables.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using eyetrace::RGBToSpectrumTable;
 using eyetrace::SigmoidPolynomial;
@@ -334,4 +336,5 @@ TEST(RGBToSpectrum, TableNodesRoundTrip) {
   std::printf("[ stats    ] table nodes round trip CIEDE2000: max %.4f\n", worst);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

@@ -2,6 +2,7 @@
 // (core/spectrum.h): the sampling density is normalised and the one the wavelengths are drawn
 // with, and the Monte Carlo XYZ of known spectra converges to the CIE integrals.
 #include "core/sampled_spectrum.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(SampledWavelengths, DensityIsNormalisedOverTheVisibleRange) {
   // Midpoint rule at 0.01 nm over [360, 830] nm.
@@ -91,5 +93,6 @@ TEST(WavelengthToRgb, IsSampledToRgbOfOneWavelength) {
   EXPECT_EQ(wavelength_to_rgb(800.f, 1.f), RGB(0.f));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

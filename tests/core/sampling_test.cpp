@@ -1,6 +1,7 @@
 // Chi-square tests of every warp in core/sampling.h against the density it states, and tests
 // of the chi-square harness itself (tests/support/chi2.h) against published values.
 #include "core/sampling.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include "../support/chi2.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -185,4 +187,5 @@ TEST(PowerHeuristic, WeightsOfTwoStrategiesSumToOne) {
   EXPECT_EQ(power_heuristic(0.f, 0.f), 0.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

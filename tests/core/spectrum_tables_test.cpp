@@ -12,11 +12,13 @@
 #include <random>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "core/named_spectra.h"
 #include "core/spectrum.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The reference: walk the points until the next one is not below l.
 float linear_scan(const std::vector<float>& lambda, const std::vector<float>& value, float l) {
@@ -99,5 +101,6 @@ TEST(WhiteIlluminant, IsD65OverItsLuminanceBitForBit) {
 
 TEST(InterpolateSpectrum, EmptyTableIsZero) { EXPECT_EQ(interpolate_spectrum({}, {}, 550.f), 0.f); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,6 +1,7 @@
 // core/transform: each constructor checked against its analytic matrix action, and every
 // stored inverse against the product with its forward matrix.
 #include "core/transform.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 void expect_vec_near(const Vec3& got, const Vec3& want, float tol = 1e-5f) {
   EXPECT_NEAR(got.x, want.x, tol);
@@ -117,5 +119,6 @@ TEST(Transform, GeneralMatrixComputesItsInverse) {
   EXPECT_THROW((Transform(rank2)), std::domain_error);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,6 +1,7 @@
 // Bradford white balance against Lindbloom's published matrices, and pbrt-v4's white balance
 // illuminant against the CIE's published chromaticities of the D illuminants.
 #include "core/white_balance.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 void expect_matrix_near(const glm::dmat3& m, const double (&want)[3][3], double tol) {
   for (int r = 0; r < 3; ++r)
@@ -86,5 +88,6 @@ TEST(WhiteBalance, IlluminantIsABlackbodyBelowFourThousandKelvin) {
   EXPECT_NEAR(xy.y, 0.40745, 3e-4);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -15,9 +15,11 @@
 #include "../support/eyetrace_process.h"
 #include "../support/mpirun.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::read_text;
 using test::TempDir;
@@ -106,5 +108,6 @@ TEST(MpiModule, AnUnloadableModuleIsAnErrorWithTheLoadersReason) {
 
 #endif
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -17,11 +17,12 @@
 #include "../support/eyetrace_process.h"
 #include "../support/mpirun.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "render/image_io.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::read_text;
@@ -149,5 +150,6 @@ TEST(MpiSweep, ABuildWithoutMpiRefusesToBeOneOfSeveralSweepRanks) {
 
 #endif
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

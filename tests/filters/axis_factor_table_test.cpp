@@ -2,6 +2,7 @@
 // computed directly: a shifted Gaussian (std::exp here, not the filter's code) within the error
 // bound the header states, a cubic reproduced to rounding, and zeros outside the support.
 #include "filters/axis_factor_table.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Every tap of rows starting anywhere in [-r - 1, r + 1] against g itself.
 template <class G>
@@ -65,5 +67,6 @@ TEST(AxisFactorTable, ZeroOutsideTheSupportAndForNaN) {
   EXPECT_FLOAT_EQ(row[1], 0.25f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,6 +1,7 @@
 // The box filter: constant weight 1, samples uniform over [-r, r]^2 (chi-square), pbrt-v4's
 // default radius and parameter checks.
 #include "filters/box_filter.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -71,4 +73,5 @@ TEST(BoxFilter, FactoryUsesPbrtDefaultsAndChecksRadius) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

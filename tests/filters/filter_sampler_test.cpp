@@ -1,6 +1,7 @@
 // The piecewise-constant distributions behind filter importance sampling, against values worked
 // out by hand and a chi-square test of the 2D distribution against its own table.
 #include "filters/filter_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include "../support/chi2.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 using filter_sampling::Distribution1D;
@@ -71,4 +73,5 @@ TEST(FilterDistribution2D, SamplesFollowTheTable) {
   EXPECT_TRUE(res.passes(1e-4)) << res.summary();
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

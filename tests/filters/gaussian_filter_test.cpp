@@ -2,6 +2,7 @@
 // importance-sampled weights whose weighted histogram reproduces the filter (chi-square) with
 // mean weight 1, and the parameter checks.
 #include "filters/gaussian_filter.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -122,4 +124,5 @@ TEST(GaussianFilter, FactoryUsesPbrtDefaultsAndChecksSigma) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

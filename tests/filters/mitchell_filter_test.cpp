@@ -2,6 +2,7 @@
 // r_x r_y / 4 for any B and C, signed importance-sampling weights whose weighted histogram
 // reproduces the filter (chi-square) with mean weight 1, and the parameters.
 #include "filters/mitchell_filter.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -91,4 +93,5 @@ TEST(MitchellFilter, FactoryUsesPbrtDefaults) {
   EXPECT_THROW(create_mitchell_filter(bad), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

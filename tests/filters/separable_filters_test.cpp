@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
 #include "filters/mitchell_filter.h"
@@ -17,6 +18,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::vector<std::unique_ptr<Filter>> every_filter() {
   std::vector<std::unique_ptr<Filter>> filters;
@@ -89,5 +91,6 @@ TEST(SeparableFilters, IntegralIsTheIntegralOfEvaluate) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

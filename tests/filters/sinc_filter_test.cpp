@@ -3,6 +3,7 @@
 // importance-sampling weights whose weighted histogram reproduces the filter (chi-square) with
 // mean weight 1, filter-weighted means of a function that are unbiased, and the parameters.
 #include "filters/sinc_filter.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -143,4 +145,5 @@ TEST(SincFilter, FactoryUsesPbrtDefaultsAndRejectsBadValues) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

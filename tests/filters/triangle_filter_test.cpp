@@ -1,6 +1,7 @@
 // The triangle filter: weight 1, sample positions distributed as f / integral f (chi-square
 // against the tent integrated per cell), the analytic integral r_x^2 r_y^2, pbrt-v4 defaults.
 #include "filters/triangle_filter.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -71,4 +73,5 @@ TEST(TriangleFilter, FactoryUsesPbrtDefaults) {
   EXPECT_THROW(create_triangle_filter(bad), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

@@ -12,9 +12,11 @@
 #include <gtest/gtest.h>
 
 #include "../support/masked_renders.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::masked;
 using test::masked_pair;
@@ -53,5 +55,6 @@ TEST(BdptIntegrator, CausticSeenDirectlyCarriesThePowerPathFindsThroughASphereLi
   EXPECT_LT(without_t1, 0.95 * bdpt_point.mean);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/film.h"
 #include "scene/parser.h"
@@ -27,6 +28,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string emitting_sphere(const std::string& integrator) {
   return fmt::format(
@@ -436,5 +438,6 @@ TEST(BdptIntegrator, PortalLightIsRefusedWithTheIntegratorsPlace) {
   EXPECT_NE(e.find("portal"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

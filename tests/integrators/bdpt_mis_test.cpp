@@ -9,10 +9,12 @@
 #include <random>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "integrators/bdpt_mis.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // A path x_0 (camera) ... x_{n-1} (light): the density with which the camera side generates
 // each vertex (fwd, walking away from the camera) and the light side (rev), and which are
@@ -108,5 +110,6 @@ TEST(BdptMis, ACameraRayThatHitsALightHasWeightOne) {
   EXPECT_EQ(bdpt_mis_weight(cam, 2, nullptr, 0, false, 2), 1.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,12 +2,14 @@
 // estimator under that name, with no warning whether or not the scene names it.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const char* kScene = R"(Film "rgb" "integer xresolution" 4 "integer yresolution" 4
 %s
@@ -29,5 +31,6 @@ TEST(DefaultIntegrator, NoWarningWithoutAnIntegratorLine) { EXPECT_EQ(warnings_b
 
 TEST(DefaultIntegrator, ExplicitVolpathDoesNotWarn) { EXPECT_EQ(warnings_building("Integrator \"volpath\""), 0); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

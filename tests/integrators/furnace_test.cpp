@@ -3,11 +3,13 @@
 // so rho = 1 is the white furnace: the object must vanish into the background.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Mean radiance over the image of a sphere that fills the whole view.
 double mean_furnace_radiance(float rho, float Le, const std::string& integrator, int spp, int threads = 0) {
@@ -58,5 +60,6 @@ TEST(DirectIntegrator, ConvexDiffuseObjectReflectsAlbedoTimesEnvironment) {
 // noise, bounded by 5 standard errors of a pixel's 256-sample mean).
 TEST(PathIntegrator, EnergyNeverGrows) { EXPECT_LT(mean_furnace_radiance(0.9f, 1.f, "path", 64), 0.9 + 0.04); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

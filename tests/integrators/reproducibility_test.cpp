@@ -2,11 +2,13 @@
 // number of threads, and another seed gives another image.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Image render_cornell(int threads, uint64_t seed, const std::string& sampler) {
   SceneDescription desc = parse_scene_file(std::string(EYETRACE_SOURCE_DIR) + "/scenes/cornell-box.pbrt");
@@ -35,5 +37,6 @@ TEST(Render, SameSeedSameImageForAnyThreadCount) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

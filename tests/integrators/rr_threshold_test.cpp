@@ -6,11 +6,13 @@
 // inward-facing wall), and no ray after the last bounce (a point light cannot be hit).
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr int kDepth = 6;
 constexpr uint64_t kCameraRays = 16 * 16 * 16;
@@ -57,5 +59,6 @@ TEST(RussianRouletteThreshold, DefaultPlaysRouletteAndStaysUnbiased) {
   EXPECT_NEAR(on.mean / off.mean, 1.0, 0.03);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

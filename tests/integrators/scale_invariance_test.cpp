@@ -4,11 +4,13 @@
 // no surface acne, and images equal to the scale-1 image within Monte Carlo noise.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr float kScales[] = {1e-4f, 1e-2f, 1.f, 1e2f, 1e5f};
 
@@ -116,5 +118,6 @@ TEST(ScaleInvariance, LitSceneEqualAcrossScalesWithinNoise) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,12 +5,13 @@
 // point lands in, and how many rays are traced, follows from the lights.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Counts {
   uint64_t camera_rays, rays_traced, shadow_rays, shadow_rays_skipped;
@@ -65,5 +66,6 @@ TEST(ShadowRaySkip, AnInfiniteLightIsLookedForAfterTheLastBounce) {
   EXPECT_EQ(c.rays_traced, 2 * kCameraRays + c.shadow_rays);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -11,10 +11,11 @@
 #include <gtest/gtest.h>
 
 #include "../support/masked_renders.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::masked;
 using test::masked_pair;
@@ -79,5 +80,6 @@ TEST(SppmIntegrator, CausticOfAPointLightCarriesThePowerPathFindsThroughASphereL
   EXPECT_NEAR(sppm_small, sppm_point, 0.005 * sppm_point);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

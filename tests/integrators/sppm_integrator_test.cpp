@@ -8,12 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "integrators/sppm_integrator.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string emitting_sphere(const std::string& integrator, const std::string& extra = "") {
   return fmt::format(
@@ -145,5 +146,6 @@ TEST(SppmIntegrator, RefusesWhatItDoesNotSupportByName) {
   EXPECT_NE(e.find("\"spectral\" film"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

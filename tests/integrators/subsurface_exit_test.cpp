@@ -15,11 +15,13 @@
 #include <cstdio>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/catmull_rom.h"
 #include "materials/bssrdf_table.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // `scale` multiplies the scene's size (camera distance and radius), not the coefficients;
 // `extra` is added to the world (after the sphere).
@@ -150,5 +152,6 @@ TEST(SubsurfaceExit, LastBounceStillSamplesLightAtTheExit) {
   EXPECT_NEAR(one.mean, five.mean, 3 * std::hypot(one.std_error, five.std_error));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -21,13 +21,14 @@
 #include <random>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "../support/volpath_scenes.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::ball;
 using test::kSpectralFilm;
@@ -257,5 +258,6 @@ Shape "bilinearmesh" "point3 P" [-3 -1.4 -3  -3 -1.4 3  3 -1.4 -3  3 -1.4 3]
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -20,13 +20,14 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "../support/volpath_scenes.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::ball;
 using test::kSpectralFilm;
@@ -217,5 +218,6 @@ MakeNamedMedium "haze" "string type" "homogeneous" "rgb sigma_a" [0.1 0.1 0.1] "
   EXPECT_NEAR(hazy / clear, std::exp(-1.0), 0.1 * std::exp(-1.0));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "core/sampling.h"
 #include "light_test_util.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Base for the fake shapes: only what area lights use is real.
 class FakeShape : public Shape {
@@ -266,5 +268,6 @@ TEST(DiffuseAreaLight, SampleLeRaysCarryThePower) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

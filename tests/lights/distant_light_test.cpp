@@ -3,12 +3,14 @@
 // shadow-ray end lies beyond the scene, and power is the flux through its bounding disc.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "light_test_util.h"
 #include "lights/distant_light.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Light> make_distant(std::vector<Param> ps, const Transform& t = Transform()) {
   ParameterList params = make_params(std::move(ps));
@@ -97,5 +99,6 @@ TEST(DistantLight, SampleLeRaysCrossTheSceneDiscAndCarryThePower) {
   EXPECT_NEAR(e.power, light->power(), 1e-3 * e.power);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

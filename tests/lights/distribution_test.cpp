@@ -5,11 +5,13 @@
 
 #include <numeric>
 
+#include "../support/unity_id.h"
 #include "core/distribution.h"
 #include "light_test_util.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kSignificance = 0.01;
 
@@ -192,5 +194,6 @@ TEST(PiecewiseConstant2D, SizeMismatchThrows) {
   EXPECT_THROW(PiecewiseConstant2D(f, 2, 3), std::invalid_argument);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

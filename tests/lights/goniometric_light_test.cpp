@@ -3,6 +3,7 @@
 // luminous power integrated numerically over the sphere equals "power" (times "scale"), and bad
 // images are errors naming the file and the parameter.
 #include "lights/goniometric_light.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Pixel (x, y) of the 16 x 16 test diagram: channels that differ, a ramp and a bright square.
 RGB diagram_pixel(int x, int y) {
@@ -176,5 +178,6 @@ TEST(GoniometricLight, BadFilesAreErrorsNamingTheFileAndTheParameter) {
   expect_error({string_param("filename", diagram_file()), point_param("from", 0, 1, 0)}, {"from"});
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

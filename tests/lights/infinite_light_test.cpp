@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "core/sampling.h"
 #include "core/transform.h"
@@ -19,8 +20,8 @@
 #include "render/image_io.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -472,5 +473,6 @@ TEST(InfiniteLight, SampleLeRaysFromTheUniformEnvironmentCarryThePower) {
   EXPECT_FALSE(portal->sample_le(Vec2(0.5f), Vec2(0.5f), test::wavelengths(), 0.f));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

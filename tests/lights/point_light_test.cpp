@@ -3,12 +3,14 @@
 // "scale" multiplying on top).
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "light_test_util.h"
 #include "lights/point_light.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Light> make_point(std::vector<Param> ps, const Transform& t = Transform()) {
   ParameterList params = make_params(std::move(ps));
@@ -87,5 +89,6 @@ TEST(PointLight, SampleLeRaysCarryThePower) {
   EXPECT_LT(glm::length(mean_dir), 5 * std::sqrt(1.0 / 3 / 4000) * std::sqrt(3.0));  // isotropic: about 0
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

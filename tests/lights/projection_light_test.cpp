@@ -4,6 +4,7 @@
 // numerically over the sphere equals "power" (times "scale"); bad images are errors naming the
 // file and the parameter.
 #include "lights/projection_light.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +15,8 @@
 #include "light_test_util.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 RGB slide_pixel(int x, int y) {
   return RGB(0.1f + 0.1f * float(x), 0.2f + 0.3f * float(y), (x + y) % 3 == 0 ? 2.f : 0.5f);
@@ -161,5 +162,6 @@ TEST(ProjectionLight, BadFilesAndParametersAreErrorsNamingThem) {
   expect_error({string_param("filename", slide_file(6, 4)), rgb_param("I", 1, 1, 1)}, {"unused parameter \"rgb I\""});
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -4,11 +4,13 @@
 // The lat-long map follows pbrt-v3's convention (top row +z, u = phi / 2 pi).
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "light_test_util.h"
 #include "lights/sphere_mapping.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 void expect_dir(const Vec3& got, const Vec3& want) {
   EXPECT_NEAR(got.x, want.x, 1e-5f);
@@ -77,5 +79,6 @@ TEST(LatLongMapping, RoundTrip) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,12 +3,14 @@
 // checked against a numerical integral of the intensity over the sphere.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "light_test_util.h"
 #include "lights/spot_light.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Light> make_spot(std::vector<Param> ps, const Transform& t = Transform()) {
   ParameterList params = make_params(std::move(ps));
@@ -130,5 +132,6 @@ TEST(SpotLight, SampleLeRaysCarryThePower) {
   EXPECT_LT(e.std_error, 0.02 * light->power());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

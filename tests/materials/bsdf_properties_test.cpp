@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include <functional>
 #include <random>
@@ -28,6 +29,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Case {
   std::string name;
@@ -252,5 +254,6 @@ TEST_P(BsdfProperties, ReflectionIsReciprocal) {
 INSTANTIATE_TEST_SUITE_P(AllBxDFs, BsdfProperties, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

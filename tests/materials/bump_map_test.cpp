@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/transform.h"
 #include "materials/bump_map.h"
 #include "scene/texture_store.h"
@@ -14,6 +15,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param number(const std::string& name, double v) {
   Param p;
@@ -112,5 +114,6 @@ TEST(BumpMap, ADiffusePlaneShinesWithTheCosineToTheBumpedNormal) {
   EXPECT_NEAR(lit_plane(right, true) / flat, 0.0, 1e-4);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -14,12 +14,14 @@
 
 #include "../support/render_text.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 #include "materials/coated_conductor_bxdf.h"
 #include "materials/conductor_bxdf.h"
 #include "materials/fresnel.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const SampledSpectrum kEta = test::channels(0.2f, 0.9f, 1.2f), kK = test::channels(3.3f, 2.6f, 2.3f);
 
@@ -122,5 +124,6 @@ TEST(CoatedConductor, PbrtV4ParametersRenderAndAMirrorMetalUnderAnIndexOneCoatIs
   EXPECT_LT(gold, bare);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include <random>
 
@@ -14,8 +15,8 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 SurfaceInteraction hit() {
   SurfaceInteraction si;
@@ -119,5 +120,6 @@ TEST(CoatedDiffuseMaterial, ReadsEveryPbrtV4Parameter) {
   EXPECT_TRUE(is_finite(b->f(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1)))));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include "core/arena.h"
 #include "materials/conductor_material.h"
@@ -9,8 +10,8 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 SurfaceInteraction hit() {
   SurfaceInteraction si;
@@ -110,5 +111,6 @@ TEST(ConductorMaterial, GrazingReflectanceApproachesOne) {
   for (int c = 0; c < kSpectrumSamples; ++c) EXPECT_GT(r[c], 0.95f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include <random>
 
@@ -13,8 +14,8 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 SampledWavelengths g_lambda = test::wavelengths();
 
@@ -177,5 +178,6 @@ TEST(DielectricMaterial, RoughnessIsRemapped) {
   EXPECT_EQ(smooth->bsdf(hit(), g_lambda, arena)->flags() & kSpecular, unsigned(kSpecular));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

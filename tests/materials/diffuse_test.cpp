@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include <filesystem>
 
@@ -15,8 +16,8 @@
 #include "textures/constant_texture.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 SampledWavelengths g_lambda = test::wavelengths();
 
@@ -173,5 +174,6 @@ TEST(InterfaceMaterial, HasNoBsdf) {
   EXPECT_EQ(m->bsdf(hit(), g_lambda, arena), nullptr);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

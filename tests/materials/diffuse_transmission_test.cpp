@@ -8,10 +8,11 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Mean {
   double value = 0, std_error = 0;
@@ -75,5 +76,6 @@ TEST(DiffuseTransmission, LosslessSphereInAFurnaceReturnsTheEnvironment) {
   EXPECT_LT(m.std_error, 0.002);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,10 +1,12 @@
 // Fresnel reflectance and refraction (materials/fresnel.h) against closed forms.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "materials/fresnel.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(FresnelDielectric, NormalIncidence) {
   for (float n : {1.33f, 1.5f, 2.4f}) EXPECT_NEAR(fresnel_dielectric(1.f, n), sqr((n - 1.f) / (n + 1.f)), 1e-6f) << n;
@@ -67,5 +69,6 @@ TEST(Refract, SnellsLaw) {
   EXPECT_FALSE(refract(inside, Vec3(0.f, 0.f, 1.f), n, &etap, &wt));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

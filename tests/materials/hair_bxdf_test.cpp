@@ -20,12 +20,14 @@
 #include <vector>
 
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 #include "core/sampling.h"
 #include "materials/fresnel.h"
 #include "materials/hair_bxdf.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Estimate {
   double mean = 0, std_error = 0;
@@ -275,5 +277,6 @@ TEST(HairBxDF, ReflectanceFitRoundTripsThroughAFurnaceOfFibres) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -12,11 +12,12 @@
 #include <string>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Mean {
   double value = 0, std_error = 0;
@@ -109,5 +110,6 @@ TEST(HairMaterial, BadValuesNameFileLineAndParameter) {
   EXPECT_NE(error_of(R"("float displacement" 0.1)").find("displacement"), std::string::npos);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

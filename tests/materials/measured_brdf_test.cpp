@@ -10,10 +10,12 @@
 
 #include "../support/temp_files.h"
 #include "../support/tensor_file_writer.h"
+#include "../support/unity_id.h"
 #include "materials/measured_brdf.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::string kFile = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/measured/ggx-schlick.bsdf";
 
@@ -132,5 +134,6 @@ TEST(MeasuredBRDF, AFileIsReadOnceWhileInUse) {
   EXPECT_THROW(load_measured_brdf(path), TensorFileError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -21,12 +21,13 @@
 #include <fmt/format.h>
 
 #include "../support/chi2.h"
+#include "../support/unity_id.h"
 #include "materials/local_bsdf.h"
 #include "materials/measured_bxdf.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kAlpha = 0.5, kF0a = 0.25, kF0b = 0.6;
 
@@ -321,5 +322,6 @@ TEST_F(MeasuredBxDFTest, AnisotropicFileSamplesItsPdfBetweenNodes) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

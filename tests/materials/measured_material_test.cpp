@@ -12,11 +12,12 @@
 #include "../support/chi2.h"
 #include "../support/render_text.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::string kFile = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/measured/ggx-schlick.bsdf";
 
@@ -102,5 +103,6 @@ TEST(MeasuredMaterial, BadFilesNameTheSceneLineParameterAndProblem) {
   EXPECT_TRUE(has(e, "measured.pbrt:8:") && has(e, "roughness")) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -10,6 +10,7 @@
 
 #include "../support/render_text.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 #include "core/arena.h"
 #include "core/error.h"
 #include "materials/diffuse_material.h"
@@ -17,8 +18,8 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(MixMaterial, HashIsUniformAndRepeatable) {
   std::mt19937 rng(5);
@@ -102,5 +103,6 @@ TEST(MixMaterial, BadReferencesAreErrors) {
   EXPECT_NE(error_of(R"(Material "mix" "string materials" ["dark"])").find("takes 2 values"), std::string::npos);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // and the error messages, against published colorimetry.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/cie_tables.h"
 #include "core/named_spectra.h"
 #include "core/spectrum.h"
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param spectrum_param(std::vector<double> numbers, std::vector<std::string> strings = {},
                      std::string type = "spectrum") {
@@ -192,5 +194,6 @@ TEST(SpectrumParamAt, InterpolatesPairs) {
   EXPECT_NEAR(spectrum_param_at(spectrum_param({1.33}), 550.f), 1.33f, 1e-6f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

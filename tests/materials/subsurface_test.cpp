@@ -16,6 +16,7 @@
 
 #include "../support/chi2.h"
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/catmull_rom.h"
 #include "core/measured_media.h"
 #include "materials/bssrdf_table.h"
@@ -23,6 +24,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::string kReference = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/subsurface/pbd_reference.txt";
 
@@ -248,5 +250,6 @@ TEST(SubsurfaceMaterial, BadParametersNameFileLineAndParameter) {
   EXPECT_EQ(error_of(""), "");  // pbrt-v4's default coefficients
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -9,12 +9,13 @@
 
 #include "../support/temp_files.h"
 #include "../support/tensor_file_writer.h"
+#include "../support/unity_id.h"
 #include "materials/measured_brdf.h"
 #include "materials/measured_bxdf.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::string kFile = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/measured/ggx-schlick.bsdf";
 
@@ -150,5 +151,6 @@ TEST(TensorFile, RandomCorruptionIsRejectedOrHarmless) {
   RecordProperty("accepted", accepted);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

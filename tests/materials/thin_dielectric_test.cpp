@@ -8,11 +8,13 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "materials/fresnel.h"
 #include "materials/thin_dielectric_bxdf.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // R' by summing the series: out at the first face (R), or in (T), then 2k internal reflections
 // (R^2k), then out at the first face again (T) after one more reflection (R).
@@ -74,5 +76,6 @@ TEST(ThinDielectric, APanePassesOneMinusItsReflectance) {
   EXPECT_NEAR(mean_through_pane(true) / bare, t, 4 * sigma);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

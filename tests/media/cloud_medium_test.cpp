@@ -3,6 +3,7 @@
 // below), the coefficients scaled by it, the transform at MakeNamedMedium placing the box, and
 // majorants confined to the box.
 #include "media/cloud_medium.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Medium> make_cloud(const std::string& params, const std::string& transform = "") {
   const std::string text = "WorldBegin\n" + transform + "\nMakeNamedMedium \"c\" \"string type\" \"cloud\" " + params;
@@ -91,5 +93,6 @@ TEST(CloudMedium, BadInputIsAnErrorNamingFileLineAndParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -6,6 +6,7 @@
 // blackbody is Planck's law normalised to its peak (computed here from the physical constants);
 // bad input is an error naming file, line and parameter.
 #include "media/grid_medium.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Medium> make_grid(const std::string& params, const std::string& transform = "") {
   const std::string text =
@@ -181,5 +183,6 @@ TEST(GridMedium, BadInputIsAnErrorNamingFileLineAndParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

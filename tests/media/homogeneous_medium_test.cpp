@@ -2,6 +2,7 @@
 // g 0, no emission), "scale" and "Lescale", and bad input: every error names the file, the line
 // and the parameter (or the medium). (The grid media: grid_medium_test.cpp and its neighbours.)
 #include "media/homogeneous_medium.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 MediumProperties properties_of(const std::string& params, float lambda_nm = 550.f) {
   const std::string text = "WorldBegin\nMakeNamedMedium \"m\" \"string type\" \"homogeneous\" " + params + "\n";
@@ -157,5 +159,6 @@ Shape "sphere"
   EXPECT_TRUE(s.scene->has_media());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

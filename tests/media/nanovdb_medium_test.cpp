@@ -5,6 +5,7 @@
 // DDA); a temperature grid emits the normalised blackbody times Lescale; a missing, truncated
 // or grid-less file and a negative density are errors naming file, line and parameter.
 #include "media/nanovdb_medium.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 #include <nanovdb/util/GridBuilder.h>
@@ -23,6 +24,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using Handle = nanovdb::GridHandle<nanovdb::HostBuffer>;
 
@@ -166,5 +168,6 @@ TEST(NanoVDBMedium, BadInputIsAnErrorNamingFileLineAndParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 // sigma_t at random points along random rays; bad input is an error naming file, line and
 // parameter.
 #include "media/rgb_grid_medium.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Medium> make(const std::string& type, const std::string& params) {
   const std::string text = "WorldBegin\nMakeNamedMedium \"m\" \"string type\" \"" + type + "\" " + params;
@@ -100,5 +102,6 @@ TEST(RGBGridMedium, BadInputIsAnErrorNamingFileLineAndParameter) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

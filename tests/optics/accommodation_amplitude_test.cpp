@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/accommodation_amplitude.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(AccommodationAmplitude, HofstetterAtRoundAges) {
   const AccommodationAmplitude a20 = hofstetter_amplitude(20.0);
@@ -74,5 +76,6 @@ TEST(AccommodationAmplitude, LimitIsOnTheProducedAccommodation) {
   EXPECT_THROW(make_eye(navarro(hi + 1e-3, 60.0)), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -20,6 +20,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/airy_kernel.h"
 #include "optics/chromatic.h"
 #include "optics/eye_models.h"
@@ -30,6 +31,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Radii {
   double ee50 = 0.0, ee80 = 0.0;
@@ -91,5 +93,6 @@ TEST(AiryConvolution, MissesTheWavePsfWhereTheEyeIsNearlyDiffractionLimited) {
   EXPECT_GT(worst, 0.1) << "the convolution is within 10 % everywhere: method (a) would do";
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -10,11 +10,13 @@
 #include <random>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "optics/airy_kernel.h"
 #include "optics/optics_error.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(AiryKernel, TruncatesAtTheChosenDarkRing) {
   const AiryKernel k(32);
@@ -75,5 +77,6 @@ TEST(AiryKernel, SamplerFollowsTheTruncatedCdf) {
   EXPECT_NEAR(0.5 * (lo + hi), 1.68, 0.01);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

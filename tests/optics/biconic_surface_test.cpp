@@ -10,11 +10,13 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/biconic_surface.h"
 #include "optics/conic_surface.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // z = (c1 u^2 + c2 v^2) / (1 + sqrt(1 - (1+Q1) c1^2 u^2 - (1+Q2) c2^2 v^2)), u along the axis.
 long double biconic_sag_ld(long double R1, long double Q1, long double R2, long double Q2, long double axis_deg,
@@ -205,5 +207,6 @@ TEST(BiconicSurface, MissesBeyondTheRimAndBehindWithoutNaN) {
   EXPECT_NEAR(on.t, 0.0, 1e-15);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -8,12 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "../support/eye_models_doc.h"
+#include "../support/unity_id.h"
 #include "optics/chromatic.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Rounded first, so -0.0004 prints as +0.000.
 std::string signed3(double v) { return fmt::format("{:+.3f}", std::round(v * 1000.0) / 1000.0 + 0.0); }
@@ -46,5 +48,6 @@ std::string chromatic_table() {
 
 TEST(EyeModelsDoc, ChromaticTableIsCurrent) { EXPECT_TRUE(test::table_is_in_eye_models_doc(chromatic_table())); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/chromatic.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using nlohmann::json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -412,5 +414,6 @@ TEST(ChromaticPlot, CurveAxesAndErrors) {
   EXPECT_THROW(chromatic_plot(r, 100, 400), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/conic_surface.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Closed-form sag of the vertex sheet: z = c r^2 / (1 + sqrt(1 - (1+Q) c^2 r^2)), long double.
 long double sag_ld(long double R, long double Q, long double r) {
@@ -136,5 +138,6 @@ TEST(ConicSag, MatchesClosedFormAndIsStableNearFlat) {
   EXPECT_EQ(SurfaceProfile::plane().sag(100.0), 0.0);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

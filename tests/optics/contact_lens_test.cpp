@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/contact_lens.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
@@ -16,6 +17,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription myope(double refraction_D) {
   EyeOptions o;
@@ -87,5 +89,6 @@ TEST(ContactLens, BadPowersNameContactLens) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

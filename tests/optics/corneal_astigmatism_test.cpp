@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription eye(const char* model) {
   EyeOptions o;
@@ -99,5 +101,6 @@ TEST(CornealAstigmatism, BadValuesNameTheOption) {
       "cylinder", "the first surface is not a rotationally symmetric refracting cornea");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

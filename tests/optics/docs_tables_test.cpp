@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "../support/eye_models_doc.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
 #include "optics/spot.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string preset_table() {
   std::string out =
@@ -68,5 +70,6 @@ TEST(EyeModelsDoc, AccommodationTableIsCurrent) {
   EXPECT_TRUE(test::table_is_in_eye_models_doc(accommodation_table()));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -15,12 +15,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using nlohmann::json;
 
@@ -323,5 +325,6 @@ TEST(EyeOptionsValidation, BadOptionsThrowNamingTheParameter) {
   expect_error(o, "eye option 'refractiveerror'");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

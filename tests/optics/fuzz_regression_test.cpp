@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/prescription_io.h"
@@ -12,6 +13,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string lens_error(const std::string& text, const LensFileOptions& options = {}) {
   try {
@@ -62,5 +64,6 @@ TEST(PrescriptionJsonFuzzRegression, NumberOverflowIsAnOpticsError) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

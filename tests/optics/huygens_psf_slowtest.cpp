@@ -20,6 +20,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
 #include "optics/psf.h"
@@ -27,6 +28,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct Wavelet {
   glm::dvec3 y;  // a point of the common wavefront in the vitreous
@@ -175,5 +177,6 @@ TEST(HuygensPsfSlow, FftPsfHoldsOnTheCurvedRetinaAtWideFields) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/lens_file.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -11,6 +12,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Double-Gauss 50 mm as distributed with pbrt (US 2,673,491; Modern Lens Design p. 312,
 // scaled to 50 mm): radius, thickness, index, aperture diameter; the stop row has index 0.
@@ -107,5 +109,6 @@ TEST(LensFile, BadFilesNameFileAndLine) {
   EXPECT_THROW(read_lens_file("/nonexistent/lens.dat"), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -1,10 +1,12 @@
 // Dispersion laws against eye-models.md sections 3 and 5d.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/medium.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(NavarroDispersion, WeightsSelectTheReferenceIndices) {
   // 5d: the weights are 1/0 at 365, 486.1, 656.3, 1014 nm to 1.4e-4 (coefficient rounding).
@@ -68,5 +70,6 @@ TEST(MediumIndex, ArizonaAbbeLineThroughNd) {
   EXPECT_NEAR(m.index_at(486.1) - m.index_at(656.3), 0.42 / 51.9, 1e-15);  // nF - nC = (nd-1)/Vd
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -17,11 +17,13 @@
 #include <glm/geometric.hpp>
 
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The k-th random non-symmetric eye of a model.
 Prescription random_astigmatic_eye(const char* model, std::mt19937_64& rng, double& pupil_mm) {
@@ -126,5 +128,6 @@ void stress(const char* model, std::uint64_t seed) {
 TEST(NonSymmetricTraceStress, NavarroTenMillionRandomRays) { stress("navarro", 20261125); }
 TEST(NonSymmetricTraceStress, LeGrandTenMillionRandomRays) { stress("legrand", 20261126); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/mtf.h"
 #include "optics/psf.h"
@@ -22,6 +23,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using Row = std::map<std::string, std::string>;
 
@@ -141,5 +143,6 @@ TEST(OptilandComparison, NavarroSphericalAberrationAt6mm) {
   EXPECT_NEAR(w.zernike_um[24], std::stod(rows[0].at("c60_um")), 2e-5);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

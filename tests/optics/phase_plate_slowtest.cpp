@@ -15,14 +15,15 @@
 #include <glm/geometric.hpp>
 
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/phase_plate.h"
 #include "optics/sequential_trace.h"
 #include "optics/wavefront.h"
 
 namespace eyetrace::optics {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription random_measured_eye(std::mt19937_64& rng, double& iris_mm) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -88,5 +89,6 @@ TEST(PhasePlateStress, MillionRandomRaysNoNaN) {
   EXPECT_GT(by_status[0], total / 10);  // the eyes still image
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

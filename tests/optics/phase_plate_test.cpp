@@ -6,6 +6,7 @@
 // Bradley & Applegate 2004 (M = -4 sqrt(3) c(2,0) / r^2, J0 = -2 sqrt(6) c(2,2) / r^2, J45 =
 // -2 sqrt(6) c(2,-2) / r^2). Measured eyes (the plate at the iris of the Navarro eye) follow.
 #include "optics/phase_plate.h"
+#include "../support/unity_id.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kSqrt3 = 1.7320508075688772, kSqrt6 = 2.449489742783178;
 
@@ -318,5 +320,6 @@ TEST(PhasePlateEye, IrisWiderThanTheMeasuredPupilIsLimitedByThePlate) {
   EXPECT_FALSE(w.warning.empty());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -18,6 +18,7 @@
 
 #include "../support/each_isa.h"
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/corneal_astigmatism.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
@@ -28,6 +29,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Surface flat(const char* name, double thickness, double index, double sd, SurfaceRole role = SurfaceRole::Refract) {
   Surface s;
@@ -366,5 +368,6 @@ TEST(PlacedSurface, BatchOnEveryInstructionSetEqualsSingleRaysBitForBit) {
   EXPECT_GT(cylinder_lost, 30);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

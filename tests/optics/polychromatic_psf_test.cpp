@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "../support/single_surface.h"
+#include "../support/unity_id.h"
 #include "optics/chromatic.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
@@ -27,6 +28,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
@@ -205,11 +207,13 @@ TEST(PolychromaticPsf, BadOptionsAreErrors) {
   EXPECT_EQ(w.back(), 705.0);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Lateral colour: the summed PSF's centroid is the weighted mean of the wavelengths' centroids,
 // and a PSF's centroid is its real-ray spot's (the mean wavefront slope). So the V-weighted mean
@@ -242,5 +246,6 @@ TEST(PolychromaticPsf, CentroidIsTheWeightedSpotCentroid) {
   EXPECT_NEAR(psf.centroid_um.x, 0.0, 1e-6);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/embedded_data.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -12,6 +13,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 void expect_invalid(const Prescription& p, const std::string& message) {
   try {
@@ -215,5 +217,6 @@ TEST(MeetingHeight, GullstrandAccommodatedNucleusEdge) {
   EXPECT_NEAR(h, R * std::sqrt(3.0) / 2.0, 1e-9);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -2,6 +2,7 @@
 // ratio and encircled energy: it must give compute_psf's samples, sample spacing and phase step.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/psf.h"
 #include "optics/psf_image.h"
@@ -9,6 +10,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(PsfImage, EqualsComputePsf) {
   EyeOptions eo;
@@ -35,5 +37,6 @@ TEST(PsfImage, EqualsComputePsf) {
 
 TEST(PsfImage, RejectsAnEmptyWavefront) { EXPECT_ANY_THROW(psf_image(WavefrontResult{})); }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "../support/single_surface.h"
+#include "../support/unity_id.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
 #include "optics/mtf.h"
@@ -30,6 +31,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kAiryZero = 3.831705970207512 / kPi;  // first zero of J1 / pi: 1.2197 lambda / D
@@ -286,11 +288,13 @@ TEST(PsfBadInput, TooCoarseAGridIsReported) {
   EXPECT_THROW(compute_psf(WavefrontResult{}, kEyeScale), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // On the axis the retinal scale is the paraxial front focal length 1 / P (paraxial.h, independent
 // of the chief-ray differences): the image of a distant point moves f tan(angle).
@@ -330,5 +334,6 @@ TEST(PsfEye, NavarroOffAxisIsFinite) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

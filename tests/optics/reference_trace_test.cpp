@@ -26,11 +26,13 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using nlohmann::json;
 
@@ -193,5 +195,6 @@ TEST(ReferenceTrace, GullstrandAtTheQuotedAccommodationIsSlightlyPastTheEndState
   FAIL() << "no gullstrand_accommodated state in " << kReferenceTraces;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

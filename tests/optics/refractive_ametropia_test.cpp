@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/refractive_ametropia.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription eye(const char* model, double error_D, Ametropia kind, double accommodation_D = 0.0) {
   EyeOptions o;
@@ -70,5 +72,6 @@ TEST(RefractiveAmetropia, PowerBeyondAConvexCorneaNamesRefractiveError) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -16,11 +16,13 @@
 #include <glm/geometric.hpp>
 
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(ReverseTraceStress, TenMillionRandomRaysAreFiniteAndAccounted) {
   constexpr int kConfigs = 210;
@@ -98,5 +100,6 @@ TEST(ReverseTraceStress, NavarroReverseTraceRate) {
   EXPECT_TRUE(std::isfinite(checksum));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "../support/each_isa.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/navarro.h"
 #include "optics/optics_error.h"
@@ -18,6 +19,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription eye(const char* model, const char* variant = "") {
   EyeOptions o;
@@ -468,5 +470,6 @@ TEST(WavelengthTrace, BlueFocusesInFrontOfRed) {
   EXPECT_LT(red - blue, 0.5);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -16,11 +16,13 @@
 #include <glm/geometric.hpp>
 
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 EyeOptions random_corrected_eye(int k, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -82,5 +84,6 @@ TEST(CorrectedEyeTraceStress, TenMillionReverseRays) {
   EXPECT_GT(by_status[0], total / 4);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/spectacle_lens.h"
@@ -16,6 +17,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription myope(double refraction_D) {
   EyeOptions o;
@@ -176,5 +178,6 @@ TEST(SpectacleLens, BadLensesNameTheirOption) {
   EXPECT_EQ(m.rfind("vertexdistance: 1 mm puts the lens inside the eye", 0), 0u) << m;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/meridian_refraction.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/paraxial.h"
 #include "optics/report.h"
@@ -19,6 +20,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -201,5 +203,6 @@ TEST(SpheroCylinder, ThinCrossedCylindersAddAsPowerMatrices) {
   EXPECT_NEAR(-1000.0 * m.C.yy, f1.yy + f2.yy, 1e-9);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

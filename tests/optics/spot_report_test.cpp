@@ -3,12 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/report.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription navarro(double pupil_mm) {
   EyeOptions o;
@@ -139,5 +141,6 @@ TEST(SpotDiagram, RasterHasPointsAndScaleBar) {
   EXPECT_THROW(spot_diagram({}, 400, 200), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "../support/unity_id.h"
 #include "optics/mtf.h"
 #include "optics/optics_error.h"
 #include "optics/psf.h"
@@ -12,6 +13,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // A zero-OPD pupil of 1.5 mm radius at 555 nm on a 48 grid: the Airy pattern.
 Psf airy() {
@@ -69,5 +71,6 @@ TEST(WavePlot, TooSmallACanvasIsAnError) {
   EXPECT_THROW(wave_figure(airy(), {}, "x", o), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/mtf.h"
 #include "optics/optics_error.h"
@@ -16,8 +17,8 @@
 #include "optics/wavefront.h"
 
 namespace eyetrace::optics {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Prescription navarro() {
   EyeOptions o;
@@ -116,5 +117,6 @@ TEST(WavefrontReport, BadOptionsAreOneError) {
   EXPECT_THROW(optics_report(navarro(), o), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/single_surface.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/optics_error.h"
 #include "optics/paraxial.h"
@@ -22,6 +23,7 @@
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using nlohmann::json;
 
@@ -300,5 +302,6 @@ TEST(WavefrontBadInput, InvalidOptionsAreErrors) {
   EXPECT_THROW(trace_wavefront(p, with([](WavefrontOptions& o) { o.field_deg = 80.0; })), OpticsError);  // chief lost
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

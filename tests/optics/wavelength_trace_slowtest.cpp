@@ -15,11 +15,13 @@
 #include <gtest/gtest.h>
 
 #include "../support/reverse_trace_stress.h"
+#include "../support/unity_id.h"
 #include "optics/eye_models.h"
 #include "optics/sequential_trace.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(WavelengthTraceStress, TenMillionRandomRaysAtRandomWavelengthsAreFiniteAndAccounted) {
   constexpr int kConfigs = 210;
@@ -72,5 +74,6 @@ TEST(WavelengthTraceStress, TenMillionRandomRaysAtRandomWavelengthsAreFiniteAndA
   EXPECT_GT(sampled, 50'000);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

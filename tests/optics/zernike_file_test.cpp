@@ -7,11 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/optics_error.h"
 #include "optics/zernike_file.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The message parse_zernike_text throws for `text`, or "" when it parses.
 std::string error_of(const std::string& text) {
@@ -105,5 +107,6 @@ TEST(ZernikeFile, ReadsAFileAndNamesOneItCannotOpen) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

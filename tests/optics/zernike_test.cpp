@@ -9,11 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "optics/optics_error.h"
 #include "optics/zernike.h"
 
 namespace eyetrace::optics {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(Zernike, SingleIndexFollowsTheOsaOrder) {
   // j = 0 .. 14 as the standard's table lists them.
@@ -169,5 +171,6 @@ TEST(ZernikeFit, RejectsTooFewPoints) {
   EXPECT_THROW(fit_zernike(line, std::vector<double>(line.size(), 1.0), 2), OpticsError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace::optics

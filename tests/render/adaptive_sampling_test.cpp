@@ -10,6 +10,7 @@
 #include <random>
 #include <thread>
 
+#include "../support/unity_id.h"
 #include "render/adaptive_sampling.h"
 #include "render/film.h"
 #include "render/render_state.h"
@@ -20,6 +21,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // A grey sample of luminance y: linear sRGB (y, y, y) has luminance y (the weights sum to 1).
 RGB grey(double y) { return RGB(float(y)); }
@@ -242,5 +244,6 @@ TEST(AdaptiveRender, StoppedAndResumedThroughTheStateFileIsBitIdentical) {
   EXPECT_EQ(resumed.tiles.pixel_done, ref.tiles.pixel_done);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -23,6 +23,7 @@
 
 #include <fmt/format.h>
 
+#include "../support/unity_id.h"
 #include "core/constants.h"
 #include "optics/chromatic.h"
 #include "optics/eye_models.h"
@@ -33,6 +34,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kBucketWidth_nm = 20.0;
 constexpr int kBucketNodes = 8;  // midpoint rule over a bucket (the optics' bucket means)
@@ -382,5 +384,6 @@ TEST(ChromaticRender, EdgeFringeOffsetMatchesTheCentroidTcaAt20Degrees) {
   EXPECT_LT(step, 0.01) << "the edge-spread function has not reached the plateau at the window's end";
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -9,12 +9,14 @@
 
 #include "../support/ciede2000.h"
 #include "../support/color_checker.h"
+#include "../support/unity_id.h"
 #include "render/film.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 struct ChannelMeans {
   double mean[3] = {0, 0, 0};
@@ -194,5 +196,6 @@ TEST(ColourFidelity, WhiteBalancedFilmMakesAWhiteCardUnderA3000KBlackbodyNeutral
   std::printf("white card, 3000 K, no white balance: (%.5f, %.5f, %.5f)\n", raw.mean[0], raw.mean[1], raw.mean[2]);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

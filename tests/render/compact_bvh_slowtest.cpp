@@ -7,12 +7,14 @@
 #include <random>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "render/scene.h"
 #include "scene/params.h"
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The unit square z = 0, |x|, |y| <= 1, as a grid of n x n vertices: 2 (n - 1)^2 triangles.
 Primitive grid(int n) {
@@ -75,5 +77,6 @@ TEST(CompactBvh, AnInstancedGridIsHitWhereEachPlacementPutsIt) {
   expect_hits_on_plane(scene, 5.f, -2.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

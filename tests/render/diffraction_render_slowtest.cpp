@@ -24,6 +24,7 @@
 
 #include <fmt/format.h>
 
+#include "../support/unity_id.h"
 #include "optics/chromatic.h"
 #include "optics/encircled_energy.h"
 #include "optics/eye_models.h"
@@ -35,8 +36,8 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr double kPupil_mm = 2.0;
 constexpr double kDistance_m = 100.0;
@@ -291,5 +292,6 @@ TEST(DiffractionRender, AccommodatedEyeImagesASourceAtItsFocusAsThePsf) {
   check({550.0, 0.0, 2.0, far_point_m});
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -19,6 +19,7 @@
 #include <regex>
 
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/exr_file.h"
 #include "render/gbuffer.h"
@@ -26,6 +27,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::vector<std::string> reordered(std::vector<std::string> names) {
   std::sort(names.begin(), names.end());  // an EXR stores its channels sorted by name
@@ -232,5 +234,6 @@ TEST(ExrFile, OtherFormatsLoadTheModule) {
   EXPECT_EQ(read_image_attribute(dir.file("a.png"), "eyetrace:x"), "png");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

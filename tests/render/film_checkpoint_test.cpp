@@ -12,6 +12,7 @@
 #include <iterator>
 #include <thread>
 
+#include "../support/unity_id.h"
 #include "core/fnv1a.h"
 #include "render/film.h"
 #include "render/render_state.h"
@@ -21,8 +22,8 @@
 #include "../support/unit_box_filter.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // 40x24 pixels: 3x2 tiles, the right and bottom ones partial. "{}": the camera, film and
 // filter (the spectral film's buckets must resume as exactly as R, G, B, and the dispersive
@@ -313,5 +314,6 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

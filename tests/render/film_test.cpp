@@ -1,5 +1,6 @@
 // Film accumulation, crop windows and image output.
 #include "render/film.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // pbrt-v4 rounds crop windows up: [ceil(x0 * w), ceil(x1 * w)).
 TEST(Film, CropWindowMatchesPbrtRounding) {
@@ -249,5 +251,6 @@ TEST(ImageIO, BadExtensionIsAnErrorAndLeavesExistingFileAlone) {
   EXPECT_EQ(read_image(exr).pixels[0], 1.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

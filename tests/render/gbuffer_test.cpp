@@ -2,6 +2,7 @@
 // textbook sample variance, and through the renderer a plane whose position, normal, (u, v)
 // and albedo are known.
 #include "render/gbuffer.h"
+#include "../support/unity_id.h"
 
 #include <regex>
 
@@ -14,6 +15,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::map<std::string, int> channel_index() {
   std::map<std::string, int> m;
@@ -201,5 +203,6 @@ TEST(GBuffer, FilmRefusesPngAndUnknownCoordinateSystems) {
   EXPECT_THROW(test::render_text(plane("screen")), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -14,6 +14,7 @@
 #include <string>
 #include <tuple>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/film.h"
 #include "render/integrator.h"
@@ -22,8 +23,8 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (its own kPi would make core/constants.h's ambiguous in the files after it)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 
@@ -259,5 +260,6 @@ Translate 0 0.8 0
   EXPECT_GT(mean(a1), 0.05);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -43,6 +43,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "nanovdb_smoke.h"
 #include "render/film.h"
 #include "render/image_io.h"
@@ -50,8 +51,8 @@
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::string kDataDir = std::string(EYETRACE_SOURCE_DIR) + "/tests/data/pbrt-v4/";
 // eyetrace's samples per pixel per seed (pbrt-v4's are in PROVENANCE: 4096 per seed, so its
@@ -428,5 +429,6 @@ TEST(PbrtV4Reference, MaxComponentValueIsWhatMakesTheClampSceneMatch) {
   std::printf("maxcomponentvalue scene without the clamp: mean red %.3f times pbrt-v4's\n", a / b);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

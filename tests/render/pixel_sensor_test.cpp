@@ -2,6 +2,7 @@
 // plain XYZ, the Monte Carlo responses against the integral they estimate, and white balance:
 // a white card under the balance illuminant comes out neutral.
 #include "render/pixel_sensor.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The cameras of pbrt-v4 (commit 5f7a606, src/pbrt/util/spectrum.cpp: the named spectra
 // NAME_r, NAME_g, NAME_b).
@@ -126,5 +128,6 @@ TEST(PixelSensor, AColdWhiteBalanceWithNoVisibleLightIsReported) {
   EXPECT_TRUE(PixelSensor::cie1931(0.0).finite());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

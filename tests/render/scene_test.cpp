@@ -3,6 +3,7 @@
 // light preprocessing, Embree errors as SceneErrors, and spawned rays that do not hit the
 // surface they leave.
 #include "render/scene.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 class NullMaterial : public Material {
  public:
@@ -375,5 +377,6 @@ TEST(Scene, SpawnedRaysDoNotSelfIntersect) {
     }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/film.h"
 #include "render/image_io.h"
@@ -25,6 +26,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(SpectralFilm, BucketsAndPbrtChannelNames) {
   const SpectralBuckets b{16, 400.f, 700.f};
@@ -353,5 +355,6 @@ Shape "disk" "float radius" 5
       for (int c = 0; c < 3; ++c) EXPECT_EQ(ia.at(x, y, c), ib.at(x, y, c));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -23,6 +23,7 @@
 
 #include "../support/eyetrace_process.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/image_io.h"
 #include "scene/parser.h"
@@ -30,6 +31,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -851,5 +853,6 @@ TEST(HostileProgram, SpectralFilmCheckpointsResumeExactlyAndRefuseMismatches) {
   EXPECT_FALSE(fs::exists(dir.file("out.png")));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "shapes/ply_reader.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string header(const std::string& format, const std::string& body) {
   return "ply\nformat " + format + " 1.0\n" + body + "end_header\n";
@@ -93,5 +95,6 @@ TEST(PlyReader, MalformedFilesSayWhatIsWrong) {
   EXPECT_EQ(ply_error(cut.substr(0, cut.size() - 1)), "the file ends in face 0 of the 1 its header declares");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // permutation of its ranks (so its values are uniform), it tiles the plane, and it is blue
 // noise: its power spectrum is low at low frequencies, where white noise's is flat.
 #include "samplers/blue_noise.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // Mean power of the (mean-removed) values' 2-D DFT over the frequencies of radius 1 to 8
 // cycles per texture, divided by the mean power over all non-zero frequencies (which
@@ -74,5 +76,6 @@ TEST(BlueNoise, TexturesTileAndDiffer) {
   EXPECT_LT(same, 4);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

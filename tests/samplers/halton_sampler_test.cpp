@@ -3,6 +3,7 @@
 // radical inverse written out in the test; later dimensions are that point's later radical
 // inverses; pbrt-v4's parameters.
 #include "samplers/halton_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -101,4 +103,5 @@ TEST(HaltonSampler, FactoryReadsPbrtParameters) {
   EXPECT_THROW(create_halton_sampler(SamplerContext{zero, IVec2(8, 8), 0, 0}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

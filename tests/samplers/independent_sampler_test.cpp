@@ -1,6 +1,7 @@
 // The independent sampler's factory: pbrt-v4's defaults, the --spp override, the seed sources.
 // (Uniformity, determinism and clones are in sampler_properties_test.cpp.)
 #include "samplers/independent_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -57,4 +59,5 @@ TEST(IndependentSampler, RejectsSampleCountsOutOfRange) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

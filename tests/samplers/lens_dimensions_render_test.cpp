@@ -5,11 +5,13 @@
 // so the test can fail.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Image render(const std::string& lens_dimensions, uint64_t seed, double accommodation = 0) {
   SceneDescription desc = parse_scene_file(std::string(EYETRACE_SOURCE_DIR) + "/scenes/peripheral.pbrt");
@@ -62,5 +64,6 @@ TEST(LensDimensions, JointAndPaddedConvergeToTheSameImage) {
   EXPECT_GT(msd(mean(j1, j2), mean(a1, a2)), 5.0 * (msd(j1, j2) / 4 + msd(a1, a2) / 4));
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // Sobol' matrices, the Pascal matrix, the net properties that define a (0,2)-sequence, radical
 // inverses computed by hand, and the structure every scrambling must keep.
 #include "samplers/lowdiscrepancy.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "samplers/rng.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -279,4 +281,5 @@ TEST(RadicalInverse, RandomisationsKeepStratification) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

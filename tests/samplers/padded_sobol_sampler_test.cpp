@@ -7,11 +7,13 @@
 
 #include <set>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "samplers/padded_sobol_sampler.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 PaddedSobolSampler sampler(int spp, Randomization r) { return PaddedSobolSampler(spp, r, 11); }
 
@@ -73,5 +75,6 @@ TEST(PaddedSobolSampler, ANonPowerOfTwoCountWarns) {
   EXPECT_FALSE(s->progressive());
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,6 +5,7 @@
 // 2^(k+1) x 2^k grids and in each of the 2 * 4^k strips of either axis), and the
 // best-candidate choice spreads the points farther apart than plain pmj02.
 #include "samplers/pmj02bn_points.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::is_02_net;
 
@@ -117,5 +119,6 @@ TEST(Pmj02bnPoints, BestCandidateSpreadsThePointsApart) {
   EXPECT_GT(own, 1.15 * plain) << "own sets " << own << ", pmj02 " << plain;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -4,6 +4,7 @@
 // smooth integral is unbiased and its error falls with spp at the rate of a net; the image does not depend on the
 // number of threads.
 #include "samplers/pmj02bn_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using Points = std::vector<std::array<uint32_t, 2>>;
 
@@ -171,5 +173,6 @@ TEST(Pmj02bnSampler, TooManySamplesIsAnErrorNamingTheParameter) {
   EXPECT_NE(e.find("pixelsamples"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,11 +1,13 @@
 // The embedded pmj02bn tables are what the generators make (so the properties the generator
 // tests establish hold for the sampler's data) and are read with the documented indexing.
 #include "samplers/pmj02bn_tables.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(Pmj02bnTables, PointSetIsTheGeneratorsOutput) {
   const int set = 3;
@@ -30,5 +32,6 @@ TEST(Pmj02bnTables, TexturesAreTheGeneratorsOutput) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../support/chi2.h"
+#include "../support/unity_id.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/independent_sampler.h"
 #include "samplers/padded_sobol_sampler.h"
@@ -19,6 +20,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -247,4 +249,5 @@ TEST_P(SamplerProperties, ToStringNamesItsParameters) {
 INSTANTIATE_TEST_SUITE_P(AllSamplers, SamplerProperties, ::testing::ValuesIn(all_cases()),
                          [](const ::testing::TestParamInfo<Case>& param_info) { return param_info.param.name; });
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

@@ -2,6 +2,7 @@
 // whose first two coordinates, scaled to the image, fall in p, found here by brute force; the
 // film positions of a pixel's 2^k samples form a (0,k,2)-net; padding past the matrices.
 #include "samplers/sobol_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -112,4 +114,5 @@ TEST(SobolSampler, FactoryReadsPbrtParameters) {
   EXPECT_THROW(create_sobol_sampler(SamplerContext{bad_r, IVec2(8, 8), 0, 0}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

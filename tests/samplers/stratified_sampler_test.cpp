@@ -2,6 +2,7 @@
 // dimension and its own cell of the xsamples x ysamples grid in every 2D pair; the factory's
 // pbrt-v4 parameters and --spp factorisation.
 #include "samplers/stratified_sampler.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -94,4 +96,5 @@ TEST(StratifiedSampler, RejectsEmptyGrids) {
   EXPECT_THROW(create_stratified_sampler(SamplerContext{huge, IVec2(4, 4), 0, 0}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

@@ -2,6 +2,7 @@
 // dimension they form a (0,k,2)-net (each sample alone in every elementary interval), for every
 // randomisation; its index shuffle is a bijection over the image; pbrt-v4's parameters.
 #include "samplers/zsobol_sampler.h"
+#include "../support/unity_id.h"
 
 #include <cmath>
 #include <random>
@@ -14,6 +15,7 @@
 #include "scene/params.h"
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using namespace eyetrace;
 
@@ -125,10 +127,12 @@ TEST(ZSobolSampler, RejectsBadParameters) {
   EXPECT_THROW(create_zsobol_sampler(SamplerContext{ok, IVec2(8, 8), (1 << 24) + 1, 0}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The sampler caches per-pixel work; values must not depend on the order of queries. A sampler
 // that jumps between pixels, samples and dimensions (some past the cache) must return exactly
@@ -167,11 +171,13 @@ TEST(ZSobolSampler, SampleIndexOutermostOrderGivesTheSameValues) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // A defocused edge couples film position and pupil: f = [x + u > 1] over (film x, lens u),
 // mean 1/2 in every pixel. Joint lens dimensions stratify (x, u) together and must integrate it
@@ -201,5 +207,6 @@ TEST(ZSobolSampler, JointLensDimensionsStratifyFilmAndPupilTogether) {
   EXPECT_LT(joint, 0.75 * padded) << "joint " << joint << " padded " << padded;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,11 +5,13 @@
 
 #include <string>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::vector<Diagnostic> parse_errors(const std::string& text) {
   try {
@@ -101,5 +103,6 @@ TEST(Diagnostics, TextIsOneLinePerDiagnostic) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

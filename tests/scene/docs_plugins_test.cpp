@@ -11,10 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "../support/unity_id.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using NameSet = std::set<std::string>;
 
@@ -199,5 +201,6 @@ TEST(DocsPlugins, UnsupportedNamesAreNotRegistered) {
   EXPECT_EQ(rows, registered.size() - 1) << "one row per directive except AreaLightSource";
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -6,11 +6,13 @@
 // so the samples are the same ones.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Image render(const std::string& film_extra, const std::string& world_extra, const std::string& camera_extra = "") {
   const std::string text = "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30 " + camera_extra +
@@ -80,5 +82,6 @@ TEST(FilmExposure, TheCameraShutterIntervalIsTheExposureTime) {
   EXPECT_NE(e.find("never opens"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

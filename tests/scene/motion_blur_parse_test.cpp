@@ -7,11 +7,13 @@
 
 #include <string>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 SceneDescription parse(const std::string& text) { return parse_scene_string(text, "m.pbrt", "."); }
 
@@ -149,5 +151,6 @@ TEST(MotionBlurParse, MirroringOnlyAtOneEndIsAnError) {
       << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

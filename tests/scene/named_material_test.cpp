@@ -10,11 +10,12 @@
 #include <string>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::channel_mean;
 using test::image_mean;
@@ -56,5 +57,6 @@ TEST(NamedMaterial, UndefinedNameThatNoShapeUsesIsNoError) {
   EXPECT_EQ(error_of(kHead + "NamedMaterial \"n\"\nLightSource \"point\"\n"), "");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -6,11 +6,13 @@
 #include <set>
 #include <stdexcept>
 
+#include "../support/unity_id.h"
 #include "scene/param_spec.h"
 #include "scene/registry.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const PluginSpec& spec() {
   static const PluginSpec s{
@@ -162,5 +164,6 @@ TEST(ParamSpec, EveryRegisteredTableIsConsistent) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -7,11 +7,13 @@
 
 #include <stdexcept>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "scene/params.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param real(const std::string& type, const std::string& name, double v, int column) {
   Param p;
@@ -66,5 +68,6 @@ TEST(ParameterList, RepeatedNameWithAnotherTypeIsAnError) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

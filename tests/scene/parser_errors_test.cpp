@@ -9,11 +9,12 @@
 #include <unistd.h>
 
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -303,5 +304,6 @@ TEST(ParserErrors, TruncatedFilesFailCleanly) {
   EXPECT_NE(cut_after("LookAt 0 0 5   0").find("LookAt takes 9 numbers; got end of file after 4"), std::string::npos);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

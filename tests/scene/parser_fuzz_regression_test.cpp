@@ -4,12 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::string parse_error(const std::string& text) {
   try {
@@ -32,5 +33,6 @@ TEST(ParserFuzzRegression, ParameterWithoutValueAtEndOfFile) {
             "fuzz.pbrt:3:1: error: parameter \"integer pixelsamplesk\" has no value: end of file");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -8,11 +8,12 @@
 
 #include "../support/gzip_file.h"
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::TempDir;
 
@@ -122,5 +123,6 @@ TEST(ParserInclude, CompressedTopLevelFile) {
   EXPECT_EQ(parse_scene_file(dir.file("scene.pbrt.gz")).shapes.size(), 1u);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // semantics and transforms, checked against hand-counted file positions and analytic
 // matrices. Malformed input is covered in parser_errors_test.cpp.
 #include "scene/parser.h"
+#include "../support/unity_id.h"
 #include "scene/param_spec.h"
 #include "shapes/sphere.h"
 
@@ -14,8 +15,8 @@
 #include "scene/tokenizer.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -470,5 +471,6 @@ Shape "disk"
 
 // ActiveTransform and TransformTimes: tests/scene/motion_blur_parse_test.cpp.
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,14 +5,15 @@
 
 #include <string>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/film.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // A diffuse sphere filling the view in a uniform white environment reflects exactly its
 // albedo (one bounce, then the light): the rendered colour is the reflectance.
@@ -108,5 +109,6 @@ TEST(ReflectanceRange, StrictMakesTheWarningAnError) {
   set_warnings_fatal(false);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -2,6 +2,7 @@
 // Python module: the option texts are read to the values they spell, malformed ones are errors
 // naming the option, and the setup built with them has the overridden film, sampler and camera.
 #include "scene/render_request.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const char* kScene =
     "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
@@ -67,5 +69,6 @@ TEST(RenderRequest, RefusesBadNumbers) {
   EXPECT_EQ(error_parameter([&] { render_overrides(r); }), "--max-memory");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -6,14 +6,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/unity_id.h"
 #include "render/render_state.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 #include "scene/scene_fingerprint.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -50,5 +51,6 @@ TEST(SceneFingerprint, CoversTheContentOfFilesTheSceneReads) {
   fs::remove_all(dir);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -10,11 +10,12 @@
 #include <regex>
 
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::TempDir;
@@ -325,5 +326,6 @@ TEST(SceneImport, TheImportedFilesStateEndsWithIt) {
             std::string::npos);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -6,11 +6,13 @@
 
 #include <cmath>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "scene/parser.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const char* kZeroRow = "[ 1 0 0 0  0 1 0 0  0 0 0 0  0 0 0 1 ]";
 
@@ -53,5 +55,6 @@ TEST(SingularTransform, ReplacedTransformEndsIt) {
             "something flat, without a normal");
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

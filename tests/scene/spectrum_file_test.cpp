@@ -9,12 +9,14 @@
 #include <fstream>
 
 #include "../support/temp_files.h"
+#include "../support/unity_id.h"
 #include "core/named_spectra.h"
 #include "scene/parser.h"
 #include "scene/spectrum_param.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::TempDir;
@@ -98,5 +100,6 @@ TEST(SpectrumFile, MalformedFilesNameTheLine) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

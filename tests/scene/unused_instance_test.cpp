@@ -2,14 +2,15 @@
 // its shapes and BVH (issue 5, "no BVH build for geometry no ray can reach") and says so once.
 #include <gtest/gtest.h>
 
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "render/scene.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 // The object's sphere has a negative radius, an error whenever the sphere is built: building
 // succeeds only if the object really is skipped.
@@ -38,5 +39,6 @@ TEST(UnusedInstance, SameObjectInstancedIsBuilt) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

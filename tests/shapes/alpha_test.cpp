@@ -9,9 +9,11 @@
 #include <cmath>
 
 #include "../support/render_text.h"
+#include "../support/unity_id.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Image render(const std::string& text) { return test::render_text(text, "alpha.pbrt"); }
 
@@ -152,5 +154,6 @@ TEST(AlphaCutout, AreaLightsEmitOnlyWhereTheShapeIsAndInvisibleOnesStillLight) {
   EXPECT_EQ(mean(render(up)), 0.0);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

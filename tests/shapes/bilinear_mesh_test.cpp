@@ -1,6 +1,7 @@
 // Bilinear patch meshes split into triangles: exact for planar patches (position, normal
 // and, for parallelograms, pbrt's patch uv), plus validation errors.
 #include "shapes/bilinear_mesh.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param param(const std::string& type, const std::string& name, std::vector<double> numbers) {
   Param p;
@@ -100,5 +102,6 @@ TEST(BilinearMesh, ValidationErrorsNameTheParameter) {
   EXPECT_NE(e.find("blp.pbrt:8:3"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,6 +3,7 @@
 // evaluated directly (their textbook matrix forms, independent of the blossoming used), segment
 // counts as pbrt-v4 defines them, and the Bezier derivative against a central difference.
 #include "shapes/curve_basis.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::vector<Vec3> random_points(int n, unsigned seed) {
   std::mt19937 rng(seed);
@@ -102,5 +104,6 @@ TEST(CurveBasis, CubicBezierSegmentsShareEndPointsAndDerivativeMatchesDifference
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

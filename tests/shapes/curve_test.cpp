@@ -5,6 +5,7 @@
 // curves by a Monte Carlo count of hits against width x length (length by an independent
 // polyline), alpha cut-outs as a binomial fraction, area lights refused, bad input.
 #include "shapes/curve.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +18,8 @@
 #include "scene/texture_store.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using test::expect_near;
 using test::OneShape;
@@ -296,5 +297,6 @@ TEST(Curve, EmbreeIgnoresHitsWithinAWidthOfTheOrigin) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -3,6 +3,7 @@
 // outward normal and ReverseOrientation, a far origin, the area, area sampling by chi-square,
 // millions of random rays (no NaN, every hit on the surface) and parameter errors.
 #include "shapes/cylinder.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,8 @@
 #include "render/scene.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Shape> make_cylinder(std::vector<std::pair<std::string, double>> floats,
                                      const Transform& t = Transform(), bool reverse = false) {
@@ -139,5 +140,6 @@ TEST(Cylinder, ValidationErrorsNameTheParameter) {
   EXPECT_NE(e.find("\"phimax\""), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

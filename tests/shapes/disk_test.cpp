@@ -1,6 +1,7 @@
 // Disks: hits against the analytic ray-plane solution, annulus and wedge cuts, pbrt's uv,
 // orientation, exact areas under any affine transform, and area sampling by chi-square.
 #include "shapes/disk.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +12,8 @@
 #include "render/scene.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 std::unique_ptr<Shape> make_disk(std::vector<std::pair<std::string, double>> floats, const Transform& t = Transform(),
                                  bool reverse = false) {
@@ -126,5 +127,6 @@ TEST(Disk, ValidationErrorsNameTheParameter) {
   EXPECT_NE(e.find("\"phimax\""), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "../support/sample_count.h"
+#include "../support/unity_id.h"
 #include "core/sampling.h"
 #include "render/scene.h"
 #include "shapes/cylinder.h"
@@ -16,8 +17,8 @@
 #include "shapes/triangle_mesh.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param param(const std::string& type, const std::string& name, std::vector<double> numbers) {
   Param p;
@@ -188,5 +189,6 @@ TEST(HitErrorBounds, SpawnedRaysLeaveTriangles) {
   expect_no_self_hits(make_quad, Vec3(0, 0, 1), 0.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -5,6 +5,7 @@
 // and a straight boundary stays straight, a regular tetrahedron keeps its symmetry, the
 // counts follow Euler's formula, and broken control meshes are refused with the reason.
 #include "shapes/loop_subdivision.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 const std::vector<Vec3> kTetra = {{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}};
 const std::vector<int> kTetraFaces = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};  // counter-clockwise from outside
@@ -145,5 +147,6 @@ TEST(LoopSubdivShape, ErrorsNameFileLineAndParameter) {
   EXPECT_NE(e.find("orientations disagree"), std::string::npos) << e;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

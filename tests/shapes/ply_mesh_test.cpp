@@ -3,6 +3,7 @@
 // truncated files are errors naming
 // "filename" and the path.
 #include "shapes/ply_mesh.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,8 @@
 #include "render/scene.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -208,5 +209,6 @@ TEST(PlyMesh, FileErrorsNameParameterAndPath) {
   fs::remove_all(dir);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

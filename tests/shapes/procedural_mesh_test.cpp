@@ -1,6 +1,7 @@
 // The UV-sphere benchmark mesh: triangle counts by construction, outward winding, and
 // convergence of its area to the sphere's 4 pi r^2.
 #include "shapes/procedural_mesh.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 double mesh_area(const ProceduralMesh& m) {
   double area = 0.0;
@@ -60,5 +62,6 @@ TEST(ProceduralMesh, BuildsATriangleMeshWithoutDegenerates) {
   EXPECT_NEAR(mesh->area(), float(4 * mesh_area(m)), 1e-3f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

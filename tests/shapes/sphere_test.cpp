@@ -1,6 +1,7 @@
 // Spheres: hits against the analytic ray-sphere solution, partial spheres, far-away
 // origins (the stable quadratic), pbrt's uv, validation, and area sampling by chi-square.
 #include "shapes/sphere.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +12,8 @@
 #include "render/scene.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 ParameterList sphere_params(std::vector<std::pair<std::string, double>> floats) {
   return test::float_params("sphere.pbrt", 5, floats);
@@ -230,5 +231,6 @@ TEST(Sphere, PartialSphereSamplesStayOnThePart) {
   EXPECT_NEAR(sphere->area(), float(0.5 * kPiDouble * 0.9), 1e-5f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

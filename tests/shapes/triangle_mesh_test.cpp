@@ -1,6 +1,7 @@
 // Triangle meshes: hits against hand-computed answers, pbrt's normal orientation rules,
 // validation errors, and area sampling checked by chi-square.
 #include "shapes/triangle_mesh.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +12,8 @@
 #include "render/scene.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param param(const std::string& type, const std::string& name, std::vector<double> numbers) {
   Param p;
@@ -279,5 +280,6 @@ TEST(TriangleMesh, AreaSamplingIsUniformWithinATriangle) {
   EXPECT_LT(chi_square(counts, {0.25, 0.25, 0.25, 0.25}, n), 16.27);  // 3 dof, alpha 0.001
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -1,11 +1,13 @@
 // The colour-difference helpers of tests/support/ciede2000.h against published values.
 #include "ciede2000.h"
+#include "../support/unity_id.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 using eyetrace::colour::cie76;
 using eyetrace::colour::ciede2000;
@@ -99,4 +101,5 @@ TEST(XyzToLab, FollowsCie1976) {
   EXPECT_LT(xyz_to_lab({0.5 * white[0], 0.5, 0.7}, white).b, 0.0);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace

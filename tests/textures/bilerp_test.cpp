@@ -5,6 +5,7 @@
 
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include "core/transform.h"
 #include "scene/texture_store.h"
@@ -12,6 +13,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr auto number = test::number_param;
 
@@ -62,5 +64,6 @@ TEST(BilerpTexture, SpectrumCornersAreReflectances) {
   for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(s[i], 0.4f, 2e-3f) << i;
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

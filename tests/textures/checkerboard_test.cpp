@@ -4,14 +4,15 @@
 
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/checkerboard_texture.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr auto number = test::number_param;
 
@@ -88,5 +89,6 @@ TEST(Checkerboard, BadDimensionIsAnError) {
   EXPECT_THROW(create_checkerboard_float_texture(TextureContext{p, Transform(), store, ""}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -7,14 +7,15 @@
 
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 #include "core/error.h"
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/direction_mix_texture.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr auto number = test::number_param;
 
@@ -66,5 +67,6 @@ TEST(DirectionMixTexture, ZeroDirIsAnError) {
   }
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

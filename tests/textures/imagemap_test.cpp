@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include <zlib.h>
 
@@ -19,8 +20,8 @@
 #include "textures/imagemap_texture.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -246,5 +247,6 @@ TEST_F(ImagemapTest, UnknownFilterAndWrapAreErrors) {
   EXPECT_THROW(create_imagemap_float_texture(TextureContext{q, Transform(), store, dir_.string()}), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "../support/unity_id.h"
 #include "core/transform.h"
 #include "scene/texture_store.h"
 #include "textures/dots_texture.h"
@@ -17,6 +18,7 @@
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 TEST(PerlinNoise, ZeroAtLatticePointsAndPeriodic) {
   std::mt19937 rng(1);
@@ -122,5 +124,6 @@ TEST(MarbleTexture, SplineEndsAndRange) {
   EXPECT_NEAR(marble_colour(1.5f / 6.f).r, 1.5f * (0.58f + 3 * 0.58f + 3 * 0.5f + 0.6f) / 8.f, 1e-5f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

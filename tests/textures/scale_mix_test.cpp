@@ -4,6 +4,7 @@
 
 #include "../support/params.h"
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include "core/transform.h"
 #include "scene/texture_store.h"
@@ -13,8 +14,8 @@
 #include "textures/scale_texture.h"
 
 namespace eyetrace {
-// unity-build: alone (helpers named as in other test files of its folder)
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 constexpr auto number = test::number_param;
 
@@ -93,5 +94,6 @@ TEST(MixTexture, AmountFromATexture) {
   EXPECT_EQ(t->evaluate(odd), 10.f);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace

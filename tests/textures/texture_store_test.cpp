@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "../support/spectral.h"
+#include "../support/unity_id.h"
 
 #include "scene/texture_store.h"
 #include "textures/constant_texture.h"
 
 namespace eyetrace {
 namespace {
+namespace EYETRACE_UNITY_ID {
 
 Param param(const std::string& type, const std::string& name, std::vector<double> v, std::vector<std::string> s = {}) {
   Param p;
@@ -95,5 +97,6 @@ TEST(TextureStore, WrongParameterTypeIsAnError) {
   EXPECT_THROW(store.float_param(p, "roughness", 0.f), SceneError);
 }
 
+}  // namespace EYETRACE_UNITY_ID
 }  // namespace
 }  // namespace eyetrace
