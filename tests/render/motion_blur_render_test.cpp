@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "../support/unity_id.h"
+#include "core/constants.h"
 #include "core/error.h"
 #include "render/film.h"
 #include "render/integrator.h"
@@ -25,8 +26,6 @@
 namespace eyetrace {
 namespace {
 namespace EYETRACE_UNITY_ID {
-
-constexpr float kPi = 3.14159265358979f;
 
 RenderSetup setup_for(const std::string& text) {
   SceneDescription desc = parse_scene_string(text, "motion.pbrt", ".");
