@@ -8,18 +8,13 @@
 //   the cornea), so the time per item includes the wasted ones.
 // - Stopping at the iris: a ray the iris blocks is not traced through the cornea, against
 //   tracing every surface regardless.
-// - No texture system for untextured scenes: the cost of creating OIIO's TextureSystem
-//   against the whole setup of the Cornell box, which has no image textures.
 #include <benchmark/benchmark.h>
-
-#include <OpenImageIO/texture.h>
 
 #include <random>
 
 #include "cameras/chief_ray.h"
 #include "cameras/lens_system_camera.h"
 #include "scene/parser.h"
-#include "scene/scene_builder.h"
 
 namespace eyetrace {
 namespace {
@@ -129,24 +124,6 @@ void BM_TraceThroughIris(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations() * naive.rays.size()));
 }
 BENCHMARK(BM_TraceThroughIris);
-
-void BM_CornellSetup(benchmark::State& state) {
-  for (auto _ : state) {
-    SceneDescription desc = parse_scene_file(EYETRACE_SOURCE_DIR "/scenes/cornell-box.pbrt");
-    benchmark::DoNotOptimize(build_render_setup(desc, {}));
-  }
-}
-BENCHMARK(BM_CornellSetup)->Unit(benchmark::kMillisecond);
-
-void BM_TextureSystemCreate(benchmark::State& state) {
-  for (auto _ : state) {
-    // A private system (shared = false) so each iteration pays the full creation.
-    OIIO::TextureSystem* ts = OIIO::TextureSystem::create(false);
-    benchmark::DoNotOptimize(ts);
-    OIIO::TextureSystem::destroy(ts);
-  }
-}
-BENCHMARK(BM_TextureSystemCreate)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace eyetrace

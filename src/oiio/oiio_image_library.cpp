@@ -2,7 +2,6 @@
 // libeyetrace_oiio.so and loaded when first needed (render/image_library_loader.h). It links
 // nothing of eyetrace: it sees the interface header and reports failures as values.
 #include <OpenImageIO/imageio.h>
-#include <OpenImageIO/texture.h>
 
 #include <algorithm>
 #include <exception>
@@ -11,31 +10,6 @@
 
 namespace eyetrace {
 namespace {
-
-using OIIO::TextureOpt;
-using OIIO::TextureSystem;
-
-TextureOpt texture_options(const TextureLookupOptions& o) {
-  TextureOpt opt;
-  opt.interpmode = TextureOpt::InterpBilinear;
-  // pbrt-v4's point and bilinear filters pick one MIP level from the footprint.
-  switch (o.filter) {
-    case TextureLookupOptions::Filter::Point:
-      opt.interpmode = TextureOpt::InterpClosest;
-      opt.mipmode = TextureOpt::MipModeOneLevel;
-      break;
-    case TextureLookupOptions::Filter::Bilinear: opt.mipmode = TextureOpt::MipModeOneLevel; break;
-    case TextureLookupOptions::Filter::Trilinear: opt.mipmode = TextureOpt::MipModeTrilinear; break;
-    case TextureLookupOptions::Filter::Ewa: opt.mipmode = TextureOpt::MipModeAniso; break;
-  }
-  opt.anisotropic = std::max(1, o.max_anisotropy);
-  TextureOpt::Wrap wrap = o.wrap == TextureLookupOptions::Wrap::Black   ? TextureOpt::WrapBlack
-                          : o.wrap == TextureLookupOptions::Wrap::Clamp ? TextureOpt::WrapClamp
-                                                                        : TextureOpt::WrapPeriodic;
-  opt.swrap = opt.twrap = wrap;
-  opt.fill = 0.f;
-  return opt;
-}
 
 ImageFileFormat format_of(const OIIO::ImageSpec& spec) {
   ImageFileFormat f;
@@ -47,57 +21,6 @@ ImageFileFormat format_of(const OIIO::ImageSpec& spec) {
   f.alpha_channel = spec.alpha_channel;
   return f;
 }
-
-class OiioTextureLookup final : public TextureLookup {
- public:
-  OiioTextureLookup(TextureSystem* ts, TextureSystem::TextureHandle* handle, TextureOpt opt)
-      : ts_(ts), handle_(handle), opt_(opt) {}
-  bool lookup(float s, float t, float width, int n, float* out) const override {
-    TextureOpt o = opt_;  // OpenImageIO may write into the options
-    return ts_->texture(handle_, nullptr, o, s, t, width, 0.f, 0.f, width, n, out);
-  }
-
- private:
-  TextureSystem* ts_;
-  TextureSystem::TextureHandle* handle_;
-  TextureOpt opt_;
-};
-
-class OiioTextureFiles final : public TextureFiles {
- public:
-  OiioTextureFiles() : ts_(TextureSystem::create(true)) {
-    ts_->attribute("automip", 1);  // trilinear/ewa on plain (un-MIPmapped) images
-    ts_->attribute("autotile", 64);
-    ts_->attribute("max_memory_MB", 1024.f);
-  }
-  ~OiioTextureFiles() override {
-    // The system is OpenImageIO's shared one (destroying a private one trips a sized-delete
-    // mismatch inside OpenImageIO 2.4 under AddressSanitizer). Files changed on disk since
-    // they were read are dropped from its cache, so a later scene sees the new contents.
-    ts_->invalidate_all(false);
-    TextureSystem::destroy(ts_);
-  }
-  std::unique_ptr<TextureLookup> open(const std::string& path, const TextureLookupOptions& options, int* channels,
-                                      ImageFileFormat* format, std::string* error) override {
-    OIIO::ustring upath(path);
-    OIIO::ImageSpec spec;
-    if (!ts_->get_imagespec(upath, 0, spec)) {
-      *error = ts_->geterror();
-      return nullptr;
-    }
-    TextureSystem::TextureHandle* handle = ts_->get_texture_handle(upath);
-    if (!handle) {
-      *error = ts_->geterror();
-      return nullptr;
-    }
-    *channels = spec.nchannels;
-    *format = format_of(spec);
-    return std::make_unique<OiioTextureLookup>(ts_, handle, texture_options(options));
-  }
-
- private:
-  TextureSystem* ts_;
-};
 
 class OiioImageLibrary final : public ImageLibrary {
  public:
@@ -163,8 +86,6 @@ class OiioImageLibrary final : public ImageLibrary {
     in->close();
     return v;
   }
-
-  std::unique_ptr<TextureFiles> texture_files() override { return std::make_unique<OiioTextureFiles>(); }
 };
 
 }  // namespace

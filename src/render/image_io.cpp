@@ -12,6 +12,7 @@
 #include "render/exr_file.h"
 #include "render/image_library.h"
 #include "render/image_library_loader.h"
+#include "render/png_file.h"
 
 namespace eyetrace {
 
@@ -96,6 +97,10 @@ bool read_image(const std::string& path, Image* image, ImageFileFormat* format, 
   try {
     if (is_exr_file(path)) {
       *image = read_exr(path);  // float pixels, linear
+      return true;
+    }
+    if (is_png_file(path)) {
+      *image = read_png(path, format);
       return true;
     }
     // A file that cannot be opened at all needs no image library to say so.

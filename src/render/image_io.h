@@ -1,7 +1,7 @@
-// Reading and writing images: OpenEXR through the OpenEXR library (render/exr_file.h), every
-// other format through OpenImageIO, loaded on demand (render/image_library.h). Writes go to a
-// temporary file in the target's folder and are renamed into place, so an existing output is
-// never half-written.
+// Reading and writing images: OpenEXR through the OpenEXR library (render/exr_file.h), PNG
+// input through libpng (render/png_file.h), every other format through OpenImageIO, loaded on
+// demand (render/image_library.h). Writes go to a temporary file in the target's folder and are
+// renamed into place, so an existing output is never half-written.
 #pragma once
 #include <map>
 #include <string>

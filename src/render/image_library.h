@@ -1,14 +1,14 @@
 // Everything eyetrace asks of OpenImageIO, as a small abstract interface. OpenImageIO pulls in
 // about 260 shared libraries (ffmpeg, GDAL, OpenVDB...) that cost 0.16 s and 130 MB at every
 // process start, so it lives in a module of its own (src/oiio, libeyetrace_oiio.so) that is
-// loaded the first time an image other than OpenEXR is read or written, or a scene has an image
-// texture (image_library_loader.h). OpenEXR files are read and written without it (exr_file.h).
+// loaded the first time an image other than OpenEXR or PNG is read, or other than OpenEXR is
+// written (image_library_loader.h). OpenEXR files are read and written without it (exr_file.h),
+// PNG files read without it (png_file.h).
 //
 // The module is self-contained: it sees only this header and image_io.h's Image, and reports
 // failures as return values, never as exceptions across the boundary.
 #pragma once
 #include <map>
-#include <memory>
 #include <string>
 
 #include "render/image_io.h"
@@ -23,34 +23,6 @@ struct ImageFileFormat {
   int alpha_channel = -1;   // index of the alpha channel, -1 when none is known
 };
 
-// The filtering of pbrt-v4's imagemap texture.
-struct TextureLookupOptions {
-  enum class Filter { Point, Bilinear, Trilinear, Ewa };
-  enum class Wrap { Repeat, Black, Clamp };
-  Filter filter = Filter::Bilinear;
-  Wrap wrap = Wrap::Repeat;
-  int max_anisotropy = 8;
-};
-
-// One image file with its filtering options. Thread-safe.
-class TextureLookup {
- public:
-  virtual ~TextureLookup() = default;
-  // `n` filtered channels at (s, t) (t = 0 is the top row) over a footprint `width` wide in
-  // both directions; false when the lookup failed.
-  virtual bool lookup(float s, float t, float width, int n, float* out) const = 0;
-};
-
-// The texture cache a scene's image textures share.
-class TextureFiles {
- public:
-  virtual ~TextureFiles() = default;
-  // Opens `path` (its channels and format in *format and *channels); null with the reason in
-  // *error when it cannot be read.
-  virtual std::unique_ptr<TextureLookup> open(const std::string& path, const TextureLookupOptions& options,
-                                              int* channels, ImageFileFormat* format, std::string* error) = 0;
-};
-
 class ImageLibrary {
  public:
   // All channels as float, in the order OpenImageIO gives them; false with the reason in *error.
@@ -61,7 +33,6 @@ class ImageLibrary {
                      const std::map<std::string, std::string>& metadata, std::string* error) = 0;
   // One string attribute of the file's header ("" if absent or unreadable).
   virtual std::string attribute(const std::string& path, const std::string& name) = 0;
-  virtual std::unique_ptr<TextureFiles> texture_files() = 0;
 
  protected:
   ~ImageLibrary() = default;  // the module's single instance lives as long as the process

@@ -1,7 +1,6 @@
 #include "scene/texture_store.h"
 
-#include "render/image_library.h"
-#include "render/image_library_loader.h"
+#include "render/mipmap.h"
 
 namespace eyetrace {
 
@@ -43,12 +42,12 @@ bool is_texture_ref(const ParameterList& params, const std::string& name) {
 TextureStore::TextureStore() = default;
 
 TextureStore::~TextureStore() {
-  // Textures hold handles into the texture cache: release them first.
+  // Textures point into the pyramids: release them first.
   floats_.clear();
   spectra_.clear();
   float_store_.clear();
   spectrum_store_.clear();
-  texture_files_.reset();
+  mipmaps_.clear();
 }
 
 void TextureStore::add_float(const std::string& name, std::unique_ptr<FloatTexture> tex, const SourceLoc& loc) {
@@ -126,9 +125,10 @@ const SpectrumTexture* TextureStore::spectrum_param_or_null(const ParameterList&
   return keep(std::make_unique<ConstantSpectrumTexture>(v->spectrum));
 }
 
-TextureFiles& TextureStore::texture_files(const std::string& file) {
-  if (!texture_files_) texture_files_ = image_library(file).texture_files();
-  return *texture_files_;
+const MipMap& TextureStore::mipmap(const std::string& key, const std::function<std::unique_ptr<MipMap>()>& make) {
+  std::unique_ptr<MipMap>& m = mipmaps_[key];
+  if (!m) m = make();
+  return *m;
 }
 
 const FloatTexture* TextureStore::keep(std::unique_ptr<FloatTexture> tex) {

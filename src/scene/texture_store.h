@@ -1,9 +1,9 @@
 // Named textures of a scene, and the lookup that lets a material parameter be either a
 // constant ("rgb reflectance" [.5 .5 .5]) or a texture ("texture reflectance" "wood").
-// Constants become ConstantTextures owned by the store. Image textures share one texture cache
-// (OpenImageIO's TextureSystem, render/image_library.h), made only when a scene has an image
-// texture.
+// Constants become ConstantTextures owned by the store, and so do image pyramids
+// (render/mipmap.h): the image textures that read one file the same way share one.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -16,7 +16,7 @@
 
 namespace eyetrace {
 
-class TextureFiles;  // render/image_library.h
+class MipMap;  // render/mipmap.h
 
 class TextureStore {
  public:
@@ -48,9 +48,9 @@ class TextureStore {
   const SpectrumTexture* spectrum_param(const PluginParams& params, const std::string& name,
                                         SpectrumType use = SpectrumType::Albedo);
 
-  // The shared texture cache, made on the first call (which loads the OpenImageIO module: an
-  // error naming `file` when it cannot be loaded).
-  TextureFiles& texture_files(const std::string& file);
+  // The pyramid stored under `key` (a file and how its values are decoded and wrapped), made
+  // by `make` on the first call with that key.
+  const MipMap& mipmap(const std::string& key, const std::function<std::unique_ptr<MipMap>()>& make);
   // Keeps `tex` alive as long as the store (for textures made on the fly).
   const FloatTexture* keep(std::unique_ptr<FloatTexture> tex);
   const SpectrumTexture* keep(std::unique_ptr<SpectrumTexture> tex);
@@ -60,7 +60,7 @@ class TextureStore {
   std::map<std::string, const SpectrumTexture*> spectra_;
   std::vector<std::unique_ptr<FloatTexture>> float_store_;
   std::vector<std::unique_ptr<SpectrumTexture>> spectrum_store_;
-  std::unique_ptr<TextureFiles> texture_files_;
+  std::map<std::string, std::unique_ptr<MipMap>> mipmaps_;
 };
 
 }  // namespace eyetrace

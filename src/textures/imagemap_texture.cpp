@@ -5,6 +5,7 @@
 
 #include "render/image_io.h"
 #include "render/image_library.h"
+#include "render/mipmap.h"
 #include "scene/scene_files.h"
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
@@ -13,75 +14,75 @@ namespace eyetrace {
 
 namespace {
 
-enum class Encoding { Linear, SRGB, Gamma };
-
 // Everything an image lookup needs, shared by the float and spectrum variants.
 struct ImageLookup {
-  std::unique_ptr<TextureLookup> image;  // one virtual call per lookup
-  int channels = 0;                      // colour channels in the file (alpha excluded when we can tell)
-  Encoding encoding = Encoding::Linear;
-  float gamma = 1.f;
+  const MipMap* map = nullptr;  // owned by the scene's TextureStore
+  MipFilter filter = MipFilter::Bilinear;
+  float max_anisotropy = 8.f;
   float scale = 1.f;
   bool invert = false;
   TextureMapping2D mapping;
 
-  // Up to 3 channels at the hit, decoded, scaled and inverted; returns how many are valid.
+  // The channels at the hit (1 or 3), filtered, scaled and inverted; returns how many.
   int fetch(const TextureEvalContext& ctx, float out[3]) const {
     TextureCoords c = mapping.map(ctx);
-    int n = std::min(channels, 3);
-    out[0] = out[1] = out[2] = 0.f;
-    if (!image->lookup(c.st.x, 1.f - c.st.y, c.width, n, out)) return 0;
+    // pbrt-v4 flips t so that t = 0 is the image's top row; the footprint is square.
+    map->filter(filter, max_anisotropy, Vec2(c.st.x, 1.f - c.st.y), Vec2(c.width, 0.f), Vec2(0.f, c.width), out);
+    const int n = map->channels();
     for (int i = 0; i < n; ++i) out[i] = finish(out[i]);
     return n;
   }
 
   float finish(float v) const {
-    if (encoding == Encoding::SRGB)
-      v = srgb_to_linear(v);
-    else if (encoding == Encoding::Gamma)
-      v = std::pow(std::max(v, 0.f), gamma);
     v *= scale;
     if (invert) v = std::max(0.f, 1.f - v);
     return std::isfinite(v) ? v : 0.f;
   }
 };
 
-TextureLookupOptions read_options(const PluginParams& p) {
-  TextureLookupOptions o;
+MipFilter read_filter(const PluginParams& p) {
   const std::string filter = p.get_string("filter");  // one of the declared choices
-  o.filter = filter == "point"       ? TextureLookupOptions::Filter::Point
-             : filter == "bilinear"  ? TextureLookupOptions::Filter::Bilinear
-             : filter == "trilinear" ? TextureLookupOptions::Filter::Trilinear
-                                     : TextureLookupOptions::Filter::Ewa;  // ewa, EWA
-  o.max_anisotropy = std::max(1, int(p.get_float("maxanisotropy")));
-  const std::string wrap = p.get_string("wrap");
-  o.wrap = wrap == "black"   ? TextureLookupOptions::Wrap::Black
-           : wrap == "clamp" ? TextureLookupOptions::Wrap::Clamp
-                             : TextureLookupOptions::Wrap::Repeat;
-  return o;
+  return filter == "point"       ? MipFilter::Point
+         : filter == "bilinear"  ? MipFilter::Bilinear
+         : filter == "trilinear" ? MipFilter::Trilinear
+                                 : MipFilter::Ewa;  // ewa, EWA
 }
 
-void read_encoding(const PluginParams& p, const std::string& path, const ImageFileFormat& format, ImageLookup* l) {
-  bool eight_bit = format.eight_bit;
+MipWrap read_wrap(const PluginParams& p) {
+  const std::string wrap = p.get_string("wrap");
+  return wrap == "black" ? MipWrap::Black : wrap == "clamp" ? MipWrap::Clamp : MipWrap::Repeat;
+}
+
+TexelEncoding read_encoding(const PluginParams& p, const std::string& path, const ImageFileFormat& format) {
+  // Floating-point pixels are linear already (pbrt-v4 ignores the encoding for them).
+  if (!format.integer) return {};
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  std::string e = p.has("encoding") ? p.get_string("encoding") : ext == ".png" || eight_bit ? "sRGB" : "linear";
-  if (e == "sRGB" || e == "srgb") {
-    l->encoding = Encoding::SRGB;
-  } else if (e == "linear") {
-    l->encoding = Encoding::Linear;
-  } else if (e.rfind("gamma ", 0) == 0) {
+  std::string e = p.has("encoding") ? p.get_string("encoding") : ext == ".png" || format.eight_bit ? "sRGB" : "linear";
+  if (e == "sRGB" || e == "srgb") return {TexelEncoding::Kind::SRGB, 1.f};
+  if (e == "linear") return {};
+  if (e.rfind("gamma ", 0) == 0) {
     char* end = nullptr;
     float g = std::strtof(e.c_str() + 6, &end);
     if (!(g > 0.f) || !std::isfinite(g) || (end && *end != '\0'))
       p.fail("encoding", fmt::format("bad gamma in \"{}\"", e));
-    l->encoding = Encoding::Gamma;
-    l->gamma = g;
-  } else {
-    p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
+    return {TexelEncoding::Kind::Gamma, g};
   }
-  // Floating-point pixels are linear already (pbrt-v4 ignores the encoding for them).
-  if (!format.integer) l->encoding = Encoding::Linear;
+  p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
+}
+
+// The file's pyramid: its colour channels (alpha dropped; fewer than three read as grey).
+std::unique_ptr<MipMap> make_mipmap(const PluginParams& p, const std::string& path) {
+  Image image;
+  ImageFileFormat format;
+  std::string why;
+  if (!read_image(path, &image, &format, &why))
+    p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
+  int colour = image.channels;
+  if (format.alpha_channel >= 0 && format.alpha_channel < 3) colour = std::min(colour, format.alpha_channel);
+  if (colour < 1) p.fail("filename", fmt::format("image \"{}\" has no colour channels", path));
+  return std::make_unique<MipMap>(image, colour >= 3 ? 3 : 1, format.eight_bit, read_encoding(p, path, format),
+                                  read_wrap(p));
 }
 
 }  // namespace
@@ -89,10 +90,10 @@ void read_encoding(const PluginParams& p, const std::string& path, const ImageFi
 const PluginSpec& imagemap_texture_spec() {
   static const PluginSpec spec{
       "Texture", "an image file",
-      "Filtering through OpenImageIO's texture system; no `octahedralsphere` wrap; 8-bit images other than PNG "
+      "pbrt-v4's MIP map and filters (render/mipmap.h); no `octahedralsphere` wrap; 8-bit images other than PNG "
       "default to sRGB (pbrt-v4: only `.png`).",
       std::vector<ParamSpec>{
-          param::string("filename").shown_default("required").describe("any format OpenImageIO reads"),
+          param::string("filename").shown_default("required").describe("PNG, EXR, or any format OpenImageIO reads"),
           param::string("filter", "bilinear").in({"point", "bilinear", "trilinear", "ewa", "EWA"}),
           param::real("maxanisotropy", 8).at_least(1), param::string("wrap", "repeat").in({"repeat", "black", "clamp"}),
           param::string("encoding")
@@ -109,23 +110,19 @@ namespace {
 ImageLookup open_image(const TextureContext& ctx) {
   const PluginParams p(ctx.params, imagemap_texture_spec(), "imagemap");
   if (!p.has("filename")) p.fail("filename", "an imagemap texture needs a \"filename\"");
-  std::string name = p.get_string("filename");
-  std::string path = resolve_scene_file(ctx.search_dir, name);
-
-  ImageLookup l;
+  std::string path = resolve_scene_file(ctx.search_dir, p.get_string("filename"));
   if (!std::filesystem::is_regular_file(path))
     p.fail_missing_file("filename", fmt::format("image file \"{}\" not found", path));
-  TextureFiles& files = ctx.textures.texture_files(path);
-  ImageFileFormat format;
-  std::string why;
-  l.image = files.open(path, read_options(p), &l.channels, &format, &why);
-  if (!l.image) p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
-  if (format.alpha_channel >= 0 && format.alpha_channel < 3) l.channels = std::min(l.channels, format.alpha_channel);
-  if (l.channels < 1) p.fail("filename", fmt::format("image \"{}\" has no colour channels", path));
 
+  ImageLookup l;
+  // Textures that read one file with the same wrap and encoding share its pyramid.
+  const std::string key =
+      fmt::format("{}\n{}\n{}", path, p.get_string("wrap"), p.has("encoding") ? p.get_string("encoding") : "");
+  l.map = &ctx.textures.mipmap(key, [&] { return make_mipmap(p, path); });
+  l.filter = read_filter(p);
+  l.max_anisotropy = p.get_float("maxanisotropy");
   l.scale = p.get_float("scale");
   l.invert = p.get_bool("invert");
-  read_encoding(p, path, format, &l);
   l.mapping = TextureMapping2D::read(ctx, p);
   return l;
 }

@@ -7,7 +7,7 @@ src/render/image_library_loader.cpp), checked from outside through the eyetrace 
    channel, the same values bit for bit (render_binding_test does RGB and spectral films).
 2. The dynamic loader's own trace (LD_DEBUG=files, glibc) of a render to .exr of a scene with no
    image texture names no libOpenImageIO; the same render to .png does load it, through the
-   module (so the check can tell).
+   module (so the check can tell); nor does a render of a scene with PNG textures.
 3. With EYETRACE_IMAGE_MODULE_DIR pointing at an empty directory, a render to .png fails with a
    non-zero exit and an error naming the image and the module, and leaves an existing file of
    that name as it was; a render to .exr still works.
@@ -64,6 +64,14 @@ class ImageOutputTest(unittest.TestCase):
         png = loaded_libraries(*args, "-o", os.path.join(support.SCRATCH, "withoiio.png"))
         self.assertTrue([f for f in png if "libOpenImageIO" in f], png)
         self.assertTrue([f for f in png if "libeyetrace_oiio" in f], png)
+
+    def test_png_textured_render_maps_no_openimageio(self):
+        """PNG textures are read by libpng and filtered by eyetrace's MIP map (src/render/mipmap.h)."""
+        scene = support.scene_path("peripheral.pbrt")
+        args = ["render", scene, "--quiet", "--spp", "1", "--resolution", "8x8"]
+        exr = loaded_libraries(*args, "-o", os.path.join(support.SCRATCH, "textured.exr"))
+        self.assertTrue(any("libembree3" in f for f in exr), exr)  # the trace is there
+        self.assertFalse([f for f in exr if "OpenImageIO" in f or "libeyetrace_oiio" in f])
 
     def test_missing_module_is_a_clear_error(self):
         empty = os.path.join(support.SCRATCH, "no-module")

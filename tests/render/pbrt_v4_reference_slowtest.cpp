@@ -1,5 +1,5 @@
 // eyetrace against pbrt-v4 itself, feature by feature: each scene of tests/data/pbrt-v4/
-// (bump mapping on diffuse, conductor and dielectric, the bilerp texture, the mix material,
+// (bump mapping on diffuse, conductor and dielectric, the bilerp and imagemap textures, the mix material,
 // diffusetransmission, thindielectric, partial cylinders, curves, the directionmix, noise and dots
 // textures, the paddedsobol sampler, coatedconductor, hair, measured, a camera sensor with white balance and ISO,
 // maxcomponentvalue, the gbuffer film's channels, motion blur, the grid media uniformgrid,
@@ -198,6 +198,9 @@ void expect_matches_pbrt_v4(const std::string& scene, const std::vector<double>*
 TEST(PbrtV4Reference, BumpMapOnDiffuseAndConductorPlanes) { expect_matches_pbrt_v4("bump"); }
 TEST(PbrtV4Reference, BumpMapOnADielectricBeforeAnEmitter) { expect_matches_pbrt_v4("bump-dielectric"); }
 TEST(PbrtV4Reference, BilerpTextureAsReflectance) { expect_matches_pbrt_v4("bilerp"); }
+// An 8-bit PNG whose sides are not powers of two, bilinear with repeat and point with clamp:
+// eyetrace's MIP map (render/mipmap.h) resizes and decodes it as pbrt-v4 does.
+TEST(PbrtV4Reference, ImagemapPngOfNonPowerOfTwoSizeBilinearAndPoint) { expect_matches_pbrt_v4("imagemap"); }
 TEST(PbrtV4Reference, MixMaterialConstantAndTexturedAmount) { expect_matches_pbrt_v4("mix"); }
 TEST(PbrtV4Reference, DiffuseTransmissionLitFromBothSides) { expect_matches_pbrt_v4("diffusetransmission"); }
 TEST(PbrtV4Reference, ThinDielectricPaneBeforeAnEmitter) { expect_matches_pbrt_v4("thindielectric"); }

@@ -1,14 +1,14 @@
-// The "imagemap" texture: images written here (EXR by image_io, an 8-bit PNG by hand) are read back at texel
-// centres; 8-bit values are decoded with the sRGB formula written out below; wrap modes;
-// missing and unreadable files are errors that name the parameter and the path.
+// The "imagemap" texture: images written here (EXR by image_io, an 8-bit PNG by
+// support/png_writer.h) are read back at texel centres; 8-bit values are decoded with the sRGB
+// formula written out below; wrap modes; missing and unreadable files are errors that name the
+// parameter and the path.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 #include "../support/params.h"
+#include "../support/png_writer.h"
 #include "../support/spectral.h"
 #include "../support/unity_id.h"
-
-#include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
@@ -36,40 +36,6 @@ Param str(const std::string& name, const std::string& v) {
 
 constexpr auto number = test::number_param;
 
-// An 8-bit greyscale PNG written from the specification (ISO/IEC 15948: signature, IHDR, one
-// zlib IDAT of rows each led by filter type 0, IEND; every chunk with its CRC-32).
-void write_grey_png(const fs::path& path, int w, int h, const std::vector<unsigned char>& bytes) {
-  auto be32 = [](std::string& s, uint32_t v) {
-    for (int i = 3; i >= 0; --i) s.push_back(char((v >> (8 * i)) & 0xff));
-  };
-  std::string file = "\x89PNG\r\n\x1a\n";
-  auto chunk = [&](const char* type, const std::string& data) {
-    be32(file, uint32_t(data.size()));
-    std::string body = std::string(type) + data;
-    file += body;
-    be32(file, uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
-  };
-  std::string ihdr;
-  be32(ihdr, uint32_t(w));
-  be32(ihdr, uint32_t(h));
-  ihdr += std::string("\x08\x00\x00\x00\x00", 5);  // 8 bits, greyscale, deflate, filter 0, no interlace
-  std::string raw;
-  for (int y = 0; y < h; ++y) {
-    raw.push_back('\0');
-    raw.append(reinterpret_cast<const char*>(&bytes[size_t(y) * w]), size_t(w));
-  }
-  uLongf n = compressBound(uLong(raw.size()));
-  std::string z(n, '\0');
-  ASSERT_EQ(
-      compress(reinterpret_cast<Bytef*>(z.data()), &n, reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size())),
-      Z_OK);
-  z.resize(n);
-  chunk("IHDR", ihdr);
-  chunk("IDAT", z);
-  chunk("IEND", "");
-  std::ofstream(path, std::ios::binary) << file;
-}
-
 // IEC 61966-2-1 decoding, written independently of the code under test.
 double srgb_decode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 
@@ -92,7 +58,7 @@ class ImagemapTest : public ::testing::Test {
     write_image((dir_ / "rgb.exr").string(), f);
     // 8-bit grey with the byte values below.
     std::vector<unsigned char> g = {0, 10, 64, 128, 200, 255, 33, 90};
-    write_grey_png(dir_ / "grey.png", kW, kH, g);
+    test::write_grey_png((dir_ / "grey.png").string(), kW, kH, g);
     bytes_ = g;
     std::ofstream(dir_ / "notes.png") << "this is not an image\n";
   }
