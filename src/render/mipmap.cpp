@@ -56,7 +56,11 @@ std::vector<ResampleWeight> resample_weights(int old_size, int new_size) {
   return weights;
 }
 
-uint8_t byte_of(float v) { return uint8_t(std::clamp(std::lround(v * 255.f), 0l, 255l)); }
+// The nearest byte to v * 255 (halves up), 0 for NaN.
+uint8_t byte_of(float v) {
+  const float x = v * 255.f + 0.5f;
+  return x >= 255.f ? uint8_t(255) : x > 0.f ? uint8_t(x) : uint8_t(0);
+}
 
 // A texel's coordinates under the wrap mode; false when it is black there.
 bool remap(MipWrap wrap, int& x, int& y, int width, int height) {
@@ -100,19 +104,20 @@ std::vector<float> resize_up(const std::vector<float>& img, int w, int h, int n,
   return out;
 }
 
-// The next level: each texel the 2x2 box average of the level below (linear values), a side
-// of one texel averaging its texel with itself, as pbrt-v4's GeneratePyramid does.
-std::vector<float> half_size(const std::vector<float>& img, int w, int h, int n) {
+// The next level: each texel the 2x2 box average of the level below's linear values (`at` of
+// an index into its interleaved texels), a side of one texel averaging its texel with itself,
+// as pbrt-v4's GeneratePyramid does.
+template <typename At>
+std::vector<float> half_size(int w, int h, int n, const At& at) {
   const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
   std::vector<float> next(size_t(nw) * nh * n);
   for (int y = 0; y < nh; ++y)
     for (int x = 0; x < nw; ++x) {
-      const int x0 = 2 * x, x1 = std::min(2 * x + 1, w - 1), y0 = 2 * y, y1 = std::min(2 * y + 1, h - 1);
+      const size_t x0 = 2 * x, x1 = std::min(2 * x + 1, w - 1), y0 = 2 * y, y1 = std::min(2 * y + 1, h - 1);
       for (int c = 0; c < n; ++c)
-        next[(size_t(y) * nw + x) * n + c] =
-            (img[(size_t(y0) * w + x0) * n + c] + img[(size_t(y0) * w + x1) * n + c] +
-             img[(size_t(y1) * w + x0) * n + c] + img[(size_t(y1) * w + x1) * n + c]) /
-            4.f;
+        next[(size_t(y) * nw + x) * n + c] = (at((y0 * w + x0) * n + c) + at((y0 * w + x1) * n + c) +
+                                              at((y1 * w + x0) * n + c) + at((y1 * w + x1) * n + c)) /
+                                             4.f;
     }
   return next;
 }
@@ -139,38 +144,59 @@ float TexelEncoding::encode(float v) const {
 
 MipMap::MipMap(const Image& image, int channels, bool eight_bit, TexelEncoding encoding, MipWrap wrap)
     : channels_(channels), wrap_(wrap), encoding_(encoding) {
-  for (int i = 0; i < 256; ++i) decode_[size_t(i)] = encoding.decode(float(i) / 255.f);
   const int n = channels_;
-  int w = image.width, h = image.height;
-  std::vector<float> linear(size_t(w) * h * n);  // level 0, decoded
-  for (size_t p = 0; p < size_t(w) * h; ++p)
-    for (int c = 0; c < n; ++c) {
-      float v = image.pixels[p * size_t(image.channels) + size_t(c)];
-      v = std::isfinite(v) ? v : 0.f;
-      linear[p * n + c] = eight_bit ? decode_[byte_of(v)] : encoding.decode(v);
-    }
+  const size_t texels = size_t(image.width) * image.height;
+  auto value = [&](size_t p, int c) {
+    const float v = image.pixels[p * size_t(image.channels) + size_t(c)];
+    return std::isfinite(v) ? v : 0.f;
+  };
+  if (eight_bit) {
+    std::vector<uint8_t> bytes(texels * n);
+    for (size_t p = 0; p < texels; ++p)
+      for (int c = 0; c < n; ++c) bytes[p * n + c] = byte_of(value(p, c));
+    build_from_bytes(std::move(bytes), image.width, image.height);
+    return;
+  }
+  std::vector<float> linear(texels * n);
+  for (size_t p = 0; p < texels; ++p)
+    for (int c = 0; c < n; ++c) linear[p * n + c] = encoding.decode(value(p, c));
+  build(std::move(linear), image.width, image.height, false);
+}
 
-  Level base{w, h, {}, {}};
+MipMap::MipMap(std::vector<uint8_t> bytes, int width, int height, int channels, TexelEncoding encoding, MipWrap wrap)
+    : channels_(channels), wrap_(wrap), encoding_(encoding) {
+  build_from_bytes(std::move(bytes), width, height);
+}
+
+void MipMap::build_from_bytes(std::vector<uint8_t> bytes, int w, int h) {
+  for (int i = 0; i < 256; ++i) decode_[size_t(i)] = encoding_.decode(float(i) / 255.f);
+  if (is_power_of_two(w) && is_power_of_two(h)) {
+    // Level 0 keeps the file's bytes; level 1 averages their decoded values.
+    std::vector<float> next;
+    if (w > 1 || h > 1) next = half_size(w, h, channels_, [&](size_t i) { return decode_[bytes[i]]; });
+    levels_.push_back(Level{w, h, std::move(bytes), {}});
+    if (!next.empty()) build(std::move(next), std::max(1, w / 2), std::max(1, h / 2), true);
+    return;
+  }
+  std::vector<float> linear(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) linear[i] = decode_[bytes[i]];
+  build(std::move(linear), w, h, true);
+}
+
+void MipMap::build(std::vector<float> linear, int w, int h, bool eight_bit) {
+  const int n = channels_;
   if (!is_power_of_two(w) || !is_power_of_two(h)) {
     const int w2 = round_up_power_of_two(w), h2 = round_up_power_of_two(h);
     linear = resize_up(linear, w, h, n, w2, h2, wrap_);
     w = w2, h = h2;
-    base = Level{w, h, {}, {}};
-    store(base, linear, eight_bit);
-  } else if (eight_bit) {  // the file's bytes as they are
-    base.bytes.resize(linear.size());
-    for (size_t p = 0; p < size_t(w) * h; ++p)
-      for (int c = 0; c < n; ++c) base.bytes[p * n + c] = byte_of(image.pixels[p * size_t(image.channels) + c]);
-  } else {
-    base.floats = linear;
   }
-  levels_.push_back(std::move(base));
-  while (w > 1 || h > 1) {
-    linear = half_size(linear, w, h, n);
-    w = std::max(1, w / 2), h = std::max(1, h / 2);
+  for (;;) {
     Level l{w, h, {}, {}};
     store(l, linear, eight_bit);
     levels_.push_back(std::move(l));
+    if (w == 1 && h == 1) return;
+    linear = half_size(w, h, n, [&](size_t i) { return linear[i]; });
+    w = std::max(1, w / 2), h = std::max(1, h / 2);
   }
 }
 
@@ -180,8 +206,7 @@ void MipMap::store(Level& level, const std::vector<float>& linear, bool eight_bi
     return;
   }
   level.bytes.resize(linear.size());
-  for (size_t i = 0; i < linear.size(); ++i)
-    level.bytes[i] = byte_of(encoding_.encode(linear[i]));
+  for (size_t i = 0; i < linear.size(); ++i) level.bytes[i] = byte_of(encoding_.encode(linear[i]));
 }
 
 size_t MipMap::bytes() const {
@@ -211,8 +236,8 @@ void MipMap::bilerp(int level, Vec2 st, float* out) const {
     return;
   }
   for (int c = 0; c < channels_; ++c)
-    out[c] = w00 * texel(level, xi, yi, c) + w10 * texel(level, xi + 1, yi, c) +
-             w01 * texel(level, xi, yi + 1, c) + w11 * texel(level, xi + 1, yi + 1, c);
+    out[c] = w00 * texel(level, xi, yi, c) + w10 * texel(level, xi + 1, yi, c) + w01 * texel(level, xi, yi + 1, c) +
+             w11 * texel(level, xi + 1, yi + 1, c);
 }
 
 void MipMap::filter(MipFilter f, float max_anisotropy, Vec2 st, Vec2 dst0, Vec2 dst1, float* out) const {

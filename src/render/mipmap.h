@@ -36,6 +36,8 @@ class MipMap {
   // (integers divided by their maximum), decoded by `encoding`. `eight_bit`: the file's values
   // are multiples of 1/255, and the levels keep them as bytes.
   MipMap(const Image& image, int channels, bool eight_bit, TexelEncoding encoding, MipWrap wrap);
+  // An 8-bit image's bytes, `channels` per texel, rows top first.
+  MipMap(std::vector<uint8_t> bytes, int width, int height, int channels, TexelEncoding encoding, MipWrap wrap);
 
   int channels() const { return channels_; }
   int levels() const { return int(levels_.size()); }
@@ -53,11 +55,15 @@ class MipMap {
  private:
   struct Level {
     int width = 0, height = 0;
-    std::vector<uint8_t> bytes;   // 8-bit images: encoded values
-    std::vector<float> floats;    // the others: linear values
+    std::vector<uint8_t> bytes;  // 8-bit images: encoded values
+    std::vector<float> floats;   // the others: linear values
   };
   float stored(const Level& l, size_t i) const { return l.bytes.empty() ? l.floats[i] : decode_[l.bytes[i]]; }
   void ewa(int level, Vec2 st, Vec2 dst0, Vec2 dst1, float* out) const;
+  void build_from_bytes(std::vector<uint8_t> bytes, int width, int height);
+  // Level `levels_.size()` from its linear values (resized up first unless its sides are powers
+  // of two), and every level above it.
+  void build(std::vector<float> linear, int width, int height, bool eight_bit);
   void store(Level& level, const std::vector<float>& linear, bool eight_bit) const;
 
   int channels_ = 3;

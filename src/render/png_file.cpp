@@ -96,7 +96,7 @@ bool is_png_file(const std::string& path) {
   return in.read(reinterpret_cast<char*>(sig), 8) && png_sig_cmp(sig, 0, 8) == 0;
 }
 
-Image read_png(const std::string& path, ImageFileFormat* format) {
+PngSamples read_png_samples(const std::string& path, ImageFileFormat* format) {
   Reader r;
   r.file = std::fopen(path.c_str(), "rb");
   if (!r.file) throw std::runtime_error(std::strerror(errno));
@@ -112,23 +112,15 @@ Image read_png(const std::string& path, ImageFileFormat* format) {
     throw std::runtime_error("unsupported PNG layout");
   if (double(row_bytes) * double(h.height) > double(1ull << 34)) throw std::runtime_error("the image is too large");
 
-  std::vector<unsigned char> bytes(row_bytes * h.height);
+  PngSamples out;
+  out.width = int(h.width);
+  out.height = int(h.height);
+  out.channels = h.channels;
+  out.bit_depth = h.bit_depth;
+  out.data.resize(row_bytes * h.height);
   std::vector<png_bytep> rows(h.height);
-  for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = bytes.data() + size_t(y) * row_bytes;
+  for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = out.data.data() + size_t(y) * row_bytes;
   if (!read_rows(r.png, r.info, rows.data())) r.fail();
-
-  Image image;
-  image.width = int(h.width);
-  image.height = int(h.height);
-  image.channels = h.channels;
-  image.channel_names = channel_names(h.channels);
-  image.pixels.resize(size_t(h.width) * h.height * h.channels);
-  if (h.bit_depth == 8) {
-    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(bytes[i]) / 255.f;
-  } else {  // 16 bits, big-endian in the file
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-      image.pixels[i] = float((unsigned(bytes[2 * i]) << 8) | bytes[2 * i + 1]) / 65535.f;
-  }
 
   *format = ImageFileFormat{};
   format->integer = true;
@@ -136,6 +128,24 @@ Image read_png(const std::string& path, ImageFileFormat* format) {
   format->alpha_channel = h.channels == 2 ? 1 : h.channels == 4 ? 3 : -1;
   // gAMA stores the encoding exponent (1/2.2 for the usual files): 1.0 means linear values.
   format->color_space = !h.srgb_chunk && h.file_gamma > 0. && std::abs(h.file_gamma - 1.) < 0.01 ? "linear" : "sRGB";
+  return out;
+}
+
+Image read_png(const std::string& path, ImageFileFormat* format) { return to_image(read_png_samples(path, format)); }
+
+Image to_image(const PngSamples& s) {
+  Image image;
+  image.width = s.width;
+  image.height = s.height;
+  image.channels = s.channels;
+  image.channel_names = channel_names(s.channels);
+  image.pixels.resize(size_t(s.width) * s.height * s.channels);
+  if (s.bit_depth == 8) {
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(s.data[i]) / 255.f;
+  } else {  // 16 bits, big-endian in the file
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      image.pixels[i] = float((unsigned(s.data[2 * i]) << 8) | s.data[2 * i + 1]) / 65535.f;
+  }
   return image;
 }
 

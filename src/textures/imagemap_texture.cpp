@@ -6,6 +6,7 @@
 #include "render/image_io.h"
 #include "render/image_library.h"
 #include "render/mipmap.h"
+#include "render/png_file.h"
 #include "scene/scene_files.h"
 #include "scene/texture_store.h"
 #include "textures/texture_mapping.h"
@@ -71,18 +72,44 @@ TexelEncoding read_encoding(const PluginParams& p, const std::string& path, cons
   p.fail("encoding", fmt::format("unknown encoding \"{}\"; eyetrace supports sRGB, linear, \"gamma <g>\"", e));
 }
 
-// The file's pyramid: its colour channels (alpha dropped; fewer than three read as grey).
-std::unique_ptr<MipMap> make_mipmap(const PluginParams& p, const std::string& path) {
-  Image image;
-  ImageFileFormat format;
-  std::string why;
-  if (!read_image(path, &image, &format, &why))
-    p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
-  int colour = image.channels;
+// How many channels the pyramid keeps: the colour ones (alpha dropped), fewer than three read
+// as grey.
+int colour_channels(const PluginParams& p, const std::string& path, int channels, const ImageFileFormat& format) {
+  int colour = channels;
   if (format.alpha_channel >= 0 && format.alpha_channel < 3) colour = std::min(colour, format.alpha_channel);
   if (colour < 1) p.fail("filename", fmt::format("image \"{}\" has no colour channels", path));
-  return std::make_unique<MipMap>(image, colour >= 3 ? 3 : 1, format.eight_bit, read_encoding(p, path, format),
-                                  read_wrap(p));
+  return colour >= 3 ? 3 : 1;
+}
+
+[[noreturn]] void cannot_read(const PluginParams& p, const std::string& path, const std::string& why) {
+  p.fail("filename", fmt::format("cannot read image \"{}\"{}{}", path, why.empty() ? "" : ": ", why));
+}
+
+// An 8-bit PNG goes from the file to the pyramid as bytes; other images through floats.
+std::unique_ptr<MipMap> make_mipmap(const PluginParams& p, const std::string& path) {
+  ImageFileFormat format;
+  Image image;
+  if (is_png_file(path)) {
+    PngSamples s;
+    try {
+      s = read_png_samples(path, &format);
+    } catch (const std::exception& e) {
+      cannot_read(p, path, e.what());
+    }
+    if (s.bit_depth == 8) {
+      const int n = colour_channels(p, path, s.channels, format);
+      std::vector<uint8_t> bytes(size_t(s.width) * s.height * n);
+      for (size_t t = 0; t < size_t(s.width) * s.height; ++t)
+        for (int c = 0; c < n; ++c) bytes[t * n + c] = s.data[t * s.channels + c];
+      return std::make_unique<MipMap>(std::move(bytes), s.width, s.height, n, read_encoding(p, path, format),
+                                      read_wrap(p));
+    }
+    image = to_image(s);
+  } else if (std::string why; !read_image(path, &image, &format, &why)) {
+    cannot_read(p, path, why);
+  }
+  return std::make_unique<MipMap>(image, colour_channels(p, path, image.channels, format), format.eight_bit,
+                                  read_encoding(p, path, format), read_wrap(p));
 }
 
 }  // namespace

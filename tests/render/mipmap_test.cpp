@@ -120,7 +120,9 @@ TEST(MipMap, NonPowerOfTwoSidesAreResizedWithTheWindowedSinc) {
   im.pixels = {0.2f, 0.9f, 0.4f};
   const MipMap m(im, 1, false, {}, MipWrap::Clamp);
   ASSERT_EQ(m.resolution(0), IVec2(4, 1));
-  auto sinc = [](double x) { return std::abs(x) < 1e-12 ? 1.0 : std::sin(std::numbers::pi * x) / (std::numbers::pi * x); };
+  auto sinc = [](double x) {
+    return std::abs(x) < 1e-12 ? 1.0 : std::sin(std::numbers::pi * x) / (std::numbers::pi * x);
+  };
   for (int i = 0; i < 4; ++i) {
     const double centre = (i + 0.5) * 3.0 / 4.0;
     const int first = int(std::floor(centre - 2.0 + 0.5));
@@ -163,7 +165,33 @@ TEST(MipMap, EightBitTexelsAreDecodedBeforeFiltering) {
   for (int i = 0; i < 256; ++i) EXPECT_NEAR(r.texel(0, i, 0, 0), srgb_decode(i / 255.0), 1e-6) << i;
   const MipMap gamma(ramp, 1, true, {TexelEncoding::Kind::Gamma, 2.f}, MipWrap::Clamp);
   EXPECT_NEAR(gamma.texel(0, 51, 0, 0), 0.04f, 1e-6);  // (51/255)^2
-  EXPECT_LT(r.bytes(), 2 * 256u);  // bytes, not floats
+  EXPECT_LT(r.bytes(), 2 * 256u);                      // bytes, not floats
+}
+
+TEST(MipMap, BytesGiveTheTexelsOfTheSameImageAsFloats) {
+  // An 8-bit PNG's bytes go straight to the pyramid; the same values given as floats k / 255
+  // (another reader's) must build the same levels, for sides that are and are not powers of two.
+  for (IVec2 size : {IVec2(8, 4), IVec2(6, 5), IVec2(1, 1)}) {
+    std::mt19937 rng(uint32_t(size.x * 10 + size.y));
+    std::vector<uint8_t> bytes(size_t(size.x) * size.y * 3);
+    for (uint8_t& b : bytes) b = uint8_t(rng() & 0xff);
+    Image im;
+    im.width = size.x, im.height = size.y, im.channels = 3;
+    for (uint8_t b : bytes) im.pixels.push_back(float(b) / 255.f);
+    const TexelEncoding srgb{TexelEncoding::Kind::SRGB, 1.f};
+    const MipMap from_bytes(bytes, size.x, size.y, 3, srgb, MipWrap::Repeat);
+    const MipMap from_floats(im, 3, true, srgb, MipWrap::Repeat);
+    ASSERT_EQ(from_bytes.levels(), from_floats.levels());
+    for (int l = 0; l < from_bytes.levels(); ++l) {
+      const IVec2 r = from_bytes.resolution(l);
+      ASSERT_EQ(r, from_floats.resolution(l));
+      for (int y = 0; y < r.y; ++y)
+        for (int x = 0; x < r.x; ++x)
+          for (int c = 0; c < 3; ++c) ASSERT_EQ(from_bytes.texel(l, x, y, c), from_floats.texel(l, x, y, c));
+    }
+    if (size == IVec2(8, 4))  // level 0 is the bytes themselves
+      EXPECT_NEAR(from_bytes.texel(0, 5, 2, 1), srgb_decode(bytes[(2 * 8 + 5) * 3 + 1] / 255.0), 1e-6);
+  }
 }
 
 TEST(MipMap, WrapModesAndHostileCoordinates) {
