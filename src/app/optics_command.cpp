@@ -18,6 +18,7 @@
 
 #include "app/commands.h"
 #include "cameras/lens_system_camera.h"
+#include "core/srgb.h"
 #include "optics/optics_error.h"
 #include "optics/prescription_io.h"
 #include "optics/report.h"

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/srgb.h"
 #include "render/image_io.h"
 #include "render/image_library.h"
 
 namespace eyetrace {
 namespace {
-
-float srgb_decode(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 bool says_linear(std::string cs) {
   std::transform(cs.begin(), cs.end(), cs.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -63,7 +62,7 @@ std::optional<RGBImage> read_rgb_image(const std::string& path, std::string* err
       float v = data.pixels[i * nc + ch[c]];
       if (!std::isfinite(v)) ++bad, v = 0.f;
       v = std::max(v, 0.f);
-      img.pixels[i][c] = decode ? srgb_decode(v) : v;
+      img.pixels[i][c] = decode ? srgb_to_linear(v) : v;
     }
   }
   if (non_finite) *non_finite = bad;

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/error.h"
+#include "core/srgb.h"
 #include "render/exr_file.h"
 #include "render/image_library.h"
 #include "render/image_library_loader.h"
@@ -17,13 +18,6 @@
 namespace eyetrace {
 
 namespace fs = std::filesystem;
-
-float linear_to_srgb(float v) {
-  if (!(v > 0.f)) return 0.f;
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.f / 2.4f) - 0.055f;
-}
-
-float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 static std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();

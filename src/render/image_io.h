@@ -36,8 +36,4 @@ void prepare_image_output(const std::string& path);
 // Reads one string attribute from an image header ("" if absent).
 std::string read_image_attribute(const std::string& path, const std::string& name);
 
-// The sRGB transfer curve for 8-bit output.
-float linear_to_srgb(float v);
-float srgb_to_linear(float v);
-
 }  // namespace eyetrace

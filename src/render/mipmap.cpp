@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/constants.h"
+#include "core/srgb.h"
 
 namespace eyetrace {
 

@@ -6,10 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <vector>
+
+#include <fmt/core.h>
 
 #include "render/image_library.h"
 
@@ -106,11 +109,17 @@ PngSamples read_png_samples(const std::string& path, ImageFileFormat* format) {
   if (!r.info) throw std::runtime_error("libpng cannot start");
   Header h;
   if (!read_header(r.png, r.info, r.file, &h)) r.fail();
-  // libpng limits PNG's sides to 1,000,000 pixels by default; the product still needs a check.
   const size_t row_bytes = size_t(h.width) * size_t(h.channels) * size_t(h.bit_depth / 8);
   if (h.width == 0 || h.height == 0 || h.channels < 1 || h.channels > 4 || (h.bit_depth != 8 && h.bit_depth != 16))
     throw std::runtime_error("unsupported PNG layout");
-  if (double(row_bytes) * double(h.height) > double(1ull << 34)) throw std::runtime_error("the image is too large");
+  // libpng allows sides of a million pixels, so a header of a few bytes could ask for terabytes.
+  // Deflate compresses at most 1032:1 and the expansions above at most multiply the stored
+  // bytes by 8 (1-bit grey to 8 bits), so a larger image cannot be in the file: refuse it
+  // before allocating.
+  const double file_bytes = double(std::filesystem::file_size(path));
+  if (double(row_bytes) * double(h.height) > 8.0 * 1032.0 * file_bytes + double(1 << 20))
+    throw std::runtime_error(
+        fmt::format("{} x {} pixels cannot be in a file of {} bytes", h.width, h.height, std::uintmax_t(file_bytes)));
 
   PngSamples out;
   out.width = int(h.width);

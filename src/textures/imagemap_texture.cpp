@@ -117,8 +117,9 @@ std::unique_ptr<MipMap> make_mipmap(const PluginParams& p, const std::string& pa
 const PluginSpec& imagemap_texture_spec() {
   static const PluginSpec spec{
       "Texture", "an image file",
-      "pbrt-v4's MIP map and filters (render/mipmap.h); no `octahedralsphere` wrap; 8-bit images other than PNG "
-      "default to sRGB (pbrt-v4: only `.png`).",
+      "pbrt-v4's MIP map and filters (render/mipmap.h); hits carry no ray differentials, so every lookup filters "
+      "level 0 (pbrt-v4 reads coarser levels where a pixel spans several texels); no `octahedralsphere` wrap; 8-bit "
+      "images other than PNG default to sRGB (pbrt-v4: only `.png`).",
       std::vector<ParamSpec>{
           param::string("filename").shown_default("required").describe("PNG, EXR, or any format OpenImageIO reads"),
           param::string("filter", "bilinear").in({"point", "bilinear", "trilinear", "ewa", "EWA"}),

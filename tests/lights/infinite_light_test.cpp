@@ -13,6 +13,7 @@
 #include "../support/unity_id.h"
 #include "core/error.h"
 #include "core/sampling.h"
+#include "core/srgb.h"
 #include "core/transform.h"
 #include "light_test_util.h"
 #include "lights/infinite_light.h"

@@ -150,6 +150,15 @@ TEST(PngFile, DamagedFilesAreErrorsNotCrashes) {
   std::ofstream(dir.file("crc.png"), std::ios::binary) << bad;
   ImageFileFormat format;
   EXPECT_THROW(read_png(dir.file("crc.png"), &format), std::exception);
+  // A header of 60000 x 60000 RGBA texels (14 GB) in a file of a hundred bytes is refused
+  // before anything is allocated: deflate cannot hold it there.
+  test::write_png(dir.file("huge.png"), 60000, 60000, test::kPngRgba, 8, {bytes({1, 2, 3, 4})});
+  try {
+    read_png(dir.file("huge.png"), &format);
+    ADD_FAILURE() << "a 60000 x 60000 image was read from a tiny file";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("60000 x 60000 pixels cannot be in a file of"), std::string::npos) << e.what();
+  }
   std::ofstream(dir.file("text.png")) << "not an image\n";
   EXPECT_FALSE(is_png_file(dir.file("text.png")));
   EXPECT_FALSE(is_png_file(dir.file("absent.png")));
