@@ -24,7 +24,7 @@ GROUPS = [
     ("camera", r"Camera|optics::|CompiledSystem|trace_block|Pupil|LensSystem|Eye"),
     ("sampler", r"Sampler|sobol|Sobol|halton|Halton|radical_inverse|mix_bits|Owen|Morton|morton"),
     ("textures", r"OpenImageIO|libOpenImageIO|Texture|texture|filtered_square_wave|Checkerboard|ImageCache|"
-     r"srgb_to_linear|Mipmap|mipmap|libImath|libOpenEXR"),
+     r"srgb_to_linear|MipMap|Mipmap|mipmap|libImath|libOpenEXR|libpng|read_png"),
     ("light sampling", r"Light|light|sample_li"),
     ("shading (BSDF, material)", r"BSDF|BxDF|Material|material|apply_normal_map|Bump|bump|Frame"),
     ("spectra (RGB to spectrum, wavelengths)", r"Spectrum|spectrum|visible_wavelength|RGBToSpectrum|Sigmoid|"

@@ -259,7 +259,9 @@ void MipMap::filter(MipFilter f, float max_anisotropy, Vec2 st, Vec2 dst0, Vec2 
 
   if (f != MipFilter::Ewa) {
     const float width = 2.f * std::max({std::abs(dst0.x), std::abs(dst0.y), std::abs(dst1.x), std::abs(dst1.y)});
-    const float level = float(top) + std::log2(std::max(width, 1e-8f));
+    // pbrt-v4 takes log2 of max(width, 1e-8); any width below 2^-top picks level 0, which a
+    // zero footprint (hits without ray differentials) reaches without the logarithm.
+    const float level = width > 0.f ? float(top) + std::log2(std::max(width, 1e-8f)) : -1.f;
     if (level >= float(top)) {
       for (int c = 0; c < channels_; ++c) out[c] = texel(top, 0, 0, c);
       return;
