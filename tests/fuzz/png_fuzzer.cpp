@@ -39,7 +39,8 @@ void check_lookups(const eyetrace::MipMap& map) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // libpng reads files: the input goes through one of this process's own.
   static const std::string path = "/tmp/eyetrace-png-fuzz-" + std::to_string(::getpid()) + ".png";
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   try {
     eyetrace::ImageFileFormat format;
     const eyetrace::PngSamples s = eyetrace::read_png_samples(path, &format);
