@@ -12,12 +12,12 @@ namespace {
 
 // pbrt-v4's EWA weights: a Gaussian of the squared ellipse radius r2 in [0, 1], alpha = 2,
 // less its value at the rim so that the weight falls to 0 there; 128 entries.
-constexpr int kEwaTableSize = 128;
-const std::array<float, kEwaTableSize>& ewa_weights() {
-  static const std::array<float, kEwaTableSize> table = [] {
-    std::array<float, kEwaTableSize> t{};
-    for (int i = 0; i < kEwaTableSize; ++i) {
-      double r2 = double(i) / double(kEwaTableSize - 1);
+constexpr int kMipEwaTableSize = 128;
+const std::array<float, kMipEwaTableSize>& mip_ewa_weights() {
+  static const std::array<float, kMipEwaTableSize> table = [] {
+    std::array<float, kMipEwaTableSize> t{};
+    for (int i = 0; i < kMipEwaTableSize; ++i) {
+      double r2 = double(i) / double(kMipEwaTableSize - 1);
       t[i] = float(std::exp(-2. * r2) - std::exp(-2.));
     }
     return t;
@@ -34,22 +34,22 @@ int round_up_power_of_two(int v) {
 
 // pbrt-v4's Lanczos resampling weights (windowed sinc, radius 2, tau 2) of the four source
 // pixels nearest each of `new_size` pixels, normalised to sum 1.
-struct ResampleWeight {
+struct LanczosWeight {
   int first = 0;
   float w[4] = {};
 };
-float sinc(float x) { return std::abs(x) < 1e-5f ? 1.f : std::sin(kPi * x) / (kPi * x); }
-std::vector<ResampleWeight> resample_weights(int old_size, int new_size) {
-  std::vector<ResampleWeight> weights(static_cast<size_t>(new_size));
+float lanczos_sinc(float x) { return std::abs(x) < 1e-5f ? 1.f : std::sin(kPi * x) / (kPi * x); }
+std::vector<LanczosWeight> lanczos_weights(int old_size, int new_size) {
+  std::vector<LanczosWeight> weights(static_cast<size_t>(new_size));
   constexpr float kRadius = 2.f, kTau = 2.f;
   for (int i = 0; i < new_size; ++i) {
-    ResampleWeight& r = weights[size_t(i)];
+    LanczosWeight& r = weights[size_t(i)];
     float centre = (float(i) + 0.5f) * float(old_size) / float(new_size);
     r.first = int(std::floor(centre - kRadius + 0.5f));
     float sum = 0.f;
     for (int j = 0; j < 4; ++j) {
       float x = float(r.first + j) + 0.5f - centre;
-      r.w[j] = std::abs(x) > kRadius ? 0.f : sinc(x) * sinc(x / kTau);
+      r.w[j] = std::abs(x) > kRadius ? 0.f : lanczos_sinc(x) * lanczos_sinc(x / kTau);
       sum += r.w[j];
     }
     for (float& w : r.w) w /= sum;
@@ -58,13 +58,13 @@ std::vector<ResampleWeight> resample_weights(int old_size, int new_size) {
 }
 
 // The nearest byte to v * 255 (halves up), 0 for NaN.
-uint8_t byte_of(float v) {
+uint8_t texel_byte(float v) {
   const float x = v * 255.f + 0.5f;
   return x >= 255.f ? uint8_t(255) : x > 0.f ? uint8_t(x) : uint8_t(0);
 }
 
 // A texel's coordinates under the wrap mode; false when it is black there.
-bool remap(MipWrap wrap, int& x, int& y, int width, int height) {
+bool wrap_texel(MipWrap wrap, int& x, int& y, int width, int height) {
   switch (wrap) {
     case MipWrap::Repeat:
       x = ((x % width) + width) % width;
@@ -82,10 +82,11 @@ bool remap(MipWrap wrap, int& x, int& y, int width, int height) {
 // pbrt-v4 resizes an image whose sides are not powers of two up to powers of two before
 // building the levels (rows, then columns), sampling beyond the edges by the wrap mode;
 // negative lobes of the sinc are clamped at 0.
-std::vector<float> resize_up(const std::vector<float>& img, int w, int h, int n, int w2, int h2, MipWrap wrap) {
-  const auto wx = resample_weights(w, w2), wy = resample_weights(h, h2);
+std::vector<float> resize_up_to_powers_of_two(const std::vector<float>& img, int w, int h, int n, int w2, int h2,
+                                              MipWrap wrap) {
+  const auto wx = lanczos_weights(w, w2), wy = lanczos_weights(h, h2);
   auto at = [&](const std::vector<float>& im, int iw, int ih, int x, int y, int c) {
-    return remap(wrap, x, y, iw, ih) ? im[(size_t(y) * iw + x) * n + c] : 0.f;
+    return wrap_texel(wrap, x, y, iw, ih) ? im[(size_t(y) * iw + x) * n + c] : 0.f;
   };
   std::vector<float> rows(size_t(w2) * h * n), out(size_t(w2) * h2 * n);
   for (int y = 0; y < h; ++y)
@@ -109,7 +110,7 @@ std::vector<float> resize_up(const std::vector<float>& img, int w, int h, int n,
 // an index into its interleaved texels), a side of one texel averaging its texel with itself,
 // as pbrt-v4's GeneratePyramid does.
 template <typename At>
-std::vector<float> half_size(int w, int h, int n, const At& at) {
+std::vector<float> half_size_level(int w, int h, int n, const At& at) {
   const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
   std::vector<float> next(size_t(nw) * nh * n);
   for (int y = 0; y < nh; ++y)
@@ -154,7 +155,7 @@ MipMap::MipMap(const Image& image, int channels, bool eight_bit, TexelEncoding e
   if (eight_bit) {
     std::vector<uint8_t> bytes(texels * n);
     for (size_t p = 0; p < texels; ++p)
-      for (int c = 0; c < n; ++c) bytes[p * n + c] = byte_of(value(p, c));
+      for (int c = 0; c < n; ++c) bytes[p * n + c] = texel_byte(value(p, c));
     build_from_bytes(std::move(bytes), image.width, image.height);
     return;
   }
@@ -174,7 +175,7 @@ void MipMap::build_from_bytes(std::vector<uint8_t> bytes, int w, int h) {
   if (is_power_of_two(w) && is_power_of_two(h)) {
     // Level 0 keeps the file's bytes; level 1 averages their decoded values.
     std::vector<float> next;
-    if (w > 1 || h > 1) next = half_size(w, h, channels_, [&](size_t i) { return decode_[bytes[i]]; });
+    if (w > 1 || h > 1) next = half_size_level(w, h, channels_, [&](size_t i) { return decode_[bytes[i]]; });
     levels_.push_back(Level{w, h, std::move(bytes), {}});
     if (!next.empty()) build(std::move(next), std::max(1, w / 2), std::max(1, h / 2), true);
     return;
@@ -188,7 +189,7 @@ void MipMap::build(std::vector<float> linear, int w, int h, bool eight_bit) {
   const int n = channels_;
   if (!is_power_of_two(w) || !is_power_of_two(h)) {
     const int w2 = round_up_power_of_two(w), h2 = round_up_power_of_two(h);
-    linear = resize_up(linear, w, h, n, w2, h2, wrap_);
+    linear = resize_up_to_powers_of_two(linear, w, h, n, w2, h2, wrap_);
     w = w2, h = h2;
   }
   for (;;) {
@@ -196,7 +197,7 @@ void MipMap::build(std::vector<float> linear, int w, int h, bool eight_bit) {
     store(l, linear, eight_bit);
     levels_.push_back(std::move(l));
     if (w == 1 && h == 1) return;
-    linear = half_size(w, h, n, [&](size_t i) { return linear[i]; });
+    linear = half_size_level(w, h, n, [&](size_t i) { return linear[i]; });
     w = std::max(1, w / 2), h = std::max(1, h / 2);
   }
 }
@@ -207,7 +208,7 @@ void MipMap::store(Level& level, const std::vector<float>& linear, bool eight_bi
     return;
   }
   level.bytes.resize(linear.size());
-  for (size_t i = 0; i < linear.size(); ++i) level.bytes[i] = byte_of(encoding_.encode(linear[i]));
+  for (size_t i = 0; i < linear.size(); ++i) level.bytes[i] = texel_byte(encoding_.encode(linear[i]));
 }
 
 size_t MipMap::bytes() const {
@@ -218,7 +219,7 @@ size_t MipMap::bytes() const {
 
 float MipMap::texel(int level, int x, int y, int c) const {
   const Level& l = levels_[size_t(level)];
-  if (!remap(wrap_, x, y, l.width, l.height)) return 0.f;
+  if (!wrap_texel(wrap_, x, y, l.width, l.height)) return 0.f;
   return stored(l, (size_t(y) * l.width + x) * channels_ + c);
 }
 
@@ -327,7 +328,7 @@ void MipMap::ewa(int level, Vec2 st, Vec2 dst0, Vec2 dst1, float* out) const {
   const float u = std::sqrt(std::max(0.f, det * C)), v = std::sqrt(std::max(0.f, A * det));
   const int s0 = int(std::ceil(st.x - 2.f * inv_det * u)), s1 = int(std::floor(st.x + 2.f * inv_det * u));
   const int t0 = int(std::ceil(st.y - 2.f * inv_det * v)), t1 = int(std::floor(st.y + 2.f * inv_det * v));
-  const auto& weights = ewa_weights();
+  const auto& weights = mip_ewa_weights();
   float sum[3] = {0.f, 0.f, 0.f}, total = 0.f;
   for (int it = t0; it <= t1; ++it) {
     const float tt = float(it) - st.y;
@@ -335,7 +336,7 @@ void MipMap::ewa(int level, Vec2 st, Vec2 dst0, Vec2 dst1, float* out) const {
       const float ss = float(is) - st.x;
       const float r2 = A * ss * ss + B * ss * tt + C * tt * tt;
       if (!(r2 < 1.f)) continue;
-      const float w = weights[size_t(std::clamp(int(r2 * kEwaTableSize), 0, kEwaTableSize - 1))];
+      const float w = weights[size_t(std::clamp(int(r2 * kMipEwaTableSize), 0, kMipEwaTableSize - 1))];
       for (int c = 0; c < channels_; ++c) sum[c] += w * texel(level, is, it, c);
       total += w;
     }

@@ -26,15 +26,15 @@ struct PngError {
   char message[256] = "";
 };
 
-[[noreturn]] void on_error(png_structp png, png_const_charp message) {
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
   auto* e = static_cast<PngError*>(png_get_error_ptr(png));
   std::snprintf(e->message, sizeof e->message, "%s", message);
   png_longjmp(png, 1);
 }
 
-void on_warning(png_structp, png_const_charp) {}  // e.g. unknown chunks: the pixels are still right
+void on_png_warning(png_structp, png_const_charp) {}  // e.g. unknown chunks: the pixels are still right
 
-struct Header {
+struct PngHeader {
   png_uint_32 width = 0, height = 0;
   int channels = 0, bit_depth = 0;
   bool srgb_chunk = false;
@@ -43,7 +43,7 @@ struct Header {
 
 // Reads the header and sets the expansions: palette to RGB, transparency to alpha, grey of
 // 1, 2 or 4 bits to 8, interlaced passes merged.
-bool read_header(png_structp png, png_infop info, std::FILE* file, Header* h) {
+bool read_png_header(png_structp png, png_infop info, std::FILE* file, PngHeader* h) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_init_io(png, file);
   png_read_info(png, info);
@@ -62,7 +62,7 @@ bool read_header(png_structp png, png_infop info, std::FILE* file, Header* h) {
   return true;
 }
 
-bool read_rows(png_structp png, png_infop info, png_bytepp rows) {
+bool read_png_rows(png_structp png, png_infop info, png_bytepp rows) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_read_image(png, rows);
   png_read_end(png, nullptr);
@@ -70,19 +70,19 @@ bool read_rows(png_structp png, png_infop info, png_bytepp rows) {
   return true;
 }
 
-struct Reader {
+struct PngReader {
   PngError error;
   png_structp png = nullptr;
   png_infop info = nullptr;
   std::FILE* file = nullptr;
-  ~Reader() {
+  ~PngReader() {
     png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
     if (file) std::fclose(file);
   }
   [[noreturn]] void fail() const { throw std::runtime_error(error.message[0] ? error.message : "not a readable PNG"); }
 };
 
-std::vector<std::string> channel_names(int channels) {
+std::vector<std::string> png_channel_names(int channels) {
   switch (channels) {
     case 1: return {"Y"};
     case 2: return {"Y", "A"};
@@ -100,15 +100,15 @@ bool is_png_file(const std::string& path) {
 }
 
 PngSamples read_png_samples(const std::string& path, ImageFileFormat* format) {
-  Reader r;
+  PngReader r;
   r.file = std::fopen(path.c_str(), "rb");
   if (!r.file) throw std::runtime_error(std::strerror(errno));
-  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.error, on_error, on_warning);
+  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.error, on_png_error, on_png_warning);
   if (!r.png) throw std::runtime_error("libpng cannot start");
   r.info = png_create_info_struct(r.png);
   if (!r.info) throw std::runtime_error("libpng cannot start");
-  Header h;
-  if (!read_header(r.png, r.info, r.file, &h)) r.fail();
+  PngHeader h;
+  if (!read_png_header(r.png, r.info, r.file, &h)) r.fail();
   const size_t row_bytes = size_t(h.width) * size_t(h.channels) * size_t(h.bit_depth / 8);
   if (h.width == 0 || h.height == 0 || h.channels < 1 || h.channels > 4 || (h.bit_depth != 8 && h.bit_depth != 16))
     throw std::runtime_error("unsupported PNG layout");
@@ -129,7 +129,7 @@ PngSamples read_png_samples(const std::string& path, ImageFileFormat* format) {
   out.data.resize(row_bytes * h.height);
   std::vector<png_bytep> rows(h.height);
   for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = out.data.data() + size_t(y) * row_bytes;
-  if (!read_rows(r.png, r.info, rows.data())) r.fail();
+  if (!read_png_rows(r.png, r.info, rows.data())) r.fail();
 
   *format = ImageFileFormat{};
   format->integer = true;
@@ -147,7 +147,7 @@ Image to_image(const PngSamples& s) {
   image.width = s.width;
   image.height = s.height;
   image.channels = s.channels;
-  image.channel_names = channel_names(s.channels);
+  image.channel_names = png_channel_names(s.channels);
   image.pixels.resize(size_t(s.width) * s.height * s.channels);
   if (s.bit_depth == 8) {
     for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(s.data[i]) / 255.f;
