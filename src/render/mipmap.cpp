@@ -165,9 +165,16 @@ MipMap::MipMap(const Image& image, int channels, bool eight_bit, TexelEncoding e
   build(std::move(linear), image.width, image.height, false);
 }
 
-MipMap::MipMap(std::vector<uint8_t> bytes, int width, int height, int channels, TexelEncoding encoding, MipWrap wrap)
+MipMap::MipMap(std::vector<uint8_t> samples, int width, int height, int stride, int channels, TexelEncoding encoding,
+               MipWrap wrap)
     : channels_(channels), wrap_(wrap), encoding_(encoding) {
-  build_from_bytes(std::move(bytes), width, height);
+  if (stride != channels) {  // texel t's samples move down to t * channels, never past unread ones
+    const size_t texels = size_t(width) * height;
+    for (size_t t = 0; t < texels; ++t)
+      for (int c = 0; c < channels; ++c) samples[t * channels + c] = samples[t * stride + c];
+    samples.resize(texels * channels);
+  }
+  build_from_bytes(std::move(samples), width, height);
 }
 
 void MipMap::build_from_bytes(std::vector<uint8_t> bytes, int w, int h) {

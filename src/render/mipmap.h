@@ -36,8 +36,10 @@ class MipMap {
   // (integers divided by their maximum), decoded by `encoding`. `eight_bit`: the file's values
   // are multiples of 1/255, and the levels keep them as bytes.
   MipMap(const Image& image, int channels, bool eight_bit, TexelEncoding encoding, MipWrap wrap);
-  // An 8-bit image's bytes, `channels` per texel, rows top first.
-  MipMap(std::vector<uint8_t> bytes, int width, int height, int channels, TexelEncoding encoding, MipWrap wrap);
+  // An 8-bit image's samples, `stride` per texel, rows top first; the first `channels` of each
+  // texel are kept (the rest, alpha, dropped in place).
+  MipMap(std::vector<uint8_t> samples, int width, int height, int stride, int channels, TexelEncoding encoding,
+         MipWrap wrap);
 
   int channels() const { return channels_; }
   int levels() const { return int(levels_.size()); }

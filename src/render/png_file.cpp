@@ -62,11 +62,10 @@ bool read_png_header(png_structp png, png_infop info, std::FILE* file, PngHeader
   return true;
 }
 
-bool read_png_rows(png_structp png, png_infop info, png_bytepp rows) {
+bool read_png_rows(png_structp png, png_bytepp rows) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_read_image(png, rows);
   png_read_end(png, nullptr);
-  (void)info;
   return true;
 }
 
@@ -129,7 +128,7 @@ PngSamples read_png_samples(const std::string& path, ImageFileFormat* format) {
   out.data.resize(row_bytes * h.height);
   std::vector<png_bytep> rows(h.height);
   for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = out.data.data() + size_t(y) * row_bytes;
-  if (!read_png_rows(r.png, r.info, rows.data())) r.fail();
+  if (!read_png_rows(r.png, rows.data())) r.fail();
 
   *format = ImageFileFormat{};
   format->integer = true;

@@ -97,11 +97,8 @@ std::unique_ptr<MipMap> make_mipmap(const PluginParams& p, const std::string& pa
       cannot_read(p, path, e.what());
     }
     if (s.bit_depth == 8) {
-      const int n = colour_channels(p, path, s.channels, format);
-      std::vector<uint8_t> bytes(size_t(s.width) * s.height * n);
-      for (size_t t = 0; t < size_t(s.width) * s.height; ++t)
-        for (int c = 0; c < n; ++c) bytes[t * n + c] = s.data[t * s.channels + c];
-      return std::make_unique<MipMap>(std::move(bytes), s.width, s.height, n, read_encoding(p, path, format),
+      return std::make_unique<MipMap>(std::move(s.data), s.width, s.height, s.channels,
+                                      colour_channels(p, path, s.channels, format), read_encoding(p, path, format),
                                       read_wrap(p));
     }
     image = to_image(s);

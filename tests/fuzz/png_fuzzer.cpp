@@ -43,17 +43,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   try {
     eyetrace::ImageFileFormat format;
-    const eyetrace::PngSamples s = eyetrace::read_png_samples(path, &format);
+    eyetrace::PngSamples s = eyetrace::read_png_samples(path, &format);
     if (s.data.size() != size_t(s.width) * s.height * s.channels * (s.bit_depth / 8) ||
         double(s.data.size()) > 8.0 * 1032.0 * double(size) + double(1 << 20))
       violated("the samples do not match the header or exceed what the file can encode");
     const int n = s.channels >= 3 ? 3 : 1;
     const eyetrace::TexelEncoding srgb{eyetrace::TexelEncoding::Kind::SRGB, 1.f};
     if (s.bit_depth == 8) {
-      std::vector<uint8_t> bytes(size_t(s.width) * s.height * n);
-      for (size_t t = 0; t < size_t(s.width) * s.height; ++t)
-        for (int c = 0; c < n; ++c) bytes[t * n + c] = s.data[t * s.channels + c];
-      check_lookups(eyetrace::MipMap(std::move(bytes), s.width, s.height, n, srgb, eyetrace::MipWrap::Repeat));
+      check_lookups(
+          eyetrace::MipMap(std::move(s.data), s.width, s.height, s.channels, n, srgb, eyetrace::MipWrap::Repeat));
     } else {
       check_lookups(eyetrace::MipMap(eyetrace::to_image(s), n, false, srgb, eyetrace::MipWrap::Black));
     }

@@ -179,7 +179,7 @@ TEST(MipMap, BytesGiveTheTexelsOfTheSameImageAsFloats) {
     im.width = size.x, im.height = size.y, im.channels = 3;
     for (uint8_t b : bytes) im.pixels.push_back(float(b) / 255.f);
     const TexelEncoding srgb{TexelEncoding::Kind::SRGB, 1.f};
-    const MipMap from_bytes(bytes, size.x, size.y, 3, srgb, MipWrap::Repeat);
+    const MipMap from_bytes(bytes, size.x, size.y, 3, 3, srgb, MipWrap::Repeat);
     const MipMap from_floats(im, 3, true, srgb, MipWrap::Repeat);
     ASSERT_EQ(from_bytes.levels(), from_floats.levels());
     for (int l = 0; l < from_bytes.levels(); ++l) {

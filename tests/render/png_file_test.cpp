@@ -69,12 +69,18 @@ std::vector<Case> cases() {
   };
 }
 
+// The case's 2 x 2 image as a file in `dir`; its path.
+std::string write_case(const test::TempDir& dir, const Case& c) {
+  const std::string path = dir.file(std::string(c.name) + ".png");
+  test::write_png(path, 2, 2, c.colour, c.depth, c.rows, c.palette);
+  return path;
+}
+
 TEST(PngFile, EveryColourTypeAndBitDepthReadsAsWritten) {
   test::TempDir dir("eyetrace-png");
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const std::string path = dir.file(std::string(c.name) + ".png");
-    test::write_png(path, 2, 2, c.colour, c.depth, c.rows, c.palette);
+    const std::string path = write_case(dir, c);
     ASSERT_TRUE(is_png_file(path));
     ImageFileFormat format;
     Image im = read_png(path, &format);
@@ -94,8 +100,7 @@ TEST(PngFile, SameValuesAsOpenImageIO) {
   test::TempDir dir("eyetrace-png");
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const std::string path = dir.file(std::string(c.name) + ".png");
-    test::write_png(path, 2, 2, c.colour, c.depth, c.rows, c.palette);
+    const std::string path = write_case(dir, c);
     ImageFileFormat ours_format, oiio_format;
     Image ours = read_png(path, &ours_format), oiio;
     std::string why;
