@@ -51,17 +51,18 @@ HaltonSampler::HaltonSampler(int samples_per_pixel, IVec2 resolution, Randomizat
 // index whose first two radical inverses land in the pixel; later samples are a stride of
 // 2^j 3^k apart, the period after which the pixel is visited again.
 void HaltonSampler::start_pixel_sample(IVec2 pixel, int sample_index, int dimension) {
-  halton_index_ = 0;
-  uint64_t stride = uint64_t(base_scales_[0]) * uint64_t(base_scales_[1]);
-  if (stride > 1) {
+  const uint64_t stride = uint64_t(base_scales_[0]) * uint64_t(base_scales_[1]);
+  if (pixel != first_index_pixel_ && stride > 1) {
+    first_index_ = 0;
     for (int i = 0; i < 2; ++i) {
       uint64_t pm = uint64_t(positive_mod(pixel[i], kMaxResolution));
       uint64_t offset = inverse_radical_inverse(pm, i == 0 ? 2 : 3, base_exponents_[i]);
-      halton_index_ += offset * (stride / uint64_t(base_scales_[i])) * uint64_t(mult_inverse_[i]);
+      first_index_ += offset * (stride / uint64_t(base_scales_[i])) * uint64_t(mult_inverse_[i]);
     }
-    halton_index_ %= stride;
+    first_index_ %= stride;
+    first_index_pixel_ = pixel;
   }
-  halton_index_ += uint64_t(sample_index) * stride;
+  halton_index_ = first_index_ + uint64_t(sample_index) * stride;
   dimension_ = std::max(2, dimension);
 }
 

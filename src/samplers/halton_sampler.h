@@ -6,7 +6,9 @@
 #pragma once
 #include <memory>
 
+#include <limits>
 #include "core/sampler.h"
+
 #include "samplers/lowdiscrepancy.h"
 #include "scene/registry.h"
 
@@ -36,6 +38,10 @@ class HaltonSampler : public Sampler {
   int64_t mult_inverse_[2] = {0, 0};
   uint64_t halton_index_ = 0;
   int dimension_ = 0;
+  // The index of the last pixel's first sample: a pixel's samples come one after another, and
+  // the digit reversals that find it cost a tenth of a path-traced render's sampling.
+  IVec2 first_index_pixel_{std::numeric_limits<int>::min()};
+  uint64_t first_index_ = 0;
 };
 
 // pbrt-v4 "halton": integer pixelsamples (16), integer seed, string randomization

@@ -102,25 +102,95 @@ int radical_inverse_digits(int base) {
   return n;
 }
 
+namespace {
+
+// What every radical inverse in one prime base needs, computed once: the digit loops below run
+// per sample dimension, and recomputing the digit count, b^-n and a 64-bit division per digit
+// was a quarter of a Halton render (2026-11-27 profile of scenes/peer.pbrt).
+struct RadicalInverseBase {
+  uint32_t base = 0;
+  int n_digits = 0;             // radical_inverse_digits(base)
+  uint64_t div_constant = 0;    // ceil(2^64 / base), for exact_quotient
+  std::vector<double> inv_pow;  // base^-k for k = 0 .. digits of 2^64 - 1, each by k divisions
+};
+
+std::vector<RadicalInverseBase> make_radical_inverse_bases() {
+  std::vector<RadicalInverseBase> bases(kPrimeTableSize);
+  for (int i = 0; i < kPrimeTableSize; ++i) {
+    RadicalInverseBase& b = bases[size_t(i)];
+    b.base = uint32_t(prime(i));
+    b.n_digits = radical_inverse_digits(int(b.base));
+    b.div_constant = ~uint64_t(0) / b.base + 1;
+    // The same repeated divisions scale_reversed did, so the scaled values are bit-identical.
+    double inv = 1.0;
+    b.inv_pow.push_back(inv);
+    for (uint64_t rest = ~uint64_t(0); rest != 0; rest /= b.base) b.inv_pow.push_back(inv /= b.base);
+  }
+  return bases;
+}
+
+const RadicalInverseBase& radical_inverse_base(int base_index) {
+  static const std::vector<RadicalInverseBase> bases = make_radical_inverse_bases();
+  return bases[size_t(base_index)];
+}
+
+inline uint64_t reversed_bits64(uint64_t a) {
+  return (uint64_t(reverse_bits32(uint32_t(a))) << 32) | reverse_bits32(uint32_t(a >> 32));
+}
+
+// floor(a / base) for a < 2^32, exactly, by one multiplication (Lemire, Kaser & Kurz, "Faster
+// remainder by direct computation", 2019: c = ceil(2^64 / d) is exact for every 32-bit a).
+inline uint32_t exact_quotient(uint32_t a, uint64_t c) { return uint32_t((unsigned __int128)c * a >> 64); }
+
 // Digits reversed into an integer are scaled once at the end: exact up to 2^53, unlike a
 // running sum of digit/base^k terms.
-static float scale_reversed(uint64_t reversed, int base, int n_digits) {
-  double inv = 1.0;
-  for (int i = 0; i < n_digits; ++i) inv /= base;
-  float u = float(double(reversed) * inv);
+inline float scale_reversed(uint64_t reversed, const RadicalInverseBase& b, int n_digits) {
+  float u = float(double(reversed) * b.inv_pow[size_t(n_digits)]);
   return std::min(u, kOneMinusEpsilon);
 }
 
-float radical_inverse(int base_index, uint64_t a) {
-  int base = prime(base_index);
-  uint64_t reversed = 0;
-  int n = 0;
-  for (; a != 0; ++n) {
-    uint64_t next = a / base;
-    reversed = reversed * base + (a - next * base);
+// Calls digit(i, d) for the first n base-b digits d of a, least significant first (zeros once a
+// is exhausted), dividing in 64 bits only while a needs them.
+template <typename DigitFn>
+inline void for_each_digit(uint64_t a, const RadicalInverseBase& b, int n, DigitFn&& digit) {
+  int i = 0;
+  for (; i < n && (a >> 32) != 0; ++i) {
+    const uint64_t next = a / b.base;
+    digit(i, uint32_t(a - next * b.base));
     a = next;
   }
-  return scale_reversed(reversed, base, n);
+  for (uint32_t a32 = uint32_t(a); i < n; ++i) {
+    const uint32_t next = exact_quotient(a32, b.div_constant);
+    digit(i, a32 - next * b.base);
+    a32 = next;
+  }
+}
+
+}  // namespace
+
+float radical_inverse(int base_index, uint64_t a) {
+  const RadicalInverseBase& b = radical_inverse_base(base_index);
+  // Base 2 (every film sample's x) reverses bits; below 2^62 the digit loop would not stop early.
+  if (b.base == 2 && (a >> 62) == 0) {
+    const int n = a == 0 ? 0 : 64 - __builtin_clzll(a);
+    return n == 0 ? 0.f : scale_reversed(reversed_bits64(a) >> (64 - n), b, n);
+  }
+  uint64_t reversed = 0;
+  int n = 0;
+  // Digits past 64 bits of `reversed` lie below 2^-64 of the result: stop before they overflow
+  // it (a beyond about 2^42 in the largest bases, as pbrt-v4's RadicalInverse does).
+  const uint64_t limit = ~uint64_t(0) / b.base - b.base;
+  for (; (a >> 32) != 0 && reversed < limit; ++n) {
+    const uint64_t next = a / b.base;
+    reversed = reversed * b.base + (a - next * b.base);
+    a = next;
+  }
+  for (uint32_t a32 = uint32_t(a); a32 != 0 && reversed < limit; ++n) {
+    const uint32_t next = exact_quotient(a32, b.div_constant);
+    reversed = reversed * b.base + (a32 - next * b.base);
+    a32 = next;
+  }
+  return scale_reversed(reversed, b, n);
 }
 
 uint64_t inverse_radical_inverse(uint64_t inverse, int base, int n_digits) {
@@ -134,18 +204,14 @@ uint64_t inverse_radical_inverse(uint64_t inverse, int base, int n_digits) {
 }
 
 float owen_scrambled_radical_inverse(int base_index, uint64_t a, uint32_t hash) {
-  int base = prime(base_index);
-  int n = radical_inverse_digits(base);
+  const RadicalInverseBase& b = radical_inverse_base(base_index);
   uint64_t reversed = 0;
-  for (int i = 0; i < n; ++i) {
-    uint64_t next = a / base;
-    uint32_t digit = uint32_t(a - next * base);
+  for_each_digit(a, b, b.n_digits, [&](int, uint32_t digit) {
     // The permutation of this digit depends on every (scrambled) digit above it.
-    uint32_t digit_hash = uint32_t(mix_bits(hash ^ reversed));
-    reversed = reversed * base + permutation_element(digit, uint32_t(base), digit_hash);
-    a = next;
-  }
-  return scale_reversed(reversed, base, n);
+    const uint32_t digit_hash = uint32_t(mix_bits(hash ^ reversed));
+    reversed = reversed * b.base + permutation_element(digit, b.base, digit_hash);
+  });
+  return scale_reversed(reversed, b, b.n_digits);
 }
 
 DigitPermutations::DigitPermutations(uint64_t seed) {
@@ -168,17 +234,13 @@ DigitPermutations::DigitPermutations(uint64_t seed) {
 }
 
 float DigitPermutations::scrambled_radical_inverse(int base_index, uint64_t a) const {
-  int base = prime(base_index);
-  int n = radical_inverse_digits(base);
+  const RadicalInverseBase& b = radical_inverse_base(base_index);
   const uint16_t* perm = &table_[offset_[base_index]];
   uint64_t reversed = 0;
   // All n digits are permuted, leading zeros included, so the point set is shifted as a whole.
-  for (int i = 0; i < n; ++i, perm += base) {
-    uint64_t next = a / base;
-    reversed = reversed * base + perm[a - next * base];
-    a = next;
-  }
-  return scale_reversed(reversed, base, n);
+  for_each_digit(a, b, b.n_digits,
+                 [&](int i, uint32_t digit) { reversed = reversed * b.base + perm[size_t(i) * b.base + digit]; });
+  return scale_reversed(reversed, b, b.n_digits);
 }
 
 }  // namespace eyetrace

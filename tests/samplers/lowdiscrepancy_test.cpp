@@ -281,5 +281,79 @@ TEST(RadicalInverse, RandomisationsKeepStratification) {
   }
 }
 
+// Indices past 2^32 (a 4096x4096 Halton render passes 2^32 at 160 spp) take the 64-bit digit
+// loop until they fit in 32 bits, then an exact multiply-shift quotient: both against plain
+// long-double arithmetic and 64-bit division written here.
+std::vector<uint64_t> indices_across_two_to_the_32() {
+  std::vector<uint64_t> a = {0,
+                             1,
+                             2,
+                             12345,
+                             0xfffffffeull,
+                             0xffffffffull,
+                             0x100000000ull,
+                             0x100000001ull,
+                             0x2540be3ffull,
+                             ~uint64_t(0) >> 11,
+                             ~uint64_t(0)};
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 200; ++i) a.push_back(rng() >> (rng() % 40));
+  return a;
+}
+
+long double reference_radical_inverse(uint64_t a, uint64_t base) {
+  long double u = 0, w = 1.0L / base;
+  for (; a != 0; a /= base, w /= base) u += (a % base) * w;
+  return u;
+}
+
+TEST(RadicalInverse, SixtyFourBitIndicesMatchPlainArithmetic) {
+  for (int b : {0, 1, 2, 9, 100, kPrimeTableSize - 1})
+    for (uint64_t a : indices_across_two_to_the_32()) {
+      const long double expected = reference_radical_inverse(a, uint64_t(prime(b)));
+      EXPECT_NEAR(radical_inverse(b, a), double(expected), 1e-7 + 1e-7 * double(expected)) << prime(b) << " " << a;
+    }
+}
+
+// Owen scrambling's digits from the definition (a permutation per digit, seeded by the digits
+// above it), with 64-bit division throughout.
+float reference_owen(int b, uint64_t a, uint32_t hash) {
+  const uint64_t base = uint64_t(prime(b));
+  int n = 0;  // digits until (base - 1) base^-n falls below float's 2^-24
+  for (long double w = base - 1.0L; w >= 0x1p-24L; w /= base) ++n;
+  uint64_t reversed = 0;
+  long double scale = 1;
+  for (int i = 0; i < n; ++i, a /= base, scale /= base)
+    reversed =
+        reversed * base + permutation_element(uint32_t(a % base), uint32_t(base), uint32_t(mix_bits(hash ^ reversed)));
+  return float(std::min<long double>(reversed * scale, 0x1.fffffep-1L));
+}
+
+TEST(RadicalInverse, OwenScrambledSixtyFourBitIndicesMatchTheDefinition) {
+  for (int b : {0, 1, 2, 9, 100, kPrimeTableSize - 1})
+    for (uint64_t a : indices_across_two_to_the_32())
+      EXPECT_NEAR(owen_scrambled_radical_inverse(b, a, 0x5eedu), reference_owen(b, a, 0x5eedu), 2e-7)
+          << prime(b) << " " << a;
+}
+
+// Indices that share their k lowest base-b digits share the first k permuted digits of their
+// inverses (the same b^-k interval), on either side of 2^32; indices that differ in the lowest
+// digit land in different intervals of width 1/b.
+TEST(RadicalInverse, DigitPermutationsOfSixtyFourBitIndicesKeepLowDigits) {
+  DigitPermutations perms(3);
+  for (int b : {0, 1, 2, 9}) {
+    const uint64_t base = uint64_t(prime(b)), bk = base * base * base;
+    for (uint64_t a : indices_across_two_to_the_32()) {
+      const uint64_t low = a % bk, far = low + bk * ((~uint64_t(0) - low) / bk / 3);
+      const double u1 = perms.scrambled_radical_inverse(b, low) * double(bk);
+      const double u2 = perms.scrambled_radical_inverse(b, far) * double(bk);
+      EXPECT_EQ(std::floor(u1), std::floor(u2)) << base << " " << a;
+      const uint64_t other = low % base == 0 ? far + 1 : far - 1;
+      EXPECT_NE(std::floor(perms.scrambled_radical_inverse(b, other) * double(base)),
+                std::floor(u2 / double(base * base)));
+    }
+  }
+}
+
 }  // namespace EYETRACE_UNITY_ID
 }  // namespace
