@@ -421,7 +421,7 @@ std::unique_ptr<Integrator> create_bdpt_integrator(const IntegratorContext& ctx)
   const int max_depth = p.get_int("maxdepth");
   if (ctx.scene.has_media()) {
     warn(p.loc(), "integrator \"bdpt\" does not trace participating media: the scene is rendered by \"volpath\"");
-    return std::make_unique<VolPathIntegrator>(ctx.scene, max_depth, 1.f);
+    return std::make_unique<VolPathIntegrator>(ctx.scene, max_depth, RussianRoulette{});
   }
   for (const Light* light : ctx.scene.lights())
     if (!light->emits_rays())

@@ -11,11 +11,11 @@
 
 namespace eyetrace {
 
-PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name, float rr_threshold)
+PathIntegrator::PathIntegrator(const Scene& scene, int max_depth, std::string name, RussianRoulette roulette)
     : Integrator(scene),
       max_depth_(max_depth),
       name_(std::move(name)),
-      rr_threshold_(rr_threshold),
+      roulette_(roulette),
       lights_(scene.lights()),
       hittable_lights_(
           std::any_of(scene.lights().begin(), scene.lights().end(), [](const auto& l) { return !l->is_delta(); })) {}
@@ -111,15 +111,10 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
         break;
       specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
     }
-    // Russian roulette once the path has some length and its throughput is below the
-    // threshold; unbiased (survivors are reweighted). A path survives with probability q, the
-    // throughput's largest component (pbrt-v4's 1 - max(0, 1 - q)), so above 1 it always does.
-    // Judged on the wavelengths still carried (a terminated one's beta no longer matters).
+    // Russian roulette on the throughput's largest component, judged on the wavelengths still
+    // carried (a terminated one's beta no longer matters); see russian_roulette.h.
     float q = lambda.secondary_terminated() ? beta[0] : max_component(beta);
-    if (depth > 1 && q < std::min(rr_threshold_, 1.f)) {
-      if (sampler.get_1d() >= q) break;
-      beta /= q;
-    }
+    if (roulette_.terminates(depth, q, sampler, beta)) break;
   }
   return L;
 }
@@ -138,12 +133,16 @@ PluginSpec make_path_spec(int default_depth, const std::string& summary, const s
                      param::real("rrthreshold", 1)
                          .at_least(0)
                          .describe("Russian roulette where the path throughput's largest component is below it "
-                                   "(pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it and uses 1)")}};
+                                   "(pbrt-v3 and early pbrt-v4; today's pbrt-v4 refuses it and uses 1)"),
+                     param::integer("rrdepth", RussianRoulette{}.from_depth)
+                         .range(1, 1 << 30)
+                         .describe("eyetrace's: the first scattering vertex that plays Russian roulette (Mitsuba 3's "
+                                   "rr_depth; pbrt-v4 plays from the second, `rrdepth 2`)")}};
 }
 
 struct PathParams {
   int max_depth;
-  float rr_threshold;
+  RussianRoulette roulette;
 };
 
 // The options pbrt-v4's path integrators share; eyetrace has one light sampler.
@@ -154,13 +153,13 @@ PathParams read_path_params(const IntegratorContext& ctx, const PluginSpec& spec
   if (p.has("lightsampler") && ls != "power")
     warn(p.loc(), fmt::format("lightsampler \"{}\": eyetrace samples lights by power", ls));
   if (p.get_bool("regularize")) warn(p.loc(), "\"regularize\" is not supported; ignored");
-  return {p.get_int("maxdepth"), p.get_float("rrthreshold")};
+  return {p.get_int("maxdepth"), RussianRoulette{p.get_float("rrthreshold"), p.get_int("rrdepth")}};
 }
 
 std::unique_ptr<Integrator> make_path(const IntegratorContext& ctx, const PluginSpec& spec, const std::string& name,
                                       const std::string& renders_as) {
   const PathParams p = read_path_params(ctx, spec, name);
-  return std::make_unique<PathIntegrator>(ctx.scene, p.max_depth, renders_as, p.rr_threshold);
+  return std::make_unique<PathIntegrator>(ctx.scene, p.max_depth, renders_as, p.roulette);
 }
 
 }  // namespace
@@ -169,7 +168,8 @@ const PluginSpec& path_integrator_spec() {
   static const PluginSpec spec = make_path_spec(
       5, "unidirectional path tracing with next-event estimation and multiple importance sampling",
       "Lights are always sampled in proportion to their power; asking for `bvh` or `uniform` explicitly warns. "
-      "`regularize` true warns and is ignored.");
+      "`regularize` true warns and is ignored. Russian roulette starts at the fifth scattering vertex, not the second "
+      "(`rrdepth`, eyetrace's own; `rrdepth 2` plays as pbrt-v4).");
   return spec;
 }
 
@@ -178,7 +178,8 @@ const PluginSpec& volpath_integrator_spec() {
       make_path_spec(5,
                      "`path` with participating media (spectral MIS, Henyey-Greenstein scattering; delta tracking "
                      "through grid media's majorants)",
-                     "Shadow rays carry the exact transmittance of homogeneous media (pbrt-v4 ratio-tracks it; "
+                     "Russian roulette as `path` (from the fifth vertex, `rrdepth`). Shadow rays carry the exact "
+                     "transmittance of homogeneous media (pbrt-v4 ratio-tracks it; "
                      "heterogeneous ones are ratio-tracked as pbrt-v4); a scene without media is rendered by `path`, "
                      "which then gives the same image.");
   return spec;
@@ -202,7 +203,7 @@ std::unique_ptr<Integrator> create_volpath_integrator(const IntegratorContext& c
   // Without media volpath's estimator is path's: the same code renders it, at the same speed.
   if (!ctx.scene.has_media()) return make_path(ctx, volpath_integrator_spec(), "volpath", "volpath");
   const PathParams p = read_path_params(ctx, volpath_integrator_spec(), "volpath");
-  return std::make_unique<VolPathIntegrator>(ctx.scene, p.max_depth, p.rr_threshold);
+  return std::make_unique<VolPathIntegrator>(ctx.scene, p.max_depth, p.roulette);
 }
 
 }  // namespace eyetrace

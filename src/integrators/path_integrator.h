@@ -4,6 +4,7 @@
 #pragma once
 #include "core/ray.h"
 #include "integrators/light_sampler.h"
+#include "integrators/russian_roulette.h"
 #include "render/integrator.h"
 #include "scene/registry.h"
 
@@ -15,9 +16,7 @@ class BSSRDF;
 
 class PathIntegrator : public Integrator {
  public:
-  // Russian roulette applies where the path throughput's largest component is below
-  // `rr_threshold` (pbrt-v3's and early pbrt-v4's "rrthreshold"; 1 is today's pbrt-v4).
-  PathIntegrator(const Scene& scene, int max_depth, std::string name, float rr_threshold = 1.f);
+  PathIntegrator(const Scene& scene, int max_depth, std::string name, RussianRoulette roulette = {});
   SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
                            RayTally& tally, VisibleSurface* visible = nullptr) const override;
   std::string to_string() const override;
@@ -31,7 +30,7 @@ class PathIntegrator : public Integrator {
                                      LightSampleContext& prev_ctx) const;
   int max_depth_;
   std::string name_;
-  float rr_threshold_;
+  RussianRoulette roulette_;
   PowerLightSampler lights_;
   // Whether any light can be hit by a ray (area and infinite lights; point, spot and distant
   // lights cannot). Without one, the BSDF-sampled ray after the last bounce, which exists

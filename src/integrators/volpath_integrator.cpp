@@ -81,8 +81,8 @@ void ratio_track(const Medium& medium, const Ray& ray, float t_end, VolPathInteg
 
 }  // namespace
 
-VolPathIntegrator::VolPathIntegrator(const Scene& scene, int max_depth, float rr_threshold)
-    : Integrator(scene), max_depth_(max_depth), rr_threshold_(rr_threshold), lights_(scene.lights()) {}
+VolPathIntegrator::VolPathIntegrator(const Scene& scene, int max_depth, RussianRoulette roulette)
+    : Integrator(scene), max_depth_(max_depth), roulette_(roulette), lights_(scene.lights()) {}
 
 std::string VolPathIntegrator::to_string() const {
   return fmt::format("volpath integrator (participating media): maxdepth {}, {} light(s), power light sampling",
@@ -342,10 +342,7 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     // Russian roulette as `path`, on the throughput divided by the spectral MIS ratio (pbrt-v4).
     const SampledSpectrum rr_beta = beta / carried_average(r_u, lambda);
     const float q = lambda.secondary_terminated() ? rr_beta[0] : max_component(rr_beta);
-    if (depth > 1 && q < std::min(rr_threshold_, 1.f)) {
-      if (sampler.get_1d() >= q) break;
-      beta /= q;
-    }
+    if (roulette_.terminates(depth, q, sampler, beta)) break;
   }
   return L;
 }

@@ -12,6 +12,7 @@
 // Scenes without media are rendered by PathIntegrator instead (create_volpath_integrator).
 #pragma once
 #include "integrators/light_sampler.h"
+#include "integrators/russian_roulette.h"
 #include "render/integrator.h"
 
 namespace eyetrace {
@@ -23,7 +24,7 @@ class Medium;
 
 class VolPathIntegrator : public Integrator {
  public:
-  VolPathIntegrator(const Scene& scene, int max_depth, float rr_threshold);
+  VolPathIntegrator(const Scene& scene, int max_depth, RussianRoulette roulette = {});
   SampledSpectrum radiance(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, ScratchBuffer& arena,
                            RayTally& tally, VisibleSurface* visible = nullptr) const override;
   std::string to_string() const override;
@@ -75,7 +76,7 @@ class VolPathIntegrator : public Integrator {
                                      SampledSpectrum& r_u, SampledSpectrum& r_l, SampledSpectrum& L, Ray& ray,
                                      const Medium*& medium, LightSampleContext& prev_ctx) const;
   int max_depth_;
-  float rr_threshold_;
+  RussianRoulette roulette_;
   PowerLightSampler lights_;
 };
 
