@@ -3,11 +3,12 @@
 // with probability q and is reweighted by 1/q, so the estimate stays unbiased.
 //
 // pbrt-v4 plays from the second vertex (from_depth 2). eyetrace waits until the fifth, as
-// Mitsuba 3 (its rr_depth, 5) and pbrt-v3 (bounces > 3, counted from 0) do: early roulette kills paths whose remaining
-// contribution is large next to its variance (bright surroundings, high albedo) and adds that contribution's square to
-// the variance of every survivor. Measured in time to equal error, fifth against second (docs/performance.md, "Russian
-// roulette from the fifth vertex"): 2.3x on the issue-19 scene (depth 5, a uniform sky), 1.7x on the Cornell box (depth
-// 8), 1.1x on small-light.
+// Mitsuba 3 (its rr_depth, 5) and pbrt-v3 (bounces > 3, counted from 0) do: early roulette
+// kills paths whose remaining contribution is large next to its variance (bright surroundings,
+// high albedo) and adds that contribution's square to the variance of every survivor. Measured
+// in time to equal error, fifth against second (docs/performance.md, "Russian roulette from the
+// fifth vertex"): 2.2x on the issue-19 scene (depth 5, a uniform sky), 1.3x on the Cornell box
+// (depth 8), 1.2x on small-light.
 #pragma once
 #include <algorithm>
 
