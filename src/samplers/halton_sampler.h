@@ -4,11 +4,10 @@
 // the pattern of a 128 x 128 tile (as pbrt-v4): pixels 128 apart see the same points.
 // Dimensions past the prime table (256 primes) wrap around to dimension 2.
 #pragma once
+#include <limits>
 #include <memory>
 
-#include <limits>
 #include "core/sampler.h"
-
 #include "samplers/lowdiscrepancy.h"
 #include "scene/registry.h"
 
