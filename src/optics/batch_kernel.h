@@ -39,7 +39,7 @@ struct BlockJob {
 };
 
 // Traces a block through surfaces first..last (lanes not Ok at the start stay as they are).
-// The same template (below) compiled for the baseline instruction set (sequential_trace.cpp)
+// The same template (below) compiled for the baseline instruction set (trace_kernel_baseline.cpp)
 // and, on x86-64, for AVX2 (trace_kernel_avx2.cpp) and AVX-512F (trace_kernel_avx512.cpp).
 void trace_block_baseline(const BlockJob& job, Block& block);
 void trace_block_avx2(const BlockJob& job, Block& block);

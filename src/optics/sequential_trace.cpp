@@ -161,8 +161,6 @@ TraceResult CompiledSystem::trace_one(const Ray& ray, int first, int last, doubl
 
 namespace kernel {
 
-void trace_block_baseline(const BlockJob& job, Block& block) { trace_block<xsimd::batch<double>>(job, block); }
-
 void plate_surface_lanes(const BlockJob& job, int index, Block& block) {
   if (job.per_ray_wavelength)
     job.forward ? placed_surface_lanes<true, true, double>(job, index, block)
