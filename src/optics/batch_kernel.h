@@ -5,8 +5,9 @@
 // (V = double). Each lane does the one-ray trace's arithmetic (CompiledSystem::trace_one), so it
 // ends with its bits.
 //
-// Internal to the optics library: included by sequential_trace.cpp, trace_kernel_avx2.cpp and
-// trace_kernel_avx512.cpp (the same code compiled for AVX2 and AVX-512F, chosen at run time).
+// Internal to the optics library: included by sequential_trace.cpp (the lane-by-lane helpers),
+// trace_kernel_baseline.cpp, trace_kernel_avx2.cpp and trace_kernel_avx512.cpp (the same code
+// compiled for the baseline, AVX2 and AVX-512F, chosen at run time).
 #pragma once
 
 #include <array>
