@@ -111,10 +111,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, SampledWavelengt
         break;
       specular_bounce = false;  // the path leaves through Sw, a diffuse lobe
     }
-    // Russian roulette on the throughput's largest component, judged on the wavelengths still
-    // carried (a terminated one's beta no longer matters); see russian_roulette.h.
-    float q = lambda.secondary_terminated() ? beta[0] : max_component(beta);
-    if (roulette_.terminates(depth, q, sampler, beta)) break;
+    // Russian roulette on the throughput (russian_roulette.h).
+    if (roulette_.terminates(depth, RussianRoulette::weight(beta, lambda), sampler, beta)) break;
   }
   return L;
 }

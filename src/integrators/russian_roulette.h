@@ -21,6 +21,12 @@ struct RussianRoulette {
   float threshold = 1.f;  // "rrthreshold": pbrt-v3's and early pbrt-v4's; today's pbrt-v4 uses 1
   int from_depth = 5;     // "rrdepth": the first scattering vertex (1 = the first hit) that plays
 
+  // The weight roulette is judged on: the throughput's largest component over the wavelengths
+  // still carried (once the secondary ones are terminated only the hero's beta matters).
+  static float weight(const SampledSpectrum& beta, const SampledWavelengths& lambda) {
+    return lambda.secondary_terminated() ? beta[0] : max_component(beta);
+  }
+
   // Whether the path at scattering vertex `depth`, with roulette weight `q`, ends here; a
   // survivor's beta is divided by q. Draws a sample only when it plays (a NaN q never plays).
   bool terminates(int depth, float q, Sampler& sampler, SampledSpectrum& beta) const {

@@ -341,8 +341,7 @@ SampledSpectrum VolPathIntegrator::radiance(const Ray& camera_ray, SampledWavele
     }
     // Russian roulette as `path`, on the throughput divided by the spectral MIS ratio (pbrt-v4).
     const SampledSpectrum rr_beta = beta / carried_average(r_u, lambda);
-    const float q = lambda.secondary_terminated() ? rr_beta[0] : max_component(rr_beta);
-    if (roulette_.terminates(depth, q, sampler, beta)) break;
+    if (roulette_.terminates(depth, RussianRoulette::weight(rr_beta, lambda), sampler, beta)) break;
   }
   return L;
 }
