@@ -6,7 +6,7 @@
 # Usage: bench/dispersive_equal_error.py [box|gaussian]  (the figure scene's pixel filter is a
 # box; "gaussian" renders it with pbrt-v4's default filter instead). Run from anywhere after
 # building build/bin/eyetrace (or with EYETRACE=path/to/eyetrace); writes its renders into the current directory.
-# The two cameras take turns at every rung, REPEATS=3 times (environment), median CPU per rung: about 6 minutes.
+# The cameras take turns at every rung, REPEATS=3 times (environment), median CPU per rung: about 12 minutes.
 import json, math, os, resource, subprocess, sys
 import numpy as np, OpenImageIO as oiio
 
@@ -14,8 +14,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 B = os.environ.get("EYETRACE", os.path.join(ROOT, "build/bin/eyetrace"))  # another build: EYETRACE=path
 FILTER = sys.argv[1] if len(sys.argv) > 1 else "box"
 REPEATS = int(os.environ.get("REPEATS", "3"))  # renders per camera and rung; the median CPU counts
+# "disp" is the eye's default (dispersionsampling "auto": paths with a box filter, MIS with a
+# smooth one); "mis" and "paths" force each strategy, so one run compares all three.
 CAMS = {"mono": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
-        "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3'}
+        "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3',
+        "mis": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "string dispersionsampling" "mis"',
+        "paths": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "string dispersionsampling" "paths"'}
 
 
 def scene():
@@ -78,8 +82,9 @@ def main():
         fitted[cam] = fixed + marginal * spp_t
         print(f"{cam}: slope {k:.3f}, spp at 1e-3 {spp_t:.0f}, CPU s per spp {sec_per_spp:.4f}, s {out[cam]:.1f}; "
               f"fixed {fixed:.2f} s + {marginal:.4f} s/spp: one render {fitted[cam]:.2f} s")
-    print(f"filter {FILTER}: dispersive/monochromatic time at relMSE 1e-3: {out['disp'] / out['mono']:.2f} "
-          f"(one render each: {fitted['disp'] / fitted['mono']:.2f})")
+    for cam in ("disp", "mis", "paths"):
+        print(f"filter {FILTER}: {cam}/monochromatic time at relMSE 1e-3: {out[cam] / out['mono']:.2f} "
+              f"(one render each: {fitted[cam] / fitted['mono']:.2f})")
 
 
 main()

@@ -153,9 +153,10 @@ PluginSpec make_eye_spec(bool with_model) {
               .shown_default("dispersive")
               .with_unit("nm")
               .describe("A monochromatic eye: every ray is traced at this wavelength. Absent, the eye disperses: each "
-                        "sample's hero wavelength is traced through each medium's dispersion law (`eyetrace optics` "
-                        "lists them; Gullstrand's and Kooijman's are assumed), and the other wavelengths share its "
-                        "scene path by spectral MIS (docs/spectral.md)."),
+                        "sample's wavelengths are traced through each medium's dispersion law (`eyetrace optics` "
+                        "lists them; Gullstrand's and Kooijman's are assumed), sharing the hero wavelength's scene "
+                        "path by spectral MIS or each on a path of its own (`dispersionsampling`; "
+                        "docs/spectral.md)."),
           param::boolean("diffraction", false)
               .describe("Diffraction in the image: each ray's outgoing direction is drawn from the eye's wave "
                         "point-spread function (the optics' FFT PSF, precomputed every 2.5° of field and, for a "
@@ -163,6 +164,15 @@ PluginSpec make_eye_spec(bool with_model) {
                         "direction, so that a point source images as the optics' PSF (docs/wavefront.md, "
                         "\"Diffraction in renders\"). A dispersive eye then keeps each sample's hero wavelength only "
                         "(no spectral MIS). Eye cameras only."),
+          param::string("dispersionsampling", "auto")
+              .in({"auto", "mis", "paths"})
+              .describe("How a dispersive eye's four wavelengths of a sample share work: `mis`, the hero "
+                        "wavelength's camera ray and scene path carry all four, weighted by spectral MIS, each "
+                        "wavelength counted where it lands on the retina; `paths`, each wavelength gets a camera ray "
+                        "and scene path of its own from the same retina and pupil point (four paths a sample); "
+                        "`auto`, `paths` with a box pixel filter and `mis` with any other, the faster at equal "
+                        "error (docs/spectral.md, \"Wavelength paths\"). Integrators that splat light paths "
+                        "(`bdpt`) always use `mis`. No effect on a monochromatic eye."),
           param::string("pupilmapping", "concentric")
               .in({"concentric", "polar"})
               .describe("How the pupil sample's unit square reaches the pupil region: `concentric` (Shirley and "
@@ -330,6 +340,9 @@ LensSystemCamera::Settings eye_view_settings(const std::string& camera_name, con
   s.scene_units_per_mm = 1e-3 / params.get_double("sceneunit");
   s.dispersive = !params.has("wavelength");
   s.diffraction = params.get_bool("diffraction");
+  const std::string paths = params.get_string("dispersionsampling");  // the table admits only these
+  using Paths = LensSystemCamera::Settings::WavelengthPaths;
+  s.wavelength_paths = paths == "mis" ? Paths::Shared : paths == "paths" ? Paths::Apart : Paths::Auto;
   s.pupil.mapping =
       params.get_string("pupilmapping") == "polar" ? PupilSampler::Mapping::Polar : PupilSampler::Mapping::Concentric;
   return s;

@@ -214,8 +214,8 @@ optics::Ray LensSystemCamera::back_in(const optics::TraceResult& left) {
 std::optional<CameraRay> LensSystemCamera::generate_ray(const CameraSample& cs, SampledWavelengths& lambda) const {
   // Without the pixel's filter, or with diffraction (each wavelength's density of the ray would
   // be a convolution of its PSF over the pixels), the hero wavelength goes alone: the plain
-  // estimator that spectral MIS only makes less noisy.
-  if (dispersive_ && (!cs.filter || psf_table_)) lambda.terminate_secondary();
+  // estimator that spectral MIS only makes less noisy. So it does when the sample asks.
+  if (hero_alone(cs)) lambda.terminate_secondary();
   PendingRay pending;
   if (!start_ray(cs, &pending)) return std::nullopt;
   const int first = system_.image_index() - 1;
@@ -261,7 +261,7 @@ void LensSystemCamera::trace_rays(const CameraSample* samples, SampledWavelength
     size_t live = 0;
     for (size_t j = 0; j < n; ++j) {
       rays[base + j].reset();
-      if (dispersive_ && (!samples[base + j].filter || psf_table_)) lambdas[base + j].terminate_secondary();
+      if (hero_alone(samples[base + j])) lambdas[base + j].terminate_secondary();
       if (!start_ray(samples[base + j], &pending[live])) continue;
       traced[live] = pending[live].ray;
       lambda_nm[live] = double(lambdas[base + j][0]);

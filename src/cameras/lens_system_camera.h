@@ -49,6 +49,9 @@ class LensSystemCamera : public Camera, public SplattingCamera {
     // keeping the traced one. A dispersive eye then keeps each sample's hero wavelength only
     // (no spectral MIS, no splats): see generate_ray.
     bool diffraction = false;
+    // How a dispersive eye's wavelengths share work: one path by spectral MIS (Shared), a camera
+    // ray and path each (Apart), or by the pixel filter (Auto). The eye's `dispersionsampling`.
+    enum class WavelengthPaths { Auto, Shared, Apart } wavelength_paths = WavelengthPaths::Auto;
     PupilSampler::Options pupil;
     Shutter shutter;  // the realistic camera's; an eye's stays pbrt-v4's default, open from 0 to 1
   };
@@ -73,6 +76,14 @@ class LensSystemCamera : public Camera, public SplattingCamera {
   // Spectral MIS needs each wavelength's density of the ray, which diffraction makes a
   // convolution over the pixels (see generate_ray): the diffracting eye does not splat.
   bool splats() const override { return dispersive_ && !diffraction(); }
+  // Settings::wavelength_paths, "auto": apart with a box (constant) filter, whose wavelengths
+  // splatted by MIS cross pixel borders one by one and cost more at equal error (docs/spectral.md).
+  bool traces_wavelengths_apart(const Filter& filter) const override {
+    if (!splats()) return false;
+    using Paths = Settings::WavelengthPaths;
+    return settings_.wavelength_paths == Paths::Apart ||
+           (settings_.wavelength_paths == Paths::Auto && filter.constant());
+  }
   std::string to_string() const override;
 
   // --- For tests and tools ---------------------------------------------------------------
@@ -99,6 +110,8 @@ class LensSystemCamera : public Camera, public SplattingCamera {
   double weight_normalisation() const { return normalisation_; }
 
  private:
+  // The sample's hero wavelength goes alone (CameraSample::filter, hero_only; generate_ray).
+  bool hero_alone(const CameraSample& cs) const { return dispersive_ && (!cs.filter || cs.hero_only || psf_table_); }
   struct PendingRay {
     optics::Ray ray;     // from the retina towards the sampled plane point (system frame)
     glm::dvec3 d_local;  // the same direction in the meridian frame, unnormalised

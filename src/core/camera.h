@@ -1,8 +1,8 @@
 // Camera interface: a camera turns a CameraSample and the sample's wavelengths into an
 // optional world-space ray and a weight per wavelength. A camera whose optics disperse traces
 // the hero wavelength; when the sample names its pixel's filter it weights the other
-// wavelengths by spectral MIS (docs/spectral.md), else it terminates them
-// (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera lost
+// wavelengths by spectral MIS (docs/spectral.md), else (or when the sample asks for the hero
+// alone) it terminates them (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera lost
 // (vignetted, stopped by the iris, totally reflected inside a lens): the film counts it, it is
 // not a magic zero radiance.
 #pragma once
@@ -36,6 +36,9 @@ struct CameraSample {
   // at all.
   bool splat = false;
   IVec2 splat_lo{0}, splat_hi{0};
+  // The hero wavelength alone, whatever the filter: a renderer that traces each wavelength's
+  // own camera ray and path (Camera::traces_wavelengths_apart) asks for it.
+  bool hero_only = false;
 };
 
 struct CameraRay {
@@ -89,6 +92,10 @@ class Camera {
   // True when the camera may send a wavelength to another pixel (CameraRay::pixel_offset) for
   // samples that allow it (CameraSample::splat).
   virtual bool splats() const { return false; }
+  // True when, with this pixel filter, the camera's wavelengths are best estimated each by a
+  // camera ray and scene path of its own (the sample's four rotations of its wavelengths, each
+  // hero alone: CameraSample::hero_only) rather than by one path shared by spectral MIS.
+  virtual bool traces_wavelengths_apart(const Filter& /*filter*/) const { return false; }
 
   // Importance (pbrt-v4's We, PDF_We, SampleWi): an optional capability, which light tracing
   // (bdpt's t = 1 strategies) needs. A camera without it (the default) is reached only

@@ -73,13 +73,15 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        smooth_(allow_splat ? smooth_splatter(camera, film.filter()) : nullptr),
-        splat_(allow_splat && camera.splats() && (film.filter().constant() || smooth_)),
+        apart_(!light_splats && camera.traces_wavelengths_apart(film.filter())),
+        smooth_(allow_splat && !apart_ ? smooth_splatter(camera, film.filter()) : nullptr),
+        splat_(allow_splat && !apart_ && camera.splats() && (film.filter().constant() || smooth_)),
         light_splats_(light_splats) {}
   bool splats() const { return splat_; }
   ~SampleBatch() { flush(); }
 
   void add(IVec2 pixel, int index) {
+    if (apart_) return add_apart(pixel, index);
     pixels_[count_] = pixel;
     indices_[count_] = index;
     samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index);
@@ -95,11 +97,56 @@ class SampleBatch {
       smooth_->generate_rays_splatting(samples_, lambdas_, rays_, splats_, size_t(count_));
     else
       camera_.generate_rays(samples_, lambdas_, rays_, size_t(count_));
-    for (int i = 0; i < count_; ++i) integrate(i);
+    for (int i = 0; i < count_; i += apart_ ? kSpectrumSamples : 1) apart_ ? integrate_apart(i) : integrate(i);
     count_ = 0;
   }
 
  private:
+  // Wavelengths apart (Camera::traces_wavelengths_apart): the sample's film and lens point
+  // with its wavelengths rotated so that each is the hero once, kSpectrumSamples camera rays
+  // in a row, each the hero's alone.
+  void add_apart(IVec2 pixel, int index) {
+    static_assert(kCameraBatch % kSpectrumSamples == 0);
+    const CameraSample cs = draw_camera_sample(film_, *ts_.sampler, pixel, index);
+    for (int k = 0; k < kSpectrumSamples; ++k, ++count_) {
+      pixels_[count_] = pixel;
+      indices_[count_] = index;
+      samples_[count_] = cs;
+      samples_[count_].hero_only = true;
+      // The same rotation as sample_visible's: wavelength k of the sample is this one's hero.
+      float u = cs.wavelength_u + float(k) / kSpectrumSamples;
+      if (u >= 1.f) u -= 1.f;
+      lambdas_[count_] = SampledWavelengths::sample_visible(u);
+    }
+    if (count_ == kCameraBatch) flush();
+  }
+
+  // Each wavelength's radiance from its own path, at the hero's plain weight; together they are
+  // one sample of all the sample's wavelengths (each estimated by the one technique that made
+  // it, so no MIS weights), added in its pixel. Every path starts from the sample's own sampler
+  // dimensions: the wavelengths' paths are correlated, each unbiased.
+  void integrate_apart(int first) {
+    SampledSpectrum L(0.f);
+    VisibleSurface visible;
+    VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
+    bool any = false;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      const int i = first + k;
+      const std::optional<CameraRay>& cr = rays_[i];
+      if (!cr) continue;  // this wavelength's ray was lost: it adds zero (vignetting)
+      any = true;
+      ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
+      VisibleSurface* v = k == 0 ? vs : nullptr;
+      L[k] = integrator_.radiance(cr->ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, v)[0] * cr->hero_weight;
+      ts_.arena.reset();
+      if (v && visible.set)
+        set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
+    }
+    lost_ += !any;
+    const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[first].wavelength_u);
+    film_.add_sample(pixels_[first], L, lambda, samples_[first].filter_weight, vs);
+  }
+
   void integrate(int i) {
     const std::optional<CameraRay>& cr = rays_[i];
     const float filter_weight = samples_[i].filter_weight;
@@ -152,6 +199,7 @@ class SampleBatch {
   RayTally& tally_;
   uint64_t& lost_;
   PixelBounds tile_;
+  bool apart_;
   const SplattingCamera* smooth_;
   bool splat_;
   LightSplats* light_splats_;

@@ -10,6 +10,7 @@
 #include <random>
 #include <thread>
 
+#include "../support/lit_sphere_world.h"
 #include "../support/unity_id.h"
 #include "render/adaptive_sampling.h"
 #include "render/film.h"
@@ -135,18 +136,11 @@ Film "rgb" "integer xresolution" 40 "integer yresolution" 24 "string filename" "
 PixelFilter "gaussian"
 Sampler "zsobol" "integer pixelsamples" 128
 Integrator "path" "integer maxdepth" 4
-WorldBegin
-LightSource "point" "point3 from" [2 3 -3] "rgb I" [20 20 20]
-Material "diffuse" "rgb reflectance" [0.6 0.5 0.4]
-Shape "sphere" "float radius" 1
-Translate 0 -1 0
-Rotate 90 1 0 0
-Shape "disk" "float radius" 2
 )";
 
 RenderSetup setup_scene() {
   set_warnings_enabled(false);
-  return build_render_setup(parse_scene_string(kScene, "adaptive.pbrt", "/"), {});
+  return build_render_setup(parse_scene_string(kScene + test::lit_sphere_world(2), "adaptive.pbrt", "/"), {});
 }
 
 AdaptiveOptions options() {

@@ -19,6 +19,7 @@
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
 
+#include "../support/lit_sphere_world.h"
 #include "../support/unit_box_filter.h"
 
 namespace eyetrace {
@@ -32,13 +33,6 @@ const char* kScene = R"(LookAt 0 0 -4  0 0 0  0 1 0
 {}
 Sampler "zsobol" "integer pixelsamples" 16
 Integrator "path" "integer maxdepth" 4
-WorldBegin
-LightSource "point" "point3 from" [2 3 -3] "rgb I" [20 20 20]
-Material "diffuse" "rgb reflectance" [0.6 0.5 0.4]
-Shape "sphere" "float radius" 1
-Translate 0 -1 0
-Rotate 90 1 0 0
-Shape "disk" "float radius" 5
 )";
 
 std::string view(const char* camera, const char* film, const char* filter) {
@@ -51,16 +45,24 @@ const std::string kRgb = view("\"perspective\" \"float fov\" 40", "\"rgb\"", "\"
 const std::string kSpectral =
     view("\"perspective\" \"float fov\" 40",
          "\"spectral\" \"integer nbuckets\" 7 \"float lambdamin\" 380 \"float lambdamax\" 720", "\"gaussian\"");
+// The box filter's spectral MIS splats (`mis`; its default is a path per wavelength, below).
 const std::string kSplattingEyeSpectral =
+    view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6 \"string dispersionsampling\" \"mis\"",
+         "\"spectral\" \"integer nbuckets\" 5", "\"box\"");
+const std::string kSplattingEye =
+    view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6 \"string dispersionsampling\" \"mis\"", "\"rgb\"",
+         "\"box\"");
+// Each wavelength its own camera ray and path, four per sample (the box filter's default).
+const std::string kWavelengthPathsEye =
     view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"spectral\" \"integer nbuckets\" 5", "\"box\"");
-const std::string kSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6", "\"rgb\"", "\"box\"");
 // With a smooth filter every wavelength splats with the filter's weights (core/wavelength_splat.h).
 const std::string kSmoothSplattingEye = view("\"navarro\" \"float fov\" 40 \"float pupildiameter\" 6",
                                              "\"spectral\" \"integer nbuckets\" 5", "\"gaussian\"");
 
 RenderSetup setup_scene(const std::string& v = kRgb) {
   set_warnings_enabled(false);
-  return build_render_setup(parse_scene_string(fmt::format(fmt::runtime(kScene), v), "checkpoint.pbrt", "/"), {});
+  return build_render_setup(
+      parse_scene_string(fmt::format(fmt::runtime(kScene), v) + test::lit_sphere_world(5), "checkpoint.pbrt", "/"), {});
 }
 
 std::vector<double> render(RenderSetup& s, RenderOptions opts) {
@@ -100,12 +102,17 @@ TEST(FilmCheckpoint, AccumulatorsRestoreExactly) {
 
 class FilmCheckpointOf : public ::testing::TestWithParam<std::string> {};
 std::string view_name(const ::testing::TestParamInfo<std::string>& info) {
-  static const char* const kNames[] = {"rgb", "spectral", "splatting_eye", "splatting_eye_spectral",
-                                       "smooth_splatting_eye_spectral"};
+  static const char* const kNames[] = {"rgb",
+                                       "spectral",
+                                       "splatting_eye",
+                                       "splatting_eye_spectral",
+                                       "smooth_splatting_eye_spectral",
+                                       "wavelength_paths_eye_spectral"};
   return kNames[info.index];
 }
 INSTANTIATE_TEST_SUITE_P(Films, FilmCheckpointOf,
-                         ::testing::Values(kRgb, kSpectral, kSplattingEye, kSplattingEyeSpectral, kSmoothSplattingEye),
+                         ::testing::Values(kRgb, kSpectral, kSplattingEye, kSplattingEyeSpectral, kSmoothSplattingEye,
+                                           kWavelengthPathsEye),
                          view_name);
 
 // The eye case is only a test of splats if it splats: a dispersive eye with a box filter sends
