@@ -56,13 +56,10 @@ BUCKET_NM = 50.0
 AGREEMENT = 0.05  # a fringe agrees with the TCA within its noise (tolerance()) or this fraction of it
 MAX_EDGE_LIGHT = 0.01  # of a bucket's light in a window's outer EDGE_BAND_DEG
 # Pixel pitch and samples per pixel (spp: dispersive eye, mono_spp: monochromatic) of each
-# tools/figures quality. The dispersive eye's fringe is the noisier: its spectral MIS weighs a
-# wavelength that lands outside its pixel zero (docs/spectral.md), and at these pixel pitches
-# the TCA moves the ends of the spectrum several pixels, so little of the MIS gain is left
-# (measured at preview: sigma 0.22 arcmin at 3 mm and 64 spp, with a box or a Gaussian filter
-# alike, against 0.14 for the monochromatic eye at 16 spp), and MIS made its samples about 1.8x
-# as costly here, so preview gives it 32 spp to stay within the ~60 s the figure may add to
-# tools/figures on the shared machine.
+# tools/figures quality. The dispersive eye's samples cost more (with the scene's box filter it
+# traces a path per wavelength, docs/spectral.md), so preview gives it 32 spp to stay within the
+# ~60 s the figure may add to tools/figures; its fringe sigma there is 0.08 arcmin at 3 mm
+# against 0.15 for the monochromatic eye at 16 spp (docs/figures.md).
 QUALITY = {
     "smoke": dict(arcmin_per_px=6.0, spp=16, mono_spp=4),
     "preview": dict(arcmin_per_px=2.0, spp=32, mono_spp=16),
