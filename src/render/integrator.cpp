@@ -78,6 +78,8 @@ class SampleBatch {
         splat_(allow_splat && !apart_ && camera.splats() && (film.filter().constant() || smooth_)),
         light_splats_(light_splats) {}
   bool splats() const { return splat_; }
+  // Camera rays a sample makes (wavelengths apart: one per wavelength).
+  int rays_per_sample() const { return apart_ ? kSpectrumSamples : 1; }
   ~SampleBatch() { flush(); }
 
   void add(IVec2 pixel, int index) {
@@ -129,12 +131,13 @@ class SampleBatch {
     SampledSpectrum L(0.f);
     VisibleSurface visible;
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
-    bool any = false;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       const int i = first + k;
       const std::optional<CameraRay>& cr = rays_[i];
-      if (!cr) continue;  // this wavelength's ray was lost: it adds zero (vignetting)
-      any = true;
+      if (!cr) {
+        ++lost_;  // this wavelength's ray was lost: it adds zero (vignetting)
+        continue;
+      }
       ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
       VisibleSurface* v = k == 0 ? vs : nullptr;
       L[k] = integrator_.radiance(cr->ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, v)[0] * cr->hero_weight;
@@ -142,7 +145,6 @@ class SampleBatch {
       if (v && visible.set)
         set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
     }
-    lost_ += !any;
     const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[first].wavelength_u);
     film_.add_sample(pixels_[first], L, lambda, samples_[first].filter_weight, vs);
   }
@@ -379,9 +381,11 @@ class RenderLoop {
     PixelBounds tb = tp_.tile_bounds(t, b_);
     RayTally tally;
     uint64_t lost = 0, n = 0;
+    int rays_per_sample = 1;
     {
       SampleBatch batch(integrator_, camera_, film_, ts, tally, lost, tb, !tp_.adaptive(),
                         light_splats_ ? &tile_splats_[t] : nullptr);
+      rays_per_sample = batch.rays_per_sample();
       if (batch.splats() || light_splats_) {
         // Sample index outermost: a pixel's splat sum then receives its neighbours' terms in an
         // order that passes do not change (see Film). 11 % slower than pixel by pixel (the
@@ -402,7 +406,7 @@ class RenderLoop {
       }
     }
     counters_.samples += n;
-    counters_.camera_rays += n;
+    counters_.camera_rays += n * uint64_t(rays_per_sample);
     counters_.camera_rays_lost += lost;
     counters_.rays_traced += tally.rays;
     counters_.shadow_rays += tally.shadow_rays;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "../support/lit_sphere_world.h"
@@ -31,7 +32,11 @@ constexpr int kSeeds = 10;
 // tolerance follows the count; the paths' lower variance holds at 8 too).
 const int kSpp = std::max(8, test::sample_count(32));
 
-std::vector<double> render_blocks(const char* sampling, const char* filter, int seed) {
+struct Counts {
+  uint64_t samples = 0, camera_rays = 0;
+};
+
+std::vector<double> render_blocks(const char* sampling, const char* filter, int seed, Counts* counts = nullptr) {
   const std::string scene = fmt::format(R"(LookAt 0 0 -4  0 0 0  0 1 0
 Camera "navarro" "float fov" 40 "float pupildiameter" 6 "string dispersionsampling" "{}"
 Film "rgb" "integer xresolution" {} "integer yresolution" {} "string filename" "out.exr"
@@ -47,6 +52,7 @@ Integrator "path" "integer maxdepth" 3
   o.progress = false;
   RenderCounters counters;
   s.integrator->render(*s.camera, *s.sampler, *s.film, o, counters);
+  if (counts) *counts = {counters.samples.load(), counters.camera_rays.load()};
   std::vector<double> blocks(size_t(kW / kBlock) * (kH / kBlock) * 3, 0.0);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
@@ -110,6 +116,16 @@ TEST(WavelengthPaths, AutoPicksPathsForABoxAndMisOtherwise) {
   EXPECT_NE(render_blocks("auto", "box", 7), render_blocks("mis", "box", 7));
   EXPECT_EQ(render_blocks("auto", "gaussian", 7), render_blocks("mis", "gaussian", 7));
   EXPECT_NE(render_blocks("auto", "gaussian", 7), render_blocks("paths", "gaussian", 7));
+}
+
+// --stats counts every camera ray: four a sample with paths, one with MIS.
+TEST(WavelengthPaths, CountFourCameraRaysASample) {
+  Counts paths, mis;
+  render_blocks("paths", "box", 7, &paths);
+  render_blocks("mis", "box", 7, &mis);
+  EXPECT_EQ(paths.samples, uint64_t(kW) * kH * uint64_t(kSpp));
+  EXPECT_EQ(paths.camera_rays, 4 * paths.samples);
+  EXPECT_EQ(mis.camera_rays, mis.samples);
 }
 
 }  // namespace EYETRACE_UNITY_ID
