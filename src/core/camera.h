@@ -2,9 +2,9 @@
 // optional world-space ray and a weight per wavelength. A camera whose optics disperse traces
 // the hero wavelength; when the sample names its pixel's filter it weights the other
 // wavelengths by spectral MIS (docs/spectral.md), else (or when the sample asks for the hero
-// alone) it terminates them (SampledWavelengths::terminate_secondary). An empty optional is a ray the camera lost
-// (vignetted, stopped by the iris, totally reflected inside a lens): the film counts it, it is
-// not a magic zero radiance.
+// alone) it terminates them (SampledWavelengths::terminate_secondary). An empty optional is a
+// ray the camera lost (vignetted, stopped by the iris, totally reflected inside a lens): the
+// film counts it, it is not a magic zero radiance.
 #pragma once
 #include <algorithm>
 #include <cstddef>
