@@ -113,12 +113,15 @@ class SampledWavelengths {
   // tabulated sampler itself (piecewise constant, within 0.5 % of the formula above).
   static SampledWavelengths sample_visible(float u) {
     SampledWavelengths w;
-    for (int i = 0; i < kSpectrumSamples; ++i) {
-      float up = u + float(i) / kSpectrumSamples;
-      if (up >= 1.f) up -= 1.f;
-      visible_wavelength_from_table(up, &w.lambda_[i], &w.pdf_[i]);
-    }
+    for (int i = 0; i < kSpectrumSamples; ++i) visible_wavelength_from_table(rotated(u, i), &w.lambda_[i], &w.pdf_[i]);
     return w;
+  }
+  // The uniform number of wavelength i of the set drawn from u: sample_visible(rotated(u, i))
+  // is the same set with wavelength i first (its hero).
+  static float rotated(float u, int i) {
+    float up = u + float(i) / kSpectrumSamples;
+    if (up >= 1.f) up -= 1.f;
+    return up;
   }
   // Uniform over [lo, hi] with the same stratification (tests; spectral films of a band).
   static SampledWavelengths sample_uniform(float u, float lo = kLambdaMin, float hi = kLambdaMax) {

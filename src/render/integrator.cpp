@@ -115,10 +115,7 @@ class SampleBatch {
       indices_[count_] = index;
       samples_[count_] = cs;
       samples_[count_].hero_only = true;
-      // The same rotation as sample_visible's: wavelength k of the sample is this one's hero.
-      float u = cs.wavelength_u + float(k) / kSpectrumSamples;
-      if (u >= 1.f) u -= 1.f;
-      lambdas_[count_] = SampledWavelengths::sample_visible(u);
+      lambdas_[count_] = SampledWavelengths::sample_visible(SampledWavelengths::rotated(cs.wavelength_u, k));
     }
     if (count_ == kCameraBatch) flush();
   }
@@ -138,15 +135,27 @@ class SampleBatch {
         ++lost_;  // this wavelength's ray was lost: it adds zero (vignetting)
         continue;
       }
-      ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
-      VisibleSurface* v = k == 0 ? vs : nullptr;
-      L[k] = integrator_.radiance(cr->ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, v)[0] * cr->hero_weight;
-      ts_.arena.reset();
-      if (v && visible.set)
-        set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
+      L[k] = trace_path(i, k == 0 ? vs : nullptr)[0] * cr->hero_weight;
     }
     const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[first].wavelength_u);
     film_.add_sample(pixels_[first], L, lambda, samples_[first].filter_weight, vs);
+  }
+
+  // Camera ray i's scene path from the sample's own sampler dimensions: its radiance (and, with
+  // light tracing, its splats), and the visible surface's position differentials for a G-buffer.
+  SampledSpectrum trace_path(int i, VisibleSurface* vs) {
+    const Ray& ray = rays_[i]->ray;
+    ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
+    SampledSpectrum L(0.f);
+    if (light_splats_) {
+      light_splats_->start_sample(indices_[i]);
+      L = integrator_.radiance_and_splats(ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, vs, *light_splats_);
+    } else {
+      L = integrator_.radiance(ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, vs);
+    }
+    ts_.arena.reset();
+    if (vs && vs->set) set_position_differentials(camera_, samples_[i], ray, ts_.sampler->samples_per_pixel(), *vs);
+    return L;
   }
 
   void integrate(int i) {
@@ -158,20 +167,10 @@ class SampleBatch {
       film_.add_sample(pixels_[i], RGB(0.f), filter_weight);
       return;
     }
-    ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
-    SampledWavelengths& lambda = lambdas_[i];
+    const SampledWavelengths& lambda = lambdas_[i];
     VisibleSurface visible;
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
-    SampledSpectrum L(0.f);
-    if (light_splats_) {
-      light_splats_->start_sample(indices_[i]);
-      L = integrator_.radiance_and_splats(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs, *light_splats_);
-    } else {
-      L = integrator_.radiance(cr->ray, lambda, *ts_.sampler, ts_.arena, tally_, vs);
-    }
-    ts_.arena.reset();
-    if (vs && visible.set)
-      set_position_differentials(camera_, samples_[i], cr->ray, ts_.sampler->samples_per_pixel(), visible);
+    SampledSpectrum L = trace_path(i, vs);
     if (lambda.secondary_terminated()) {
       film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
       return;
