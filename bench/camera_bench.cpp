@@ -5,6 +5,7 @@
 // "useful" = fraction of samples that gave a ray.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <random>
 
 #include "cameras/lens_system_camera.h"
@@ -147,31 +148,61 @@ void BM_NavarroContactLensBatched(benchmark::State& state) {
 }
 BENCHMARK(BM_NavarroContactLensBatched);
 
-// The dispersive eye as a render drives it: the samples name their pixel's filter, so every
-// ray's three secondary wavelengths are traced back in for spectral MIS (spectral_mis.cpp).
-// Its ratio to BM_NavarroBatched is the camera-side cost of MIS.
-void BM_NavarroBatchedSpectralMis(benchmark::State& state) {
-  const BoxFilter box(Vec2(0.5f));
-  std::vector<CameraSample> samples = tile_ordered_samples();
-  for (CameraSample& cs : samples) {
-    cs.filter = &box;
-    cs.filter_offset = cs.p_film - glm::floor(cs.p_film) - Vec2(0.5f);
-  }
+// generate_rays over dispersive-eye samples with their wavelengths (samples.size() a power of
+// two), 16 at a time as the integrator asks.
+void run_dispersive(benchmark::State& state, const std::vector<CameraSample>& samples,
+                    const std::vector<SampledWavelengths>& lambdas) {
   auto cam = eye("navarro", "\"float pupildiameter\" 5 \"float fov\" 60");
   constexpr size_t kChunk = 16;
   std::optional<CameraRay> out[kChunk];
-  SampledWavelengths lambdas[kChunk];
+  SampledWavelengths batch[kChunk];
   size_t i = 0, n = 0;
   for (auto _ : state) {
-    for (size_t j = 0; j < kChunk; ++j) lambdas[j] = SampledWavelengths::sample_visible(float(j) / kChunk);
-    cam->generate_rays(&samples[i], lambdas, out, kChunk);
+    std::copy_n(&lambdas[i], kChunk, batch);  // the camera may terminate the secondaries
+    cam->generate_rays(&samples[i], batch, out, kChunk);
     benchmark::DoNotOptimize(out);
     i = (i + kChunk) & (samples.size() - 1);
     n += kChunk;
   }
   state.SetItemsProcessed(static_cast<int64_t>(n));
 }
+
+// The dispersive eye as a render drives it: the samples name their pixel's filter, so every
+// ray's three secondary wavelengths are traced back in for spectral MIS (spectral_mis.cpp).
+// Its ratio to BM_NavarroBatched is the camera-side cost of MIS.
+void BM_NavarroBatchedSpectralMis(benchmark::State& state) {
+  const BoxFilter box(Vec2(0.5f));
+  std::vector<CameraSample> samples = tile_ordered_samples();
+  std::vector<SampledWavelengths> lambdas;
+  for (CameraSample& cs : samples) {
+    cs.filter = &box;
+    cs.filter_offset = cs.p_film - glm::floor(cs.p_film) - Vec2(0.5f);
+    lambdas.push_back(SampledWavelengths::sample_visible(float(lambdas.size() % 16) / 16));
+  }
+  run_dispersive(state, samples, lambdas);
+}
 BENCHMARK(BM_NavarroBatchedSpectralMis);
+
+// The dispersive eye as a render with wavelengths apart drives it (the default with a box
+// filter): each sample's film and pupil point four times in a row, wavelengths rotated so that
+// each is the hero once, each ray the hero's alone. items_per_second = camera rays (four a
+// sample); its ratio to BM_NavarroBatched is a dispersive ray's cost against a monochromatic one.
+void BM_NavarroBatchedWavelengthPaths(benchmark::State& state) {
+  const BoxFilter box(Vec2(0.5f));
+  const std::vector<CameraSample> drawn = tile_ordered_samples();
+  std::vector<CameraSample> samples;
+  std::vector<SampledWavelengths> lambdas;
+  for (size_t s = 0; s < drawn.size() / kSpectrumSamples; ++s)
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      CameraSample cs = drawn[s];
+      cs.filter = &box;
+      cs.hero_only = true;
+      samples.push_back(cs);
+      lambdas.push_back(SampledWavelengths::sample_visible(SampledWavelengths::rotated(float(s % 16) / 16, k)));
+    }
+  run_dispersive(state, samples, lambdas);
+}
+BENCHMARK(BM_NavarroBatchedWavelengthPaths);
 
 // The same with the batch trace on the baseline instruction set (SSE2) or on AVX2 instead of
 // the start-up choice (the widest the CPU has): what a CPU without AVX2, or without AVX-512, gets.

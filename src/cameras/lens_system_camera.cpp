@@ -262,7 +262,13 @@ void LensSystemCamera::trace_rays(const CameraSample* samples, SampledWavelength
     for (size_t j = 0; j < n; ++j) {
       rays[base + j].reset();
       if (hero_alone(samples[base + j])) lambdas[base + j].terminate_secondary();
-      if (!start_ray(samples[base + j], &pending[live])) continue;
+      // A renderer that traces wavelengths apart gives each film and pupil point once per
+      // wavelength in a row: the ray's start (retina point, pupil point) is the previous one's.
+      if (live > 0 && index[live - 1] == base + j - 1 && same_start(samples[base + j - 1], samples[base + j])) {
+        pending[live] = pending[live - 1];
+      } else if (!start_ray(samples[base + j], &pending[live])) {
+        continue;
+      }
       traced[live] = pending[live].ray;
       lambda_nm[live] = double(lambdas[base + j][0]);
       index[live++] = base + j;

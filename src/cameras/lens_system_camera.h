@@ -129,6 +129,10 @@ class LensSystemCamera : public Camera, public SplattingCamera {
     IVec2 offset{0};             // the pixel it counts in, from the sample's (splats)
   };
   bool start_ray(const CameraSample& cs, PendingRay* pending) const;
+  // Whether start_ray gives b what it gave a (the same film and pupil point).
+  static bool same_start(const CameraSample& a, const CameraSample& b) {
+    return a.p_film == b.p_film && a.p_lens == b.p_lens;
+  }
   static optics::Ray back_in(const optics::TraceResult& left);
   std::optional<CameraRay> finish_ray(const CameraSample& cs, const PendingRay& pending, const optics::TraceResult& r,
                                       double lambda_nm) const;

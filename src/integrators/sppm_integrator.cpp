@@ -59,20 +59,6 @@ class PhotonRng {
   uint64_t state_;
 };
 
-// One photon's flux landing within a visible point's radius.
-struct Deposit {
-  uint32_t pixel;
-  RGB phi;
-};
-
-struct SppmThreadState {
-  std::unique_ptr<Sampler> sampler;
-  ScratchBuffer camera_arena;  // visible points' BSDFs: kept until the iteration ends
-  ScratchBuffer photon_arena;  // reset after every photon
-  RayTally tally;
-  uint64_t camera_rays = 0, lost = 0, nonfinite = 0;
-};
-
 void add_rgb(double sum[3], const RGB& v) {
   sum[0] += v.r;
   sum[1] += v.g;
@@ -83,6 +69,23 @@ void add_rgb(double sum[3], const RGB& v) {
 
 // One render() call: the per-pixel state and the passes of each iteration.
 class SppmIntegrator::Run {
+  // Members of Run rather than of the file's anonymous namespace: Run's fields and lambdas hold
+  // them, and a class with linkage must not (gcc's -Wsubobject-linkage in a unity build).
+
+  // One photon's flux landing within a visible point's radius.
+  struct Deposit {
+    uint32_t pixel;
+    RGB phi;
+  };
+
+  struct SppmThreadState {
+    std::unique_ptr<Sampler> sampler;
+    ScratchBuffer camera_arena;  // visible points' BSDFs: kept until the iteration ends
+    ScratchBuffer photon_arena;  // reset after every photon
+    RayTally tally;
+    uint64_t camera_rays = 0, lost = 0, nonfinite = 0;
+  };
+
  public:
   Run(const SppmIntegrator& in, const Camera& camera, const Sampler& sampler, Film& film, const RenderOptions& opts)
       : in_(in),

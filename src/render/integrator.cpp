@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/splatting_camera.h"
 #include "render/film.h"
+#include "render/replay_sampler.h"
 
 namespace eyetrace {
 
@@ -76,7 +77,8 @@ class SampleBatch {
         apart_(!light_splats && camera.traces_wavelengths_apart(film.filter())),
         smooth_(allow_splat && !apart_ ? smooth_splatter(camera, film.filter()) : nullptr),
         splat_(allow_splat && !apart_ && camera.splats() && (film.filter().constant() || smooth_)),
-        light_splats_(light_splats) {}
+        light_splats_(light_splats),
+        replay_(*ts.sampler) {}
   bool splats() const { return splat_; }
   // Camera rays a sample makes (wavelengths apart: one per wavelength).
   int rays_per_sample() const { return apart_ ? kSpectrumSamples : 1; }
@@ -123,11 +125,13 @@ class SampleBatch {
   // Each wavelength's radiance from its own path, at the hero's plain weight; together they are
   // one sample of all the sample's wavelengths (each estimated by the one technique that made
   // it, so no MIS weights), added in its pixel. Every path starts from the sample's own sampler
-  // dimensions: the wavelengths' paths are correlated, each unbiased.
+  // dimensions: the wavelengths' paths are correlated, each unbiased. The first path's sampler
+  // values are kept and given again to the others (render/replay_sampler.h).
   void integrate_apart(int first) {
     SampledSpectrum L(0.f);
     VisibleSurface visible;
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
+    bool recorded = false;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       const int i = first + k;
       const std::optional<CameraRay>& cr = rays_[i];
@@ -135,7 +139,13 @@ class SampleBatch {
         ++lost_;  // this wavelength's ray was lost: it adds zero (vignetting)
         continue;
       }
-      L[k] = trace_path(i, k == 0 ? vs : nullptr)[0] * cr->hero_weight;
+      if (recorded) {
+        replay_.replay();
+      } else {
+        replay_.record(pixels_[i], indices_[i], kCameraDimensions);
+        recorded = true;
+      }
+      L[k] = follow_path(i, k == 0 ? vs : nullptr, replay_)[0] * cr->hero_weight;
     }
     const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[first].wavelength_u);
     film_.add_sample(pixels_[first], L, lambda, samples_[first].filter_weight, vs);
@@ -144,14 +154,18 @@ class SampleBatch {
   // Camera ray i's scene path from the sample's own sampler dimensions: its radiance (and, with
   // light tracing, its splats), and the visible surface's position differentials for a G-buffer.
   SampledSpectrum trace_path(int i, VisibleSurface* vs) {
-    const Ray& ray = rays_[i]->ray;
     ts_.sampler->start_pixel_sample(pixels_[i], indices_[i], kCameraDimensions);
+    return follow_path(i, vs, *ts_.sampler);
+  }
+  // The same from a sampler already at the path's first dimension.
+  SampledSpectrum follow_path(int i, VisibleSurface* vs, Sampler& sampler) {
+    const Ray& ray = rays_[i]->ray;
     SampledSpectrum L(0.f);
     if (light_splats_) {
       light_splats_->start_sample(indices_[i]);
-      L = integrator_.radiance_and_splats(ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, vs, *light_splats_);
+      L = integrator_.radiance_and_splats(ray, lambdas_[i], sampler, ts_.arena, tally_, vs, *light_splats_);
     } else {
-      L = integrator_.radiance(ray, lambdas_[i], *ts_.sampler, ts_.arena, tally_, vs);
+      L = integrator_.radiance(ray, lambdas_[i], sampler, ts_.arena, tally_, vs);
     }
     ts_.arena.reset();
     if (vs && vs->set) set_position_differentials(camera_, samples_[i], ray, ts_.sampler->samples_per_pixel(), *vs);
@@ -204,6 +218,7 @@ class SampleBatch {
   const SplattingCamera* smooth_;
   bool splat_;
   LightSplats* light_splats_;
+  ReplaySampler replay_;  // the per-wavelength paths' sampler values (wavelengths apart)
   IVec2 pixels_[kCameraBatch];
   int indices_[kCameraBatch];
   CameraSample samples_[kCameraBatch];
