@@ -168,11 +168,13 @@ PluginSpec make_eye_spec(bool with_model) {
               .in({"auto", "mis", "paths"})
               .describe("How a dispersive eye's four wavelengths of a sample share work: `mis`, the hero "
                         "wavelength's camera ray and scene path carry all four, weighted by spectral MIS, each "
-                        "wavelength counted where it lands on the retina; `paths`, each wavelength gets a camera ray "
-                        "and scene path of its own from the same retina and pupil point (four paths a sample); "
-                        "`auto`, `paths` with a box pixel filter and `mis` with any other, the faster at equal "
-                        "error (docs/spectral.md, \"Wavelength paths\"). Integrators that splat light paths "
-                        "(`bdpt`) always use `mis`. No effect on a monochromatic eye."),
+                        "wavelength counted where it lands on the retina (with a box pixel filter each pixel then "
+                        "divides by its wavelengths' shares: normalised splats); `paths`, each wavelength gets a "
+                        "camera ray and scene path of its own from the same retina and pupil point (four paths a "
+                        "sample); `auto`, `mis`, except `paths` with a box filter under adaptive sampling (which "
+                        "cannot splat), the faster at equal error (docs/spectral.md, \"Wavelength paths\"). "
+                        "Integrators that splat light paths (`bdpt`) always use `mis`. No effect on a "
+                        "monochromatic eye."),
           param::string("pupilmapping", "concentric")
               .in({"concentric", "polar"})
               .describe("How the pupil sample's unit square reaches the pupil region: `concentric` (Shirley and "

@@ -76,13 +76,14 @@ class LensSystemCamera : public Camera, public SplattingCamera {
   // Spectral MIS needs each wavelength's density of the ray, which diffraction makes a
   // convolution over the pixels (see generate_ray): the diffracting eye does not splat.
   bool splats() const override { return dispersive_ && !diffraction(); }
-  // Settings::wavelength_paths, "auto": apart with a box (constant) filter, whose wavelengths
-  // splatted by MIS cross pixel borders one by one and cost more at equal error (docs/spectral.md).
-  bool traces_wavelengths_apart(const Filter& filter) const override {
+  // Settings::wavelength_paths, "auto": spectral MIS, except with a box (constant) filter in a
+  // render that cannot splat (adaptive sampling), where MIS would keep each wavelength in the
+  // sample's pixel and cost more at equal error than paths (docs/spectral.md).
+  bool traces_wavelengths_apart(const Filter& filter, bool splats_allowed) const override {
     if (!splats()) return false;
     using Paths = Settings::WavelengthPaths;
     return settings_.wavelength_paths == Paths::Apart ||
-           (settings_.wavelength_paths == Paths::Auto && filter.constant());
+           (settings_.wavelength_paths == Paths::Auto && filter.constant() && !splats_allowed);
   }
   std::string to_string() const override;
 

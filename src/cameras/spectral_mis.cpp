@@ -27,6 +27,9 @@
 // sample's own tile (so each pixel is written by one thread); the techniques whose landing
 // pixels lie in that tile share the weight (the balance heuristic over them: for a pair of
 // wavelengths "both in one tile" is symmetric, so the weights of every ray still sum to 1).
+// Each wavelength also reports its share of the sample, 4 u_k / sum u (CameraRay::share), by
+// whose sums the film divides instead of the pixel's sample count (render/film.h, "Normalised
+// splats").
 //
 // With a smooth filter (generate_rays_splatting) every wavelength k splats into every pixel P'
 // of the sample's tile T whose filter reaches its landing point s_k, with the filter's value
@@ -211,6 +214,7 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
     const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].filter * terms[k].inv_n2_jacobian;
     out->weight[k] = std::isfinite(w) ? static_cast<float>(w) : 0.f;  // never NaN into the film
     out->pixel_offset[k] = terms[k].offset;
+    out->share[k] = static_cast<float>(kSpectrumSamples * terms[k].u / sum_u);
   }
 }
 

@@ -54,6 +54,11 @@ struct CameraRay {
   // Where each wavelength's weighted radiance belongs, from the sample's pixel (a dispersive
   // camera splatting by wavelength); (0, 0) is the sample's own pixel.
   IVec2 pixel_offset[kSpectrumSamples] = {};
+  // With those splats (box filter), each wavelength's share of the sample: the number of
+  // wavelengths times its balance-heuristic weight, 4 u_k / sum u (cameras/spectral_mis.cpp).
+  // Summed over the samples that put wavelength k into a pixel, its expectation is the pixel's
+  // sample count, by which the film divides (Film::add_share).
+  SampledSpectrum share{1.f};
 };
 
 // Light arriving at a point from the camera's lens (Camera::sample_wi, pbrt-v4's CameraWiSample).
@@ -95,7 +100,9 @@ class Camera {
   // True when, with this pixel filter, the camera's wavelengths are best estimated each by a
   // camera ray and scene path of its own (the sample's four rotations of its wavelengths, each
   // hero alone: CameraSample::hero_only) rather than by one path shared by spectral MIS.
-  virtual bool traces_wavelengths_apart(const Filter& /*filter*/) const { return false; }
+  // splats_allowed: whether the render lets wavelengths count in other pixels (CameraSample::
+  // splat; not with adaptive sampling).
+  virtual bool traces_wavelengths_apart(const Filter& /*filter*/, bool /*splats_allowed*/) const { return false; }
 
   // Importance (pbrt-v4's We, PDF_We, SampleWi): an optional capability, which light tracing
   // (bdpt's t = 1 strategies) needs. A camera without it (the default) is reached only

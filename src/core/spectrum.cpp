@@ -150,6 +150,21 @@ float cie_y_integral() {
 
 float white_illuminant(float lambda) { return cie_interpolate(white_samples(), lambda); }
 
+Vec3 equal_energy_xyz() {
+  // The trapezoid rule on the rows is exact for the piecewise-linear functions, as in
+  // cie_y_integral (every wavelength the table covers has a positive sampling density).
+  static const Vec3 xyz = [] {
+    glm::dvec3 s(0.0);
+    for (int i = 0; i + 1 < kCieRows; ++i)
+      s += 0.5 *
+           glm::dvec3(double(row(i).x) + row(i + 1).x, double(row(i).y) + row(i + 1).y,
+                      double(row(i).z) + row(i + 1).z) *
+           double(kCieLambdaStep);
+    return Vec3(s / s.y);
+  }();
+  return xyz;
+}
+
 Vec3 sampled_to_xyz(const SampledSpectrum& L, const SampledWavelengths& lambda) {
   const SampledSpectrum pdf = lambda.pdf();
   Vec3 xyz(0.f);

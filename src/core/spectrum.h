@@ -80,6 +80,9 @@ struct SpectrumValue {
 Vec3 cie_xyz_bar(float lambda_nm);
 // The integral of the interpolated y-bar over wavelength (nm): Y of the constant spectrum 1.
 float cie_y_integral();
+// What sampled_to_xyz gives the constant spectrum 1 in expectation, exactly: the integrals of the
+// interpolated x-bar, y-bar and z-bar over that of y-bar (Y = 1).
+Vec3 equal_energy_xyz();
 // The colour space's white (D65) as an emission of luminance 1, at lambda.
 float white_illuminant(float lambda_nm);
 // Monte Carlo estimate of XYZ (luminance scale: the constant spectrum 1 has Y = 1) from

@@ -36,7 +36,7 @@ Film::Film(IVec2 resolution, PixelBounds bounds, std::unique_ptr<Filter> filter,
     throw std::invalid_argument("Film: invalid spectral buckets");
   if (!(response_.max_component > 0.f) || !(response_.imaging_ratio > 0.f) || !std::isfinite(response_.imaging_ratio))
     throw std::invalid_argument("Film: the maximum component and the imaging ratio must be positive");
-  bucket_sums_.assign(bounds.area() * 2 * size_t(buckets_.count), 0.0);
+  bucket_sums_.assign(bounds.area() * kBucketAccumulators * size_t(buckets_.count), 0.0);
 }
 
 void Film::enable_gbuffer(const AnimatedTransform& world_from_output) {
@@ -106,7 +106,7 @@ bool Film::add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const Samp
   px.weight += w;
   const double wy = double(w) * double(luminance(rgb));
   px.sum_y2 += wy * wy;
-  double* sums = &bucket_sums_[i_px * 2 * size_t(buckets_.count)];
+  double* sums = &bucket_sums_[i_px * kBucketAccumulators * size_t(buckets_.count)];
   for (int i = 0; i < kSpectrumSamples; ++i)
     if (bucket[i] >= 0) sums[bucket[i]] += term[i];
   return true;
@@ -135,7 +135,7 @@ bool Film::add_splats(const WavelengthSplat& s, const SampledSpectrum& L, const 
   for (int r = 0; r < s.ny; ++r)
     for (int c = 0; c < s.nx; ++c) {
       const double w = double(s.wx[c]) * double(s.wy[r]);
-      double* splats = &bucket_sums_[(index(s.first + IVec2(c, r)) * 2 + 1) * size_t(buckets_.count)];
+      double* splats = &bucket_sums_[(index(s.first + IVec2(c, r)) * kBucketAccumulators + 1) * size_t(buckets_.count)];
       for (int i = 0; i < kSpectrumSamples; ++i)
         if (bucket[i] >= 0) splats[bucket[i]] += w * term[i];
     }
@@ -177,9 +177,61 @@ void Film::add_wavelength_splats(const WavelengthSplat* splats, const SampledSpe
   }
 }
 
+bool Film::add_share(IVec2 pixel, const SampledSpectrum& share, const SampledWavelengths& lambda) {
+  const Vec3 xyz = sampled_to_xyz(share, lambda);
+  if (!(std::isfinite(xyz.x) && std::isfinite(xyz.y) && std::isfinite(xyz.z))) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  int bucket[kSpectrumSamples];
+  double term[kSpectrumSamples];
+  if (buckets_.spectral() && !bucket_terms(share, lambda, 1.f, bucket, term)) {
+    nonfinite_.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  const size_t i_px = index(pixel);
+  Pixel& px = pixels_[i_px];
+  for (int c = 0; c < 3; ++c) px.share[c] += double(xyz[c]);
+  if (!buckets_.spectral()) return true;
+  double* shares = &bucket_sums_[(i_px * kBucketAccumulators + 2) * size_t(buckets_.count)];
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    if (bucket[i] >= 0) shares[bucket[i]] += term[i];
+  return true;
+}
+
+namespace {
+
+// xyz_to_linear_srgb as a matrix (it is linear), and its inverse.
+const glm::dmat3& srgb_from_xyz() {
+  static const glm::dmat3 m = [] {
+    glm::dmat3 a;
+    for (int c = 0; c < 3; ++c) {
+      Vec3 e(0.f);
+      e[c] = 1.f;
+      const RGB v = xyz_to_linear_srgb(e);
+      a[c] = glm::dvec3(v.r, v.g, v.b);
+    }
+    return a;
+  }();
+  return m;
+}
+
+}  // namespace
+
+// (sum + splat) / share sums per XYZ channel, times the white they estimate (see film.h).
+RGB Film::normalised_value(const Pixel& px) const {
+  static const glm::dmat3 xyz_from_srgb = glm::inverse(srgb_from_xyz());
+  const glm::dvec3 sum =
+      xyz_from_srgb * glm::dvec3(px.sum[0] + px.splat[0], px.sum[1] + px.splat[1], px.sum[2] + px.splat[2]);
+  const glm::dvec3 xyz = sum / glm::dvec3(px.share[0], px.share[1], px.share[2]) * glm::dvec3(equal_energy_xyz());
+  const glm::dvec3 rgb = srgb_from_xyz() * xyz * double(scale_);
+  return RGB(float(rgb.x), float(rgb.y), float(rgb.z));
+}
+
 RGB Film::pixel_value(IVec2 p) const {
   const Pixel& px = pixels_[index(p)];
   if (px.weight == 0) return RGB(0.f);
+  if (px.share[0] > 0 && px.share[1] > 0 && px.share[2] > 0) return normalised_value(px);
   double k = scale_ / px.weight;
   return RGB(float((px.sum[0] + px.splat[0]) * k), float((px.sum[1] + px.splat[1]) * k),
              float((px.sum[2] + px.splat[2]) * k));
@@ -189,8 +241,12 @@ float Film::bucket_value(IVec2 p, int b) const {
   const size_t i = index(p);
   const double weight = pixels_[i].weight;
   if (weight == 0) return 0.f;
-  const double* sums = &bucket_sums_[i * 2 * size_t(buckets_.count)];
-  return float((sums[b] + sums[size_t(buckets_.count) + size_t(b)]) * (scale_ / weight));
+  const size_t n = size_t(buckets_.count);
+  const double* sums = &bucket_sums_[i * kBucketAccumulators * n];
+  // Normalised splats: the bucket's share sum, whose expectation is the sample count (film.h).
+  const double share = sums[2 * n + size_t(b)];
+  if (pixels_[i].share[1] > 0) return share > 0 ? float((sums[b] + sums[n + size_t(b)]) * (scale_ / share)) : 0.f;
+  return float((sums[b] + sums[n + size_t(b)]) * (scale_ / weight));
 }
 
 Film::Moments Film::moments(IVec2 p) const {
@@ -250,17 +306,17 @@ std::map<std::string, std::string> Film::image_metadata() const {
 
 void Film::copy_accumulators(size_t i, double* out) const {
   const Pixel& p = pixels_[i];
-  const double own[kAccumulatorsPerPixel] = {p.sum[0],   p.sum[1],   p.sum[2],   p.weight,
-                                             p.splat[0], p.splat[1], p.splat[2], p.sum_y2};
+  const double own[kAccumulatorsPerPixel] = {p.sum[0],   p.sum[1], p.sum[2],   p.weight,   p.splat[0], p.splat[1],
+                                             p.splat[2], p.sum_y2, p.share[0], p.share[1], p.share[2]};
   std::copy(own, own + kAccumulatorsPerPixel, out);
-  const size_t n = 2 * size_t(buckets_.count);
+  const size_t n = kBucketAccumulators * size_t(buckets_.count);
   std::copy(bucket_sums_.begin() + std::ptrdiff_t(i * n), bucket_sums_.begin() + std::ptrdiff_t((i + 1) * n),
             out + kAccumulatorsPerPixel);
 }
 
 void Film::set_accumulators(size_t i, const double* a) {
-  pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}, a[7]};
-  const size_t n = 2 * size_t(buckets_.count);
+  pixels_[i] = Pixel{{a[0], a[1], a[2]}, a[3], {a[4], a[5], a[6]}, a[7], {a[8], a[9], a[10]}};
+  const size_t n = kBucketAccumulators * size_t(buckets_.count);
   std::copy(a + kAccumulatorsPerPixel, a + kAccumulatorsPerPixel + n, bucket_sums_.begin() + std::ptrdiff_t(i * n));
 }
 

@@ -27,6 +27,21 @@
 // divided by the same weight: a lost camera ray (zero radiance) darkens the buckets as it
 // darkens RGB. The R, G, B channels of a spectral film are exactly those of an RGB film.
 //
+// Normalised splats: with a box filter a dispersive eye's wavelengths splat one by one into the
+// pixels where they land, so how many of a pixel's terms each wavelength gets varies from render
+// to render, and dividing by the pixel's own sample count leaves that variation in the image.
+// Each wavelength therefore also brings its share of a sample (CameraRay::share: 4 times its
+// spectral MIS weight; a lost camera ray's hero 4 and the others 0, which is the share of the one
+// technique that made it), added as XYZ by add_share; summed over every wavelength that landed
+// in the pixel its expectation is the pixel's sample count times equal_energy_xyz() (each
+// wavelength's share sums to the probability that its technique traces a ray into the pixel,
+// and the lost rays' heroes to the probability that it loses one). A pixel with share sums reads
+// (sum + splat), taken to XYZ, divided by them channel by channel, times that white, taken back
+// to linear sRGB: a ratio estimator, consistent (its bias falls as 1 / samples), in which a grey
+// region's value no longer depends on which wavelengths landed there. A spectral film's buckets
+// are divided likewise by their own share sums (each share as a bucket term, whose expectation
+// is the sample count).
+//
 // A sample's colour goes through the film's pixel sensor (render/pixel_sensor.h: a camera's
 // curves, white balance) when the scene names one, and is clamped as pbrt-v4's
 // "maxcomponentvalue" clamps it: the sensor's responses times the imaging ratio (what pbrt-v4
@@ -164,6 +179,10 @@ class Film {
   // neither senses, clamps nor keeps buckets. A wavelength with a non-finite term is counted
   // and dropped, the others kept.
   void add_wavelength_splats(const WavelengthSplat* splats, const SampledSpectrum& L, const SampledWavelengths& lambda);
+  // Adds the XYZ of a sample's wavelengths' shares (CameraRay::share, one value per wavelength,
+  // as sampled_to_xyz forms a radiance's) to `pixel`'s share sums (see the top of the file).
+  // Returns false (and counts it) when a term is not finite.
+  bool add_share(IVec2 pixel, const SampledSpectrum& share, const SampledWavelengths& lambda);
   RGB pixel_value(IVec2 pixel) const;
   // The mean spectral radiance of bucket b at `pixel` (times the film's scale); 0 before any sample.
   float bucket_value(IVec2 pixel, int b) const;
@@ -189,12 +208,15 @@ class Film {
   Moments moments(IVec2 pixel) const;
 
   // The exact accumulators, per pixel row-major over bounds(): the weighted r, g, b sums, the
-  // weight sum, the r, g, b splat sums and the sum of squared weighted luminances, then (spectral film) the weighted
-  // sum of each bucket and each bucket's splat sum: kAccumulatorsPerPixel + 2 buckets().count doubles per pixel. A
-  // checkpoint stores them, and a film restored from them continues bit for bit as if it had never stopped.
+  // weight sum, the r, g, b splat sums, the sum of squared weighted luminances and the X, Y, Z
+  // share sums, then (spectral film) the weighted sum of each bucket, each bucket's splat sum and
+  // each bucket's share sum: kAccumulatorsPerPixel + kBucketAccumulators buckets().count doubles
+  // per pixel. A checkpoint stores them, and a film restored from them continues bit for bit as
+  // if it had never stopped.
   std::vector<double> accumulators() const;
-  static constexpr size_t kAccumulatorsPerPixel = 8;
-  size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + 2 * size_t(buckets_.count); }
+  static constexpr size_t kAccumulatorsPerPixel = 11;
+  static constexpr size_t kBucketAccumulators = 3;  // a bucket's sum, splat sum and share sum
+  size_t accumulators_per_pixel() const { return kAccumulatorsPerPixel + kBucketAccumulators * size_t(buckets_.count); }
   // Throws std::invalid_argument unless `acc` holds accumulators_per_pixel() values per pixel.
   void restore(const std::vector<double>& acc, uint64_t nonfinite_samples);
   // One pixel's accumulators (index row-major over bounds()), as accumulators() lays them out:
@@ -207,9 +229,11 @@ class Film {
     double sum[3] = {0, 0, 0};
     double weight = 0;
     double splat[3] = {0, 0, 0};
-    double sum_y2 = 0;  // of (w Y)^2 over the pixel's own samples
+    double sum_y2 = 0;            // of (w Y)^2 over the pixel's own samples
+    double share[3] = {0, 0, 0};  // XYZ of the wavelengths' shares (add_share); 0: none
   };
   RGB sensor_rgb(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
+  RGB normalised_value(const Pixel& px) const;
   SampledSpectrum clamped_radiance(const SampledSpectrum& L, const SampledWavelengths& lambda) const;
   void splat_rgb(const WavelengthSplat& s, const RGB& rgb);
   bool add_spectral_sample(IVec2 pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float w);
@@ -224,7 +248,8 @@ class Film {
   FilmResponse response_;
   std::unique_ptr<GBuffer> gbuffer_;
   std::vector<Pixel> pixels_;
-  std::vector<double> bucket_sums_;  // per pixel, in pixel order: buckets_.count sums, then as many splat sums
+  std::vector<double>
+      bucket_sums_;  // per pixel, in pixel order: buckets_.count sums, as many splat sums and share sums
   std::atomic<uint64_t> nonfinite_{0};
 };
 

@@ -74,7 +74,7 @@ class SampleBatch {
         tally_(tally),
         lost_(lost),
         tile_(tile),
-        apart_(!light_splats && camera.traces_wavelengths_apart(film.filter())),
+        apart_(!light_splats && camera.traces_wavelengths_apart(film.filter(), allow_splat)),
         smooth_(allow_splat && !apart_ ? smooth_splatter(camera, film.filter()) : nullptr),
         splat_(allow_splat && !apart_ && camera.splats() && (film.filter().constant() || smooth_)),
         light_splats_(light_splats),
@@ -179,6 +179,7 @@ class SampleBatch {
       // A lost camera ray is a zero-radiance sample: the pixel averages it in (vignetting).
       ++lost_;
       film_.add_sample(pixels_[i], RGB(0.f), filter_weight);
+      if (box_splats()) add_lost_shares(i);
       return;
     }
     const SampledWavelengths& lambda = lambdas_[i];
@@ -186,6 +187,7 @@ class SampleBatch {
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
     SampledSpectrum L = trace_path(i, vs);
     if (lambda.secondary_terminated()) {
+      if (box_splats()) add_shares(i);
       film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
       return;
     }
@@ -204,7 +206,44 @@ class SampleBatch {
       std::swap(one[k], L[k]);
       film_.add_splat(pixels_[i] + cr->pixel_offset[k], one, lambda);
     }
+    if (box_splats()) add_shares(i);
     film_.add_sample(pixels_[i], L, lambda, filter_weight, vs);
+  }
+
+  // A dispersive eye's wavelengths splatted one by one (box filter), normalised by their shares.
+  bool box_splats() const { return splat_ && !smooth_; }
+  // Each wavelength's share (CameraRay::share) where it landed: the film divides by their sums
+  // (render/film.h, "Normalised splats"). At all four wavelengths, even when the path kept only
+  // the hero: the shares count the camera's techniques, not the scene's.
+  void add_shares(int i) {
+    const CameraRay& cr = *rays_[i];
+    const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[i].wavelength_u);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      SampledSpectrum share(0.f);
+      share[k] = cr.share[k];
+      film_.add_share(pixels_[i] + cr.pixel_offset[k], share, lambda);
+    }
+  }
+  // A lost camera ray's shares: each wavelength's share sums, over the samples, to the chance
+  // that its technique (the same film and pupil point with that wavelength the hero) loses the
+  // ray. Tracing each wavelength's own ray from the sample's point tells which lose it (l_k);
+  // with m of the four lost, each lost one gets 4 / m: the hero is one of the m lost ones with
+  // probability m / 4, so the expected share of wavelength k is l_k. Where the four are lost
+  // together (almost everywhere) that is a share of 1 each, so vignetting adds no colour noise.
+  void add_lost_shares(int i) {
+    bool lost[kSpectrumSamples] = {true};
+    int m = 1;
+    for (int k = 1; k < kSpectrumSamples; ++k) {
+      CameraSample alone = samples_[i];
+      alone.hero_only = true;
+      SampledWavelengths lambda =
+          SampledWavelengths::sample_visible(SampledWavelengths::rotated(alone.wavelength_u, k));
+      lost[k] = !camera_.generate_ray(alone, lambda);
+      m += lost[k];
+    }
+    SampledSpectrum share(0.f);
+    for (int k = 0; k < kSpectrumSamples; ++k) share[k] = lost[k] ? float(kSpectrumSamples) / float(m) : 0.f;
+    film_.add_share(pixels_[i], share, SampledWavelengths::sample_visible(samples_[i].wavelength_u));
   }
 
   const Integrator& integrator_;

@@ -153,7 +153,8 @@ RenderState read_render_state(const std::string& path) {
   if (r.position() + 8 != bytes.size()) r.corrupt("it has trailing bytes");
   bool sane = s.bounds.lo.x >= 0 && s.bounds.lo.y >= 0 && s.bounds.hi.x > s.bounds.lo.x &&
               s.bounds.hi.y > s.bounds.lo.y && s.tiles.matches(s.bounds) &&
-              s.accumulators.size() == s.bounds.area() * (Film::kAccumulatorsPerPixel + 2 * size_t(s.spectral_buckets));
+              s.accumulators.size() == s.bounds.area() * (Film::kAccumulatorsPerPixel +
+                                                          Film::kBucketAccumulators * size_t(s.spectral_buckets));
   if (!sane) r.corrupt("its film and tile sizes disagree");
   for (int d : s.tiles.done)
     if (d < 0 || d > s.samples_per_pixel) r.corrupt("a tile count is outside [0, samples per pixel]");

@@ -15,11 +15,12 @@
 namespace eyetrace {
 
 struct RenderState {
-  // 4: the accumulators hold 8 + 2 buckets doubles per pixel: r, g, b, weight, the three splat
-  // sums, the sum of squared luminances, the buckets, their splat sums; an adaptive render's
-  // per-pixel counts and targets follow the tile counts (version 3: no squared luminances, no
-  // adaptive renders; 2: no splat sums; 1: 4 accumulators, RGB films only).
-  static constexpr uint32_t kVersion = 4;
+  // 5: the accumulators hold 11 + 3 buckets doubles per pixel: r, g, b, weight, the three splat
+  // sums, the sum of squared luminances, the three share sums, the buckets, their splat sums and
+  // their share sums; an adaptive render's per-pixel counts and targets follow the tile counts
+  // (version 4: 8 + 2 buckets, no share sums; 3: no squared luminances, no adaptive renders; 2: no splat sums; 1: 4
+  // accumulators, RGB films only).
+  static constexpr uint32_t kVersion = 5;
   uint64_t fingerprint = 0;  // of the scene and every option that changes the image
   IVec2 resolution{0};
   PixelBounds bounds;

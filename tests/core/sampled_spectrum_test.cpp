@@ -71,6 +71,27 @@ TEST(SampledToXyz, ConvergesToTheCieIntegrals) {
   }
 }
 
+// The white that the film's normalised splats scale by: what sampled_to_xyz gives the constant
+// spectrum 1 on average (stratified over the wavelength sample, hero-only as well), and CIE
+// 1931's equal-energy white, X = Y = Z (the 5 nm table's sums agree to 1e-5, its trapezoid
+// integrals to 1.4e-4).
+TEST(EqualEnergyXyz, IsTheMeanOfSampledToXyzOfOne) {
+  const Vec3 w = equal_energy_xyz();
+  EXPECT_EQ(w.y, 1.f);
+  EXPECT_NEAR(w.x, 1.f, 2e-4f);
+  EXPECT_NEAR(w.z, 1.f, 2e-4f);
+  for (bool terminate : {false, true}) {
+    const int n = 1 << 16;
+    glm::dvec3 mean(0.0);
+    for (int k = 0; k < n; ++k) {
+      SampledWavelengths l = SampledWavelengths::sample_visible((k + 0.5f) / n);
+      if (terminate) l.terminate_secondary();
+      mean += glm::dvec3(sampled_to_xyz(SampledSpectrum(1.f), l)) / double(n);
+    }
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], w[c], 5e-5) << terminate << " " << c;
+  }
+}
+
 // A dispersive eye's splat forms one wavelength's colour at a time (Film::add_wavelength_splats):
 // wavelength_to_rgb must be sampled_to_rgb of a spectrum zero at the other wavelengths, to float
 // rounding, over the whole sampled range and beyond the CIE table (where both are 0).

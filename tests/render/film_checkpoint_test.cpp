@@ -128,7 +128,7 @@ TEST(FilmCheckpoint, SplattingEyeSplats) {
 // pixels' own sums (0-2) stay 0, and most lit pixels receive splats.
 TEST(FilmCheckpoint, SmoothSplattingEyeSplatsEverything) {
   const std::vector<double> acc = reference(kSmoothSplattingEye);
-  const size_t per_pixel = Film::kAccumulatorsPerPixel + 2 * 5;
+  const size_t per_pixel = Film::kAccumulatorsPerPixel + Film::kBucketAccumulators * 5;
   size_t splatted = 0;
   for (size_t p = 0; p < acc.size(); p += per_pixel) {
     EXPECT_EQ(acc[p], 0.0);
@@ -181,8 +181,9 @@ TEST_P(FilmCheckpointOf, StoppedBetweenPassesAndResumedThroughStateFileIsBitIden
   EXPECT_EQ(back.fingerprint, 42u);
   EXPECT_EQ(back.tiles.done, tiles.done);
   EXPECT_EQ(back.spectral_buckets, s.film->buckets().count);
-  EXPECT_EQ(back.accumulators.size(),
-            40u * 24u * (unsigned(Film::kAccumulatorsPerPixel) + 2u * unsigned(back.spectral_buckets)));
+  EXPECT_EQ(back.accumulators.size(), 40u * 24u *
+                                          (unsigned(Film::kAccumulatorsPerPixel) +
+                                           unsigned(Film::kBucketAccumulators) * unsigned(back.spectral_buckets)));
 
   RenderSetup resumed = setup_scene(GetParam());
   resumed.film->restore(back.accumulators, back.nonfinite_samples);
@@ -273,7 +274,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   st.samples_per_pixel = 4;
   st.tiles = TileProgress::start(st.bounds);
   st.spectral_buckets = 16;
-  st.accumulators.assign(20 * 20 * (Film::kAccumulatorsPerPixel + 2 * 16), 0.25);
+  st.accumulators.assign(20 * 20 * (Film::kAccumulatorsPerPixel + Film::kBucketAccumulators * 16), 0.25);
   const std::string path = ::testing::TempDir() + "film_checkpoint_spectral.state";
   write_render_state(path, st);
   RenderState back = read_render_state(path);
@@ -297,7 +298,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
   // Version 1, 2 and 3 files (before spectral films; before splat sums; before squared
   // luminances and adaptive counts) are refused by version,
   // not misread.
-  for (uint32_t old_version : {1u, 2u, 3u}) {
+  for (uint32_t old_version : {1u, 2u, 3u, 4u}) {
     write_render_state(path, st);
     std::string bytes;
     {
@@ -314,7 +315,7 @@ TEST(FilmCheckpoint, SpectralStateRoundTripsAndInconsistentOnesAreRefused) {
       ADD_FAILURE() << "a version " << old_version << " state was read";
     } catch (const SceneError& e) {
       EXPECT_NE(
-          std::string(e.what()).find(fmt::format("format version {}, this eyetrace reads version 4", old_version)),
+          std::string(e.what()).find(fmt::format("format version {}, this eyetrace reads version 5", old_version)),
           std::string::npos)
           << e.what();
     }

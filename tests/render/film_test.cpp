@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <utility>
 
 #include "core/error.h"
 
@@ -35,6 +39,49 @@ TEST(Film, WeightedMeanAndNonFiniteSamplesDiscarded) {
   EXPECT_FLOAT_EQ(v.b, 3.f);
   EXPECT_EQ(film.nonfinite_samples(), 2u);
   EXPECT_EQ(film.pixel_value(IVec2(0, 0)), RGB(0.f));
+}
+
+// Normalised splats (box filter, dispersive eye): a pixel with share sums is (sum + splat) over
+// them per XYZ channel, times equal-energy white. Where the radiance is the same at every
+// wavelength (a grey region) each wavelength's term is that radiance times its share, so the
+// pixel is exactly the radiance's colour whichever wavelengths landed, with whatever shares,
+// here or by splat; the plain mean of the same terms is not (wavelength noise).
+TEST(Film, NormalisedSplatsGiveAGreyRegionItsColourWhicheverWavelengthsLanded) {
+  Film shared(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>(), 2.f);
+  const float grey = 0.7f;
+  for (int s = 0; s < 6; ++s) {
+    const SampledWavelengths l = SampledWavelengths::sample_visible(0.61f * s - std::floor(0.61f * s) + 0.03f);
+    SampledSpectrum share;
+    for (int k = 0; k < kSpectrumSamples; ++k) share[k] = 0.2f + 0.45f * float((s + k) % 4);
+    // A sample of pixel s % 2; its wavelength 3 landed in the other pixel when s % 3 == 0.
+    const IVec2 own_pixel(s % 2, 0), other(1 - s % 2, 0);
+    SampledSpectrum own = share, moved(0.f);
+    if (s % 3 == 0) std::swap(own[3], moved[3]);
+    ASSERT_TRUE(shared.add_sample(own_pixel, own * grey, l, 1.f));
+    ASSERT_TRUE(shared.add_share(own_pixel, own, l));
+    if (s % 3 == 0) {
+      ASSERT_TRUE(shared.add_splat(other, moved * grey, l));
+      ASSERT_TRUE(shared.add_share(other, moved, l));
+    }
+  }
+  const RGB want = xyz_to_linear_srgb(equal_energy_xyz()) * (2.f * grey);  // the film's scale 2
+  for (int x = 0; x < 2; ++x) {
+    const RGB got = shared.pixel_value(IVec2(x, 0));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 2e-6f) << x << " " << c;
+  }
+  // The plain mean (no shares) of pixel 0's terms is off by the wavelengths' noise.
+  Film plain(IVec2(1, 1), PixelBounds{IVec2(0), IVec2(1)}, std::make_unique<UnitBox>(), 2.f);
+  for (int s = 0; s < 5; ++s) {
+    const SampledWavelengths l = SampledWavelengths::sample_visible(0.61f * s - std::floor(0.61f * s) + 0.03f);
+    plain.add_sample(IVec2(0, 0), SampledSpectrum(grey), l, 1.f);
+  }
+  const RGB off = plain.pixel_value(IVec2(0, 0)) - want;
+  EXPECT_GT(std::max({std::abs(off.r), std::abs(off.g), std::abs(off.b)}), 0.01f);
+  // A non-finite share is refused and counted; the pixel keeps its value.
+  EXPECT_FALSE(shared.add_share(IVec2(0, 0), SampledSpectrum(std::numeric_limits<float>::infinity()),
+                                SampledWavelengths::sample_visible(0.5f)));
+  EXPECT_EQ(shared.nonfinite_samples(), 1u);
+  EXPECT_NEAR(shared.pixel_value(IVec2(0, 0)).g, want.g, 2e-6f);
 }
 
 // A dispersive eye's sample whose radiance went into splats adds only its filter weight

@@ -132,8 +132,9 @@ TEST(SpectralFilm, SampleNotFiniteAtAnyCountingWavelengthLeavesTheFilmUntouched)
 
 TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   Film whole = spectral_film(5), first = spectral_film(5);
-  // r, g, b, weight, 3 splat sums, the squared luminances, 5 buckets, their splats
-  EXPECT_EQ(whole.accumulators_per_pixel(), 18u);
+  // r, g, b, weight, 3 splat sums, the squared luminances, 3 share sums, 5 buckets, their splats
+  // and their share sums
+  EXPECT_EQ(whole.accumulators_per_pixel(), 26u);
   auto add = [](Film& f, int k) {
     SampledWavelengths l = SampledWavelengths::sample_visible(0.137f * k - std::floor(0.137f * k));
     SampledSpectrum L(0.3f + 0.1f * k);
@@ -146,7 +147,7 @@ TEST(SpectralFilm, AccumulatorsHoldTheBucketsAndRestoreExactly) {
   resumed.restore(first.accumulators(), 3);
   for (int k = 10; k < 20; ++k) add(resumed, k);
   const std::vector<double> a = resumed.accumulators(), b = whole.accumulators();
-  ASSERT_EQ(a.size(), 2u * 18u);
+  ASSERT_EQ(a.size(), 2u * 26u);
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
   EXPECT_EQ(resumed.nonfinite_samples(), 3u);
   Film rgb(IVec2(2, 1), PixelBounds{IVec2(0), IVec2(2, 1)}, std::make_unique<UnitBox>());
@@ -345,7 +346,8 @@ Shape "disk" "float radius" 5
   };
   RenderSetup rgb = render(scene("rgb")), spectral = render(scene("spectral"));
   const std::vector<double> a = rgb.film->accumulators(), b = spectral.film->accumulators();
-  const size_t na = Film::kAccumulatorsPerPixel, nb = na + 32;  // the spectral film adds 16 buckets and their splats
+  // The spectral film adds 16 buckets, their splats and their shares.
+  const size_t na = Film::kAccumulatorsPerPixel, nb = na + Film::kBucketAccumulators * 16;
   ASSERT_EQ(b.size(), a.size() / na * nb);
   for (size_t p = 0; p < a.size() / na; ++p)
     EXPECT_EQ(std::memcmp(&a[na * p], &b[nb * p], na * sizeof(double)), 0) << "pixel " << p;

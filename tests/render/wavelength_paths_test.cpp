@@ -1,11 +1,11 @@
-// A dispersive eye's wavelengths traced apart (`"string dispersionsampling" "paths"`, the default
-// with a box filter: each wavelength's own camera ray and path) against the same wavelengths
+// A dispersive eye's wavelengths traced apart (`"string dispersionsampling" "paths"`: each
+// wavelength's own camera ray and path) against the same wavelengths
 // sharing the hero's path by spectral MIS (`"mis"`): two estimators of the same image built
 // from different techniques, so their agreement is a check of each. The images of several
 // seeds give each block of pixels a mean and a standard error; every block and channel must
 // agree within 4.5 standard errors (for 2 x 15 x 3 comparisons, a false alarm has probability
-// about 6e-4). And paths must be what "auto" picks with a box filter, and the less noisy
-// there, which is why it is picked (docs/spectral.md, "Wavelength paths").
+// about 6e-4). And "auto" must pick MIS, except paths with a box filter under adaptive sampling
+// (docs/spectral.md, "Wavelength paths").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,7 +36,8 @@ struct Counts {
   uint64_t samples = 0, camera_rays = 0;
 };
 
-std::vector<double> render_blocks(const char* sampling, const char* filter, int seed, Counts* counts = nullptr) {
+std::vector<double> render_blocks(const char* sampling, const char* filter, int seed, Counts* counts = nullptr,
+                                  const AdaptiveOptions* adaptive = nullptr) {
   const std::string scene = fmt::format(R"(LookAt 0 0 -4  0 0 0  0 1 0
 Camera "navarro" "float fov" 40 "float pupildiameter" 6 "string dispersionsampling" "{}"
 Film "rgb" "integer xresolution" {} "integer yresolution" {} "string filename" "out.exr"
@@ -50,6 +51,7 @@ Integrator "path" "integer maxdepth" 3
   RenderOptions o;
   o.threads = 2;
   o.progress = false;
+  o.adaptive = adaptive;
   RenderCounters counters;
   s.integrator->render(*s.camera, *s.sampler, *s.film, o, counters);
   if (counts) *counts = {counters.samples.load(), counters.camera_rays.load()};
@@ -101,8 +103,8 @@ double mean_variance(const Spread& s) {
 TEST(WavelengthPaths, AgreeWithSpectralMisWithABoxFilter) {
   const Spread paths = over_seeds("paths", "box"), mis = over_seeds("mis", "box");
   expect_agree(paths, mis);
-  // Paths are the less noisy with a box: the MIS splats' single wavelengths cross pixel
-  // borders one by one (measured on the figure scene: a quarter of the relMSE at equal spp).
+  // Paths are the less noisy per sample with a box (each wavelength is a stratified sample of
+  // its pixel; MIS's wavelengths cross pixel borders one by one), at about twice the cost.
   EXPECT_LT(mean_variance(paths), 0.7 * mean_variance(mis));
 }
 
@@ -110,12 +112,21 @@ TEST(WavelengthPaths, AgreeWithSpectralMisWithAGaussianFilter) {
   expect_agree(over_seeds("paths", "gaussian"), over_seeds("mis", "gaussian"));
 }
 
-// "auto" is paths with a box filter (the same image, bit for bit) and MIS with a Gaussian.
-TEST(WavelengthPaths, AutoPicksPathsForABoxAndMisOtherwise) {
-  EXPECT_EQ(render_blocks("auto", "box", 7), render_blocks("paths", "box", 7));
-  EXPECT_NE(render_blocks("auto", "box", 7), render_blocks("mis", "box", 7));
+// "auto" is MIS (the same image, bit for bit), except paths with a box filter under adaptive
+// sampling, which cannot splat.
+TEST(WavelengthPaths, AutoPicksMisExceptPathsForABoxUnderAdaptiveSampling) {
+  EXPECT_EQ(render_blocks("auto", "box", 7), render_blocks("mis", "box", 7));
+  EXPECT_NE(render_blocks("auto", "box", 7), render_blocks("paths", "box", 7));
   EXPECT_EQ(render_blocks("auto", "gaussian", 7), render_blocks("mis", "gaussian", 7));
   EXPECT_NE(render_blocks("auto", "gaussian", 7), render_blocks("paths", "gaussian", 7));
+  AdaptiveOptions adaptive;
+  adaptive.target_error = 0.05;
+  adaptive.min_spp = 8;
+  adaptive.max_spp = kSpp;
+  EXPECT_EQ(render_blocks("auto", "box", 7, nullptr, &adaptive), render_blocks("paths", "box", 7, nullptr, &adaptive));
+  EXPECT_NE(render_blocks("auto", "box", 7, nullptr, &adaptive), render_blocks("mis", "box", 7, nullptr, &adaptive));
+  EXPECT_EQ(render_blocks("auto", "gaussian", 7, nullptr, &adaptive),
+            render_blocks("mis", "gaussian", 7, nullptr, &adaptive));
 }
 
 // --stats counts every camera ray: four a sample with paths, one with MIS.
