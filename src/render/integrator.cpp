@@ -217,12 +217,17 @@ class SampleBatch {
   // the hero: the shares count the camera's techniques, not the scene's.
   void add_shares(int i) {
     const CameraRay& cr = *rays_[i];
-    const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[i].wavelength_u);
-    for (int k = 0; k < kSpectrumSamples; ++k) {
+    const SampledWavelengths lambda = lambdas_[i].secondary_terminated()
+                                          ? SampledWavelengths::sample_visible(samples_[i].wavelength_u)
+                                          : lambdas_[i];
+    SampledSpectrum own = cr.share;  // the wavelengths that landed in the sample's pixel, at once
+    for (int k = 1; k < kSpectrumSamples; ++k) {
+      if (cr.pixel_offset[k] == IVec2(0)) continue;
       SampledSpectrum share(0.f);
-      share[k] = cr.share[k];
+      std::swap(share[k], own[k]);
       film_.add_share(pixels_[i] + cr.pixel_offset[k], share, lambda);
     }
+    film_.add_share(pixels_[i], own, lambda);
   }
   // A lost camera ray's shares: each wavelength's share sums, over the samples, to the chance
   // that its technique (the same film and pupil point with that wavelength the hero) loses the
