@@ -217,9 +217,8 @@ class SampleBatch {
   // the hero: the shares count the camera's techniques, not the scene's.
   void add_shares(int i) {
     const CameraRay& cr = *rays_[i];
-    const SampledWavelengths lambda = lambdas_[i].secondary_terminated()
-                                          ? SampledWavelengths::sample_visible(samples_[i].wavelength_u)
-                                          : lambdas_[i];
+    const SampledWavelengths lambda =
+        lambdas_[i].secondary_terminated() ? SampledWavelengths::sample_visible(samples_[i].wavelength_u) : lambdas_[i];
     SampledSpectrum own = cr.share;  // the wavelengths that landed in the sample's pixel, at once
     for (int k = 1; k < kSpectrumSamples; ++k) {
       if (cr.pixel_offset[k] == IVec2(0)) continue;
