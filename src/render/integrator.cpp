@@ -115,9 +115,7 @@ class SampleBatch {
     for (int k = 0; k < kSpectrumSamples; ++k, ++count_) {
       pixels_[count_] = pixel;
       indices_[count_] = index;
-      samples_[count_] = cs;
-      samples_[count_].hero_only = true;
-      lambdas_[count_] = SampledWavelengths::sample_visible(SampledWavelengths::rotated(cs.wavelength_u, k));
+      samples_[count_] = hero_alone(cs, k, &lambdas_[count_]);
     }
     if (count_ == kCameraBatch) flush();
   }
@@ -147,8 +145,7 @@ class SampleBatch {
       }
       L[k] = follow_path(i, k == 0 ? vs : nullptr, replay_)[0] * cr->hero_weight;
     }
-    const SampledWavelengths lambda = SampledWavelengths::sample_visible(samples_[first].wavelength_u);
-    film_.add_sample(pixels_[first], L, lambda, samples_[first].filter_weight, vs);
+    film_.add_sample(pixels_[first], L, sample_wavelengths(first), samples_[first].filter_weight, vs);
   }
 
   // Camera ray i's scene path from the sample's own sampler dimensions: its radiance (and, with
@@ -200,14 +197,35 @@ class SampleBatch {
       return;
     }
     // Wavelengths a splatting camera sent to other pixels of the tile go there.
-    for (int k = 1; k < kSpectrumSamples; ++k) {
-      if (cr->pixel_offset[k] == IVec2(0)) continue;
-      SampledSpectrum one(0.f);
-      std::swap(one[k], L[k]);
-      film_.add_splat(pixels_[i] + cr->pixel_offset[k], one, lambda);
-    }
+    move_landed(*cr, L,
+                [&](IVec2 offset, const SampledSpectrum& one) { film_.add_splat(pixels_[i] + offset, one, lambda); });
     if (box_splats()) add_shares(i);
     film_.add_sample(pixels_[i], L, lambda, filter_weight, vs);
+  }
+
+  // Sample cs with its wavelengths rotated so that wavelength k is the hero, which goes alone
+  // (the technique of wavelength k); lambda receives the rotated wavelengths.
+  static CameraSample hero_alone(const CameraSample& cs, int k, SampledWavelengths* lambda) {
+    CameraSample alone = cs;
+    alone.hero_only = true;
+    *lambda = SampledWavelengths::sample_visible(SampledWavelengths::rotated(cs.wavelength_u, k));
+    return alone;
+  }
+  // Sample i's four wavelengths as drawn (before the camera or the path terminated any).
+  SampledWavelengths sample_wavelengths(int i) const {
+    return SampledWavelengths::sample_visible(samples_[i].wavelength_u);
+  }
+  // Calls add(offset, one) for every secondary wavelength k the camera sent to another pixel
+  // (CameraRay::pixel_offset), `one` holding v[k] alone, which is moved out of v: v keeps what
+  // stays in the sample's own pixel.
+  template <typename Add>
+  static void move_landed(const CameraRay& cr, SampledSpectrum& v, Add add) {
+    for (int k = 1; k < kSpectrumSamples; ++k) {
+      if (cr.pixel_offset[k] == IVec2(0)) continue;
+      SampledSpectrum one(0.f);
+      std::swap(one[k], v[k]);
+      add(cr.pixel_offset[k], one);
+    }
   }
 
   // A dispersive eye's wavelengths splatted one by one (box filter), normalised by their shares.
@@ -217,15 +235,10 @@ class SampleBatch {
   // the hero: the shares count the camera's techniques, not the scene's.
   void add_shares(int i) {
     const CameraRay& cr = *rays_[i];
-    const SampledWavelengths lambda =
-        lambdas_[i].secondary_terminated() ? SampledWavelengths::sample_visible(samples_[i].wavelength_u) : lambdas_[i];
+    const SampledWavelengths lambda = lambdas_[i].secondary_terminated() ? sample_wavelengths(i) : lambdas_[i];
     SampledSpectrum own = cr.share;  // the wavelengths that landed in the sample's pixel, at once
-    for (int k = 1; k < kSpectrumSamples; ++k) {
-      if (cr.pixel_offset[k] == IVec2(0)) continue;
-      SampledSpectrum share(0.f);
-      std::swap(share[k], own[k]);
-      film_.add_share(pixels_[i] + cr.pixel_offset[k], share, lambda);
-    }
+    move_landed(cr, own,
+                [&](IVec2 offset, const SampledSpectrum& one) { film_.add_share(pixels_[i] + offset, one, lambda); });
     film_.add_share(pixels_[i], own, lambda);
   }
   // A lost camera ray's shares: each wavelength's share sums, over the samples, to the chance
@@ -238,16 +251,13 @@ class SampleBatch {
     bool lost[kSpectrumSamples] = {true};
     int m = 1;
     for (int k = 1; k < kSpectrumSamples; ++k) {
-      CameraSample alone = samples_[i];
-      alone.hero_only = true;
-      SampledWavelengths lambda =
-          SampledWavelengths::sample_visible(SampledWavelengths::rotated(alone.wavelength_u, k));
-      lost[k] = !camera_.generate_ray(alone, lambda);
+      SampledWavelengths lambda;
+      lost[k] = !camera_.generate_ray(hero_alone(samples_[i], k, &lambda), lambda);
       m += lost[k];
     }
     SampledSpectrum share(0.f);
     for (int k = 0; k < kSpectrumSamples; ++k) share[k] = lost[k] ? float(kSpectrumSamples) / float(m) : 0.f;
-    film_.add_share(pixels_[i], share, SampledWavelengths::sample_visible(samples_[i].wavelength_u));
+    film_.add_share(pixels_[i], share, sample_wavelengths(i));
   }
 
   const Integrator& integrator_;
