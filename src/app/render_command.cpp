@@ -342,7 +342,7 @@ std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group)
 
 // The job's counters, summed over ranks, and each rank's times (rank 0 gets them; collective).
 struct Totals {
-  uint64_t samples, camera_rays, lost, rays, shadow_rays, shadow_rays_skipped, nonfinite;
+  uint64_t samples, camera_rays, lost, rays, shadow_rays, shadow_rays_skipped, nonfinite, share_rays;
   std::vector<double> busy_seconds, render_seconds, cpu_seconds;
 
   nlohmann::json ranks_json() const {
@@ -367,9 +367,12 @@ double process_cpu_seconds() {
 }
 
 Totals totals(RenderGroup& g, const RenderCounters& c, double render_seconds, double cpu_seconds) {
-  return {g.sum(c.samples),         g.sum(c.camera_rays),         g.sum(c.camera_rays_lost),  g.sum(c.rays_traced),
-          g.sum(c.shadow_rays),     g.sum(c.shadow_rays_skipped), g.sum(c.nonfinite_samples), g.gather(c.busy_seconds),
-          g.gather(render_seconds), g.gather(cpu_seconds)};
+  return {g.sum(c.samples),           g.sum(c.camera_rays),
+          g.sum(c.camera_rays_lost),  g.sum(c.rays_traced),
+          g.sum(c.shadow_rays),       g.sum(c.shadow_rays_skipped),
+          g.sum(c.nonfinite_samples), g.sum(c.camera_rays_for_shares),
+          g.gather(c.busy_seconds),   g.gather(render_seconds),
+          g.gather(cpu_seconds)};
 }
 
 // The image and state of a finished or interrupted render (rank 0).
@@ -454,6 +457,7 @@ void write_render_stats(const RenderArgs& a, const Job& job, const Totals& t, co
           {"camera_rays", t.camera_rays},
           {"camera_rays_lost", t.lost},
           {"useful_camera_ray_fraction", t.camera_rays ? double(t.camera_rays - t.lost) / t.camera_rays : 0.0},
+          {"camera_rays_for_shares", t.share_rays},
           {"rays_traced", t.rays},
           {"shadow_rays", t.shadow_rays},
           {"shadow_rays_skipped", t.shadow_rays_skipped},

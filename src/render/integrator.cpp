@@ -254,6 +254,7 @@ class SampleBatch {
       SampledWavelengths lambda;
       lost[k] = !camera_.generate_ray(hero_alone(samples_[i], k, &lambda), lambda);
       m += lost[k];
+      ++tally_.camera_rays_for_shares;
     }
     SampledSpectrum share(0.f);
     for (int k = 0; k < kSpectrumSamples; ++k) share[k] = lost[k] ? float(kSpectrumSamples) / float(m) : 0.f;
@@ -478,6 +479,7 @@ class RenderLoop {
     counters_.rays_traced += tally.rays;
     counters_.shadow_rays += tally.shadow_rays;
     counters_.shadow_rays_skipped += tally.shadow_rays_skipped;
+    counters_.camera_rays_for_shares += tally.camera_rays_for_shares;
     samples_done_ += n;
     report(false);
   }

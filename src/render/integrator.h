@@ -32,7 +32,10 @@ struct RenderCounters {
   std::atomic<uint64_t> nonfinite_samples{0};
   std::atomic<uint64_t> shadow_rays{0};          // of rays_traced: occlusion tests for light samples
   std::atomic<uint64_t> shadow_rays_skipped{0};  // scattering points that needed no occlusion test
-  double busy_seconds = 0;                       // time in passes, without waiting for other ranks (render thread only)
+  // Not in camera_rays: the rays a lost sample traces for its wavelengths' shares (box splats of
+  // a dispersive eye, render/film.h "Normalised splats"); camera traces only, no scene path.
+  std::atomic<uint64_t> camera_rays_for_shares{0};
+  double busy_seconds = 0;  // time in passes, without waiting for other ranks (render thread only)
 };
 
 // Per-thread tally, flushed to RenderCounters once per tile to keep atomics off the hot path.
@@ -42,6 +45,7 @@ struct RayTally {
   // Scattering points where light sampling traced no shadow ray because it could not
   // contribute (no lights, a specular BSDF, a zero light sample or a zero f cos term).
   uint64_t shadow_rays_skipped = 0;
+  uint64_t camera_rays_for_shares = 0;  // RenderCounters::camera_rays_for_shares
 };
 
 struct RenderOptions {

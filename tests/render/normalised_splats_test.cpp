@@ -25,7 +25,7 @@ namespace EYETRACE_UNITY_ID {
 constexpr int kW = 48, kH = 32;
 const int kSpp = std::max(16, test::sample_count(256));
 
-std::vector<double> render_sky(const char* sampling, int seed) {
+std::vector<double> render_sky(const char* sampling, int seed, RenderCounters* counted = nullptr) {
   const std::string scene = fmt::format(R"(LookAt 0 0 0  0 0 1  0 1 0
 Camera "navarro" "float fov" 70 "float pupildiameter" 6 "string dispersionsampling" "{}"
 Film "rgb" "integer xresolution" {} "integer yresolution" {} "string filename" "sky.exr"
@@ -42,7 +42,7 @@ LightSource "infinite" "rgb L" [1 1 1]
   o.threads = 2;
   o.progress = false;
   RenderCounters counters;
-  s.integrator->render(*s.camera, *s.sampler, *s.film, o, counters);
+  s.integrator->render(*s.camera, *s.sampler, *s.film, o, counted ? *counted : counters);
   std::vector<double> rgb;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
@@ -81,6 +81,19 @@ TEST(NormalisedSplats, AgreeWithWavelengthPathsOnAVignettedSkyAndAreAsQuiet) {
   }
   // Measured: 1.0 to 1.3 times the paths' noise per channel (the plain mean: 3.7 to 4.5 times).
   EXPECT_LT(noise(mis1, mis2), 1.6 * noise(paths1, paths2));
+}
+
+// render --stats reports the camera rays a lost sample traces for its shares apart from the
+// camera rays (they start no scene path): three per lost sample, the other wavelengths' own.
+TEST(NormalisedSplats, StatsCountTheLostSamplesRaysForShares) {
+  RenderCounters mis, paths;
+  render_sky("mis", 1, &mis);
+  render_sky("paths", 1, &paths);
+  EXPECT_GT(mis.camera_rays_lost.load(), 0u);  // the periphery is vignetted
+  EXPECT_EQ(mis.camera_rays_for_shares.load(), 3 * mis.camera_rays_lost.load());
+  EXPECT_EQ(mis.camera_rays.load(), mis.samples.load());
+  EXPECT_GT(paths.camera_rays_lost.load(), 0u);
+  EXPECT_EQ(paths.camera_rays_for_shares.load(), 0u);  // each wavelength traced its own ray already
 }
 
 }  // namespace EYETRACE_UNITY_ID
