@@ -6,16 +6,19 @@
 # Usage: bench/dispersive_equal_error.py [box|gaussian]  (the figure scene's pixel filter is a
 # box; "gaussian" renders it with pbrt-v4's default filter instead). Run from anywhere after
 # building build/bin/eyetrace (or with EYETRACE=path/to/eyetrace); writes its renders into the current directory.
-# The cameras take turns at every rung, REPEATS=3 times (environment), median CPU per rung: about 12 minutes.
+# The cameras take turns at every rung, REPEATS=3 times (environment; seeds 1..REPEATS), median CPU and
+# mean relMSE per rung: about 12 minutes.
 import json, math, os, resource, subprocess, sys
 import numpy as np, OpenImageIO as oiio
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 B = os.environ.get("EYETRACE", os.path.join(ROOT, "build/bin/eyetrace"))  # another build: EYETRACE=path
 FILTER = sys.argv[1] if len(sys.argv) > 1 else "box"
-REPEATS = int(os.environ.get("REPEATS", "3"))  # renders per camera and rung; the median CPU counts
-# "disp" is the eye's default (dispersionsampling "auto": paths with a box filter, MIS with a
-# smooth one); "mis" and "paths" force each strategy, so one run compares all three.
+REPEATS = int(os.environ.get("REPEATS", "3"))  # renders (seeds) per camera and rung
+# "disp" is the eye's default (dispersionsampling "auto": spectral MIS in a uniform render, with
+# normalised splats for a box filter; paths only for a box under adaptive sampling, which this
+# is not, so "disp" renders the images "mis" does and their times differ by the machine's noise);
+# "mis" and "paths" force each strategy.
 CAMS = {"mono": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "float wavelength" 555',
         "disp": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3',
         "mis": 'Camera "navarro" "float fov" 60 "float pupildiameter" 3 "string dispersionsampling" "mis"',
@@ -58,16 +61,19 @@ def main():
         refs[cam] = read(f"{cam}_{FILTER}_ref.exr")
     # The machine's speed drifts by tens of per cent within minutes (shared hosts): the two
     # cameras take turns at every rung, REPEATS times, and each rung keeps its median CPU time.
+    # Each turn renders another seed and the rung's relMSE is their mean: one render's relMSE
+    # varies by seed enough to move the fitted spp by 20 % (docs/performance.md, ZSobol).
     for spp in [16, 32, 64, 128]:
         secs = {cam: [] for cam in CAMS}
-        for _ in range(REPEATS):
+        for seed in range(1, REPEATS + 1):
             for cam in CAMS:
-                secs[cam].append(render(path, cam, spp, f"{cam}_{FILTER}_{spp}.exr"))
+                secs[cam].append(render(path, cam, spp, f"{cam}_{FILTER}_{spp}_{seed}.exr", seed))
         for cam in CAMS:
             ref = refs[cam]
             m = ref.mean()
             sec = float(np.median(secs[cam]))
-            rel = float(((read(f"{cam}_{FILTER}_{spp}.exr") - ref) ** 2).mean() / (m * m))
+            rel = float(np.mean([((read(f"{cam}_{FILTER}_{spp}_{seed}.exr") - ref) ** 2).mean() / (m * m)
+                                 for seed in range(1, REPEATS + 1)]))
             res.setdefault(cam, []).append((spp, sec, rel))
             print(cam, spp, f"{sec:.2f} s", f"relMSE {rel:.3e}", flush=True)
     out, fitted = {}, {}
