@@ -72,14 +72,22 @@ def main():
             ref = refs[cam]
             m = ref.mean()
             sec = float(np.median(secs[cam]))
-            rel = float(np.mean([((read(f"{cam}_{FILTER}_{spp}_{seed}.exr") - ref) ** 2).mean() / (m * m)
-                                 for seed in range(1, REPEATS + 1)]))
-            res.setdefault(cam, []).append((spp, sec, rel))
+            rels = [float(((read(f"{cam}_{FILTER}_{spp}_{seed}.exr") - ref) ** 2).mean() / (m * m))
+                    for seed in range(1, REPEATS + 1)]
+            rel = float(np.mean(rels))
+            res.setdefault(cam, []).append((spp, sec, rel, rels))
             print(cam, spp, f"{sec:.2f} s", f"relMSE {rel:.3e}", flush=True)
+    def spp_at_target(spps, rels):
+        k, c = np.polyfit(np.log(spps), np.log(rels), 1)
+        return k, math.exp((math.log(1e-3) - c) / k)
+
     out, fitted = {}, {}
     for cam, v in res.items():
-        k, c = np.polyfit(np.log([x[0] for x in v]), np.log([x[2] for x in v]), 1)
-        spp_t = math.exp((math.log(1e-3) - c) / k)
+        k, spp_t = spp_at_target([x[0] for x in v], [x[2] for x in v])
+        # Each seed's ladder fitted alone: how far one seed's answer strays (the spread of the
+        # mean's is about this over sqrt(REPEATS)).
+        per_seed = [spp_at_target([x[0] for x in v], [x[3][i] for x in v])[1] for i in range(REPEATS)]
+        print(f"{cam}: spp at 1e-3 by seed alone: " + ", ".join(f"{n:.0f}" for n in per_seed))
         sec_per_spp = sum(x[1] for x in v) / sum(x[0] for x in v)
         out[cam] = spp_t * sec_per_spp
         # Also one render of spp_t samples: CPU = fixed + spp * marginal, fitted over the ladder
