@@ -20,6 +20,7 @@
 #include "scene/scene_builder.h"
 
 #include "../support/lit_sphere_world.h"
+#include "../support/sample_count.h"
 #include "../support/unit_box_filter.h"
 
 namespace eyetrace {
@@ -137,9 +138,12 @@ TEST(FilmCheckpoint, SmoothSplattingEyeSplatsEverything) {
   EXPECT_GT(splatted, acc.size() / per_pixel / 4);  // half the view is black sky
 }
 
+// Pass sizes 1 and 5 only in the optimised build (the sanitizer pass looks for memory errors,
+// which 0 and 3 already take through both pass paths and both thread counts).
 TEST_P(FilmCheckpointOf, ImageDoesNotDependOnPassSizesOrThreads) {
   std::vector<double> ref = reference(GetParam());
-  for (int pass : {0, 1, 3, 5}) {
+  const std::vector<int> passes = test::kSampleDivisor == 1 ? std::vector<int>{0, 1, 3, 5} : std::vector<int>{0, 3};
+  for (int pass : passes) {
     for (int threads : {1, 2}) {
       RenderSetup s = setup_scene(GetParam());
       RenderOptions o;
