@@ -67,7 +67,7 @@ TEST(PupilSampler, UsefulRayFractionAtLeast95Percent) {
 // Dense search: at many retina positions (interval ends and middles, where the polygon is
 // furthest from a traced position, and random ones) no ray through a point of the plane
 // outside the sampled polygon reaches the scene. The grid covers the passing region's box
-// grown by 30% in each direction, at a spacing of 1/300 of it.
+// grown by 30% in each direction, at a spacing of 1/kFineGrid of it.
 // Returns the fraction of passing grid rays found outside (0 is required where the passing
 // region is convex, see below). Under the sanitizers the fine grid is 100 x 100 (a ninth of the
 // traces: that pass looks for memory errors on these paths, the optimised build for the rays).
@@ -113,7 +113,7 @@ double passing_outside_fraction(const LensSystemCamera& cam, const std::string& 
 // Dense search: at many retina positions (interval ends, where the polygon is furthest from a
 // traced middle, and random ones) no ray through a point of the plane outside the sampled
 // polygon reaches the scene. The grid covers the passing region's box grown by 30% on each
-// side at 1/300 of its width. Cases: the paper's pupil; a wide pupil and field where the lens
+// side at 1/kFineGrid of its width. Cases: the paper's pupil; a wide pupil and field where the lens
 // rims and the cornea cut the pupil into a cat's eye with sharp corners; a tiny pupil where
 // the region is a fraction of a millimetre.
 TEST(PupilSampler, NoPassingRayOutsideTheSampledRegion) {
