@@ -35,10 +35,14 @@
 // of the sample's tile T whose filter reaches its landing point s_k, with the filter's value
 // f_P'(s_k), as pbrt-v3 splatted whole samples. The techniques are then "a sample of any pixel
 // P of T, hero wavelength j", and the balance heuristic over all of them uses
-// u_j = D(s_j) / (area n^2 G J)_j with D(s) = sum over P in T of |f_P(s)| (the filter's
-// density, up to its normalisation, summed over the pixels whose samples could have put their
-// hero at s). The sample that was drawn, from pixel P with density pdf_P(s_0) = |f_P(s_0)| /
-// (|filter_weight| integral f), then gives pixel P' at wavelength k
+// u_j = D(s_j) / (area n^2 G J)_j with D(s) = sum over P in T of |filter_weight_P| pdf_P(s)
+// integral f (the density, in the filter's units, with which the tile's samples put their hero
+// at s). A pixel whose filter stays in the tile draws its film point uniformly in its square
+// with filter weight 1 (its term: integral f over the square); a pixel on the tile's rim draws
+// through the filter, pdf_P(s_0) = |f_P(s_0)| / (|filter_weight| integral f) (its term:
+// |f_P(s)|), so that the tile's samples reach the points outside it that the rim's filters see
+// (SplattingCamera::uniform_in_pixel, docs/spectral.md). The sample that was drawn, from pixel
+// P, then gives pixel P' at wavelength k
 //     |filter_weight| 4 C f_P'(s_k) L_k / (n_k^2 J(s_k) sum_j u_j):
 // the weights of every ray sum to 1 over all (P, j) for every target pixel, and the sampler's
 // own filter weight carries the difference between its tabulated density and |f| / integral f,
@@ -48,6 +52,7 @@
 #include <cmath>
 
 #include "cameras/lens_system_camera.h"
+#include "core/splatting_camera.h"
 
 namespace eyetrace {
 
@@ -90,7 +95,10 @@ double LensSystemCamera::filter_at(const CameraSample& cs, glm::dvec2 centre, do
 
 // A smooth filter's splat of a wavelength landing at raster point s: the pixels of the tile whose
 // filter reaches s, the filter's one-dimensional factors there (Filter::evaluate_axis_row), and
-// D(s), the sum of |f| over those pixels; 0 when no pixel of the tile is reached.
+// D(s), the density with which the tile's samples put a hero at s, in the filter's units: |f_P(s)|
+// for each of those pixels P that draws through the filter, plus the filter's integral when the
+// pixel whose square holds s draws uniformly (SplattingCamera::uniform_in_pixel); 0 when no
+// pixel of the tile is reached.
 double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, WavelengthSplat* spread) {
   const Filter& f = *cs.filter;
   const Vec2 r = f.radius();
@@ -108,11 +116,24 @@ double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, Wavelen
   spread->ny = std::min(y1 - y0 + 1, WavelengthSplat::kMaxSpan);
   f.evaluate_axis_row(s.x - (x0 + 0.5), spread->nx, 0, spread->wx);
   f.evaluate_axis_row(s.y - (y0 + 0.5), spread->ny, 1, spread->wy);
-  double sx = 0.0, sy = 0.0;
-  for (int i = 0; i < spread->nx; ++i) sx += std::abs(spread->wx[i]);
-  for (int i = 0; i < spread->ny; ++i) sy += std::abs(spread->wy[i]);
-  if (!(sx * sy > 0.0)) spread->nx = spread->ny = 0;
-  return sx * sy;
+  // A pixel draws uniformly when its filter stays in the tile along both axes, so the sum of |f|
+  // over the pixels that draw through the filter is separable: all of them minus those inside.
+  double sx = 0.0, sy = 0.0, sx_in = 0.0, sy_in = 0.0;
+  for (int i = 0; i < spread->nx; ++i) {
+    sx += std::abs(spread->wx[i]);
+    if (SplattingCamera::centre_inside(x0 + i, cs.splat_lo.x, cs.splat_hi.x, r.x)) sx_in += std::abs(spread->wx[i]);
+  }
+  for (int i = 0; i < spread->ny; ++i) {
+    sy += std::abs(spread->wy[i]);
+    if (SplattingCamera::centre_inside(y0 + i, cs.splat_lo.y, cs.splat_hi.y, r.y)) sy_in += std::abs(spread->wy[i]);
+  }
+  const IVec2 square(floor_to_int(s.x), floor_to_int(s.y));
+  const bool uniform = square.x >= cs.splat_lo.x && square.y >= cs.splat_lo.y && square.x < cs.splat_hi.x &&
+                       square.y < cs.splat_hi.y &&
+                       SplattingCamera::uniform_in_pixel(square, cs.splat_lo, cs.splat_hi, r);
+  const double d = (sx * sy - sx_in * sy_in) + (uniform ? double(f.integral()) : 0.0);
+  if (!(d > 0.0)) spread->nx = spread->ny = 0;
+  return d;
 }
 
 // 1 / (n^2 J), J the retina area per screen area at screen radius rho (arc a at height h,

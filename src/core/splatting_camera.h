@@ -29,6 +29,20 @@ class SplattingCamera {
   // Largest filter radius (pixels, per axis) the splats serve; wider filters keep spectral MIS
   // within the pixel.
   static constexpr float kMaxFilterRadius = 0.5f * (WavelengthSplat::kMaxSpan - 1);
+  // How a splatting sample of `pixel` in the tile [lo, hi) draws its film point: uniformly in the
+  // pixel's square (filter weight 1) where the pixel's filter stays inside
+  // the tile, else through the filter (Filter::sample). Uniform points keep the sampler's
+  // stratification across the whole tile; the pixels on its rim draw through the filter so that
+  // the tile's samples also reach the points just outside it, which the rim's filters see
+  // (docs/spectral.md, "Splats with a smooth filter").
+  static bool uniform_in_pixel(IVec2 pixel, IVec2 lo, IVec2 hi, Vec2 radius) {
+    return centre_inside(pixel.x, lo.x, hi.x, radius.x) && centre_inside(pixel.y, lo.y, hi.y, radius.y);
+  }
+  // Pixel x of [lo, hi) along one axis: its filter (centre x + 0.5, radius r) stays in the range.
+  static bool centre_inside(int x, int lo, int hi, float r) {
+    const double c = double(x) + 0.5;
+    return c - double(lo) >= double(r) && double(hi) - c >= double(r);
+  }
 };
 
 }  // namespace eyetrace

@@ -19,9 +19,10 @@
 namespace eyetrace {
 
 // The film position is drawn first so that samplers can stratify it.
-CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index) {
+CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index, bool uniform) {
   sampler.start_pixel_sample(pixel, index);
-  FilterSample fs = film.filter().sample(sampler.get_pixel_2d());
+  const Vec2 u = sampler.get_pixel_2d();
+  const FilterSample fs = uniform ? FilterSample{u - Vec2(0.5f), 1.f} : film.filter().sample(u);
   CameraSample cs;
   cs.p_film = Vec2(pixel) + Vec2(0.5f) + fs.offset;
   cs.p_lens = sampler.get_2d();
@@ -88,7 +89,9 @@ class SampleBatch {
     if (apart_) return add_apart(pixel, index);
     pixels_[count_] = pixel;
     indices_[count_] = index;
-    samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index);
+    const bool uniform =
+        smooth_ && SplattingCamera::uniform_in_pixel(pixel, tile_.lo, tile_.hi, film_.filter().radius());
+    samples_[count_] = draw_camera_sample(film_, *ts_.sampler, pixel, index, uniform);
     samples_[count_].splat = splat_;
     samples_[count_].splat_lo = tile_.lo;
     samples_[count_].splat_hi = tile_.hi;
