@@ -116,21 +116,24 @@ double LensSystemCamera::spread_at(const CameraSample& cs, glm::dvec2 s, Wavelen
   spread->ny = std::min(y1 - y0 + 1, WavelengthSplat::kMaxSpan);
   f.evaluate_axis_row(s.x - (x0 + 0.5), spread->nx, 0, spread->wx);
   f.evaluate_axis_row(s.y - (y0 + 0.5), spread->ny, 1, spread->wy);
-  // A pixel draws uniformly when its filter stays in the tile along both axes, so the sum of |f|
-  // over the pixels that draw through the filter is separable: all of them minus those inside.
+  // A pixel draws uniformly when its filter stays in the tile along both axes (the inner
+  // rectangle [in_lo, in_hi) of SplattingCamera::uniform_in_pixel), so the sum of |f| over the
+  // pixels that draw through the filter is separable: all of them minus those inside.
+  const IVec2 rim(SplattingCamera::rim(r.x), SplattingCamera::rim(r.y));
+  const IVec2 in_lo = cs.splat_lo + rim, in_hi = cs.splat_hi - rim;
   double sx = 0.0, sy = 0.0, sx_in = 0.0, sy_in = 0.0;
   for (int i = 0; i < spread->nx; ++i) {
-    sx += std::abs(spread->wx[i]);
-    if (SplattingCamera::centre_inside(x0 + i, cs.splat_lo.x, cs.splat_hi.x, r.x)) sx_in += std::abs(spread->wx[i]);
+    const double a = std::abs(spread->wx[i]);
+    sx += a;
+    sx_in += x0 + i >= in_lo.x && x0 + i < in_hi.x ? a : 0.0;
   }
   for (int i = 0; i < spread->ny; ++i) {
-    sy += std::abs(spread->wy[i]);
-    if (SplattingCamera::centre_inside(y0 + i, cs.splat_lo.y, cs.splat_hi.y, r.y)) sy_in += std::abs(spread->wy[i]);
+    const double a = std::abs(spread->wy[i]);
+    sy += a;
+    sy_in += y0 + i >= in_lo.y && y0 + i < in_hi.y ? a : 0.0;
   }
   const IVec2 square(floor_to_int(s.x), floor_to_int(s.y));
-  const bool uniform = square.x >= cs.splat_lo.x && square.y >= cs.splat_lo.y && square.x < cs.splat_hi.x &&
-                       square.y < cs.splat_hi.y &&
-                       SplattingCamera::uniform_in_pixel(square, cs.splat_lo, cs.splat_hi, r);
+  const bool uniform = square.x >= in_lo.x && square.x < in_hi.x && square.y >= in_lo.y && square.y < in_hi.y;
   const double d = (sx * sy - sx_in * sy_in) + (uniform ? double(f.integral()) : 0.0);
   if (!(d > 0.0)) spread->nx = spread->ny = 0;
   return d;

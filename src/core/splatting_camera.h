@@ -4,6 +4,7 @@
 // smooth filter"). An addition beside core/camera.h that only the integrator's splatting path
 // uses: cameras that implement it are found by dynamic_cast.
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -36,13 +37,13 @@ class SplattingCamera {
   // the tile's samples also reach the points just outside it, which the rim's filters see
   // (docs/spectral.md, "Splats with a smooth filter").
   static bool uniform_in_pixel(IVec2 pixel, IVec2 lo, IVec2 hi, Vec2 radius) {
-    return centre_inside(pixel.x, lo.x, hi.x, radius.x) && centre_inside(pixel.y, lo.y, hi.y, radius.y);
+    const IVec2 m(rim(radius.x), rim(radius.y));
+    return pixel.x >= lo.x + m.x && pixel.x < hi.x - m.x && pixel.y >= lo.y + m.y && pixel.y < hi.y - m.y;
   }
-  // Pixel x of [lo, hi) along one axis: its filter (centre x + 0.5, radius r) stays in the range.
-  static bool centre_inside(int x, int lo, int hi, float r) {
-    const double c = double(x) + 0.5;
-    return c - double(lo) >= double(r) && double(hi) - c >= double(r);
-  }
+  // Along one axis the pixels m = ceil(r - 0.5) from either end of the tile draw through the
+  // filter: pixel x's filter (centre x + 0.5, radius r) stays in [lo, hi) when x >= lo + m and
+  // x < hi - m.
+  static int rim(float r) { return static_cast<int>(std::ceil(double(r) - 0.5)); }
 };
 
 }  // namespace eyetrace
