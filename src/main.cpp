@@ -1,9 +1,7 @@
 // eyetrace: render pbrt-v4 scenes through pinhole, thin-lens and schematic-eye cameras.
-#include <cstdio>
 #include <exception>
 
 #include "app/commands.h"
-#include "core/error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -28,17 +26,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("plugins")) return plugins();
     if (app.got_subcommand("sweep")) return sweep();
     if (app.got_subcommand("check")) return check();
-  } catch (const eyetrace::SceneError& e) {
-    // One line per diagnostic, compiler style, then how many when there are several.
-    for (const eyetrace::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-    if (e.diagnostics().size() > 1) std::fprintf(stderr, "%zu errors\n", e.diagnostics().size());
-    return 1;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "error: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+  } catch (const std::exception&) {
+    return eyetrace::report_error(std::current_exception());
   }
   return 0;
 }

@@ -307,9 +307,20 @@ std::unique_ptr<Job> prepare(const RenderArgs& a, const RenderGroup& group) {
   return job;
 }
 
-// Prepares on every rank; when any fails, the first rank that failed reports its error (an
-// exception) and the others return null, so that a scene error is printed once, and no rank
-// goes on to wait for the others in a collective.
+// When rank `reporter` failed with `error` (the other ranks pass null): under mpirun the first
+// rank to exit with an error ends the job and kills the others, which would cut off a rank still
+// writing its message; so the reporter prints its error first, then every rank meets in a
+// collective, and all return null (exit code 1). Alone, the error goes up to main as any other.
+std::unique_ptr<Job> report_once(RenderGroup& group, int reporter, const std::exception_ptr& error) {
+  if (group.size() == 1) std::rethrow_exception(error);
+  if (group.rank() == reporter) report_error(error);
+  group.any(false);  // no rank returns before the report is written
+  return nullptr;
+}
+
+// Prepares on every rank; when any fails, the first rank that failed reports its error and the
+// others return null, so that a scene error is printed once, and no rank goes on to wait for
+// the others in a collective.
 std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group) {
   std::unique_ptr<Job> job;
   std::exception_ptr error;
@@ -319,10 +330,7 @@ std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group)
     error = std::current_exception();
   }
   const int first_failed = group.min(error ? group.rank() : INT_MAX);
-  if (first_failed != INT_MAX) {
-    if (group.rank() == first_failed) std::rethrow_exception(error);
-    return nullptr;
-  }
+  if (first_failed != INT_MAX) return report_once(group, first_failed, error);
   // Every rank must render the same image: the fingerprint covers the scene, every file it
   // reads and the options that change the image (a rank started with other arguments, or on a
   // machine whose copy of a file differs, would otherwise add other pixels to the same film).
@@ -330,12 +338,17 @@ std::unique_ptr<Job> prepare_everywhere(const RenderArgs& a, RenderGroup& group)
   const uint64_t lead = group.broadcast(mine);
   const int odd = group.min(mine != lead ? group.rank() : INT_MAX);
   if (odd != INT_MAX) {
-    if (group.rank() == odd)
-      throw_error(fmt::format(
-          "rank {} sees another scene or other options than rank 0 (scene fingerprint {:016x} against {:016x}): "
-          "every rank must be started with the same arguments and read the same files",
-          odd, mine, lead));
-    return nullptr;
+    if (group.rank() == odd) {
+      try {
+        throw_error(fmt::format(
+            "rank {} sees another scene or other options than rank 0 (scene fingerprint {:016x} against {:016x}): "
+            "every rank must be started with the same arguments and read the same files",
+            odd, mine, lead));
+      } catch (...) {
+        error = std::current_exception();
+      }
+    }
+    return report_once(group, odd, error);
   }
   return job;
 }
