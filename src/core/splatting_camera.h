@@ -40,6 +40,9 @@ class SplattingCamera {
     const IVec2 m(rim(radius.x), rim(radius.y));
     return pixel.x >= lo.x + m.x && pixel.x < hi.x - m.x && pixel.y >= lo.y + m.y && pixel.y < hi.y - m.y;
   }
+  // The uniform draw itself: offset u - 1/2 in the pixel, weight 1 (the filter's sampling weights
+  // are f / (pdf integral f), 1 on average).
+  static FilterSample uniform_sample(Vec2 u) { return FilterSample{u - Vec2(0.5f), 1.f}; }
   // Along one axis the pixels m = ceil(r - 0.5) from either end of the tile draw through the
   // filter: pixel x's filter (centre x + 0.5, radius r) stays in [lo, hi) when x >= lo + m and
   // x < hi - m.

@@ -22,7 +22,7 @@ namespace eyetrace {
 CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index, bool uniform) {
   sampler.start_pixel_sample(pixel, index);
   const Vec2 u = sampler.get_pixel_2d();
-  const FilterSample fs = uniform ? FilterSample{u - Vec2(0.5f), 1.f} : film.filter().sample(u);
+  const FilterSample fs = uniform ? SplattingCamera::uniform_sample(u) : film.filter().sample(u);
   CameraSample cs;
   cs.p_film = Vec2(pixel) + Vec2(0.5f) + fs.offset;
   cs.p_lens = sampler.get_2d();

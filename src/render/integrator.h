@@ -84,9 +84,8 @@ struct RenderOptions {
 // start of sample `index` of `pixel`; the integrator continues at dimension kCameraDimensions.
 inline constexpr int kCameraDimensions = 6;
 inline constexpr uint64_t kLightSplatPassSamples = uint64_t(1) << 18;
-// uniform: the film point uniformly in the pixel's square, with weight 1 (the filter's sampling
-// weights are f / (pdf integral f), about 1), instead of through the filter (a smooth splatting camera's,
-// SplattingCamera::uniform_in_pixel).
+// uniform: the film point uniformly in the pixel's square instead of through the filter (a smooth
+// splatting camera's: SplattingCamera::uniform_in_pixel, uniform_sample).
 CameraSample draw_camera_sample(const Film& film, Sampler& sampler, IVec2 pixel, int index, bool uniform = false);
 
 class Integrator {

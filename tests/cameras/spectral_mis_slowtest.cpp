@@ -219,7 +219,7 @@ std::vector<double> gaussian_tile_batches(const LensSystemCamera& cam, IVec2 lo,
           const Vec2 uv(u(rng), u(rng));
           const bool uniform =
               mode == Mode::Smooth && SplattingCamera::uniform_in_pixel(IVec2(x, y), lo, hi, gauss.radius());
-          const FilterSample fs = uniform ? FilterSample{uv - Vec2(0.5f), 1.f} : gauss.sample(uv);
+          const FilterSample fs = uniform ? SplattingCamera::uniform_sample(uv) : gauss.sample(uv);
           uniform_pixels += uniform && b == 0 && i == 0;
           CameraSample cs;
           cs.p_film = Vec2(float(x), float(y)) + Vec2(0.5f) + fs.offset;
