@@ -261,6 +261,9 @@ void LensSystemCamera::trace_rays(const CameraSample* samples, SampledWavelength
     size_t live = 0;
     for (size_t j = 0; j < n; ++j) {
       rays[base + j].reset();
+      // A sample whose wavelengths are not weighed below splats nothing (no stale rows).
+      if (splats)
+        for (WavelengthSplat& w : splats[base + j].wavelength) w.nx = w.ny = 0;
       if (hero_alone(samples[base + j])) lambdas[base + j].terminate_secondary();
       // A renderer that traces wavelengths apart gives each film and pupil point once per
       // wavelength in a row: the ray's start (retina point, pupil point) is the previous one's.

@@ -213,7 +213,11 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
   WavelengthTerms terms[kSpectrumSamples];
   terms[0] = hero_terms(cs, hero, lambda[0], spread);
   if (!(terms[0].u > 0.0 && std::isfinite(terms[0].u))) {
-    lambda.terminate_secondary();  // the hero alone, with its plain weight (never seen in tests)
+    // The hero alone, with its plain weight (never seen in tests); a splatting sample splats
+    // nothing (a set of rays of measure zero: grazing at the retina or the sampling plane).
+    lambda.terminate_secondary();
+    if (spread)
+      for (int k = 0; k < kSpectrumSamples; ++k) spread[k].nx = spread[k].ny = 0;
     return;
   }
   double sum_u = terms[0].u;
@@ -225,6 +229,10 @@ void LensSystemCamera::weigh_wavelengths(const CameraSample& cs, SampledWaveleng
     sum_u += terms[k].u;
   }
   if (spread) {
+    // Should the scene's path keep only the hero (a dispersive dielectric), the hero is the one
+    // technique: C / (n^2 J u) without the factor 4, which the terminated hero's density brings.
+    const double alone = normalisation_ * terms[0].inv_n2_jacobian / terms[0].u;
+    out->hero_weight = std::isfinite(alone) ? static_cast<float>(alone) : 0.f;
     const double scale = kSpectrumSamples * normalisation_ / sum_u;
     for (int k = 0; k < kSpectrumSamples; ++k) {
       const double w = terms[k].filter == 0.0 ? 0.0 : scale * terms[k].inv_n2_jacobian;

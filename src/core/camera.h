@@ -49,7 +49,9 @@ struct CameraRay {
   SampledSpectrum weight{1.f};
   // The hero wavelength's weight when the path keeps only the hero (a dispersive dielectric
   // in the scene terminated the others): the plain, non-MIS weight, since the other
-  // wavelengths can no longer share the path.
+  // wavelengths can no longer share the path. With smooth splats (SplattingCamera) the hero is
+  // splatted around where it landed like every wavelength, and this is its weight as the one
+  // technique, per unit of the tile's sampling density there (cameras/spectral_mis.cpp).
   float hero_weight = 1.f;
   // Where each wavelength's weighted radiance belongs, from the sample's pixel (a dispersive
   // camera splatting by wavelength); (0, 0) is the sample's own pixel.

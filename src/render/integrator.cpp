@@ -188,6 +188,14 @@ class SampleBatch {
     SampledSpectrum L = trace_path(i, vs);
     if (lambda.secondary_terminated()) {
       if (box_splats()) add_shares(i);
+      if (smooth_) {
+        // The hero alone still splats around where it landed: the sample's film point may have
+        // been drawn uniformly in its pixel, which only the splats turn into the filter's
+        // estimate (counted in its own pixel alone it would be a box filter's).
+        film_.add_weight(pixels_[i], lambda, filter_weight, vs);
+        film_.add_wavelength_splats(splats_[i].wavelength, L * (cr->hero_weight * std::abs(filter_weight)), lambda);
+        return;
+      }
       film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
       return;
     }
