@@ -186,27 +186,23 @@ class SampleBatch {
     VisibleSurface visible;
     VisibleSurface* vs = film_.gbuffer() ? &visible : nullptr;
     SampledSpectrum L = trace_path(i, vs);
-    if (lambda.secondary_terminated()) {
-      if (box_splats()) add_shares(i);
-      if (smooth_) {
-        // The hero alone still splats around where it landed: the sample's film point may have
-        // been drawn uniformly in its pixel, which only the splats turn into the filter's
-        // estimate (counted in its own pixel alone it would be a box filter's).
-        film_.add_weight(pixels_[i], lambda, filter_weight, vs);
-        film_.add_wavelength_splats(splats_[i].wavelength, L * (cr->hero_weight * std::abs(filter_weight)), lambda);
-        return;
-      }
-      film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
-      return;
-    }
-    L *= cr->weight;
+    const bool hero_alone = lambda.secondary_terminated();  // a dispersive dielectric split the path
     if (smooth_) {
-      // Every wavelength splats around where it landed (core/splatting_camera.h); the sample's
-      // own pixel keeps its filter weight, which the splats are averaged by.
+      // Every wavelength splats around where it landed (core/splatting_camera.h), the hero too
+      // when it goes alone: the film point may have been drawn uniformly in its pixel, which
+      // only the splats turn into the filter's estimate. The sample's own pixel keeps its filter
+      // weight, which the splats are averaged by.
+      L *= hero_alone ? SampledSpectrum(cr->hero_weight) : cr->weight;
       film_.add_weight(pixels_[i], lambda, filter_weight, vs);
       film_.add_wavelength_splats(splats_[i].wavelength, L * std::abs(filter_weight), lambda);
       return;
     }
+    if (hero_alone) {
+      if (box_splats()) add_shares(i);
+      film_.add_sample(pixels_[i], L * cr->hero_weight, lambda, filter_weight, vs);
+      return;
+    }
+    L *= cr->weight;
     // Wavelengths a splatting camera sent to other pixels of the tile go there.
     move_landed(*cr, L,
                 [&](IVec2 offset, const SampledSpectrum& one) { film_.add_splat(pixels_[i] + offset, one, lambda); });
